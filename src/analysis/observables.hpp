@@ -1,0 +1,37 @@
+#pragma once
+// What can be measured on a running simulation. Sums run over free particles only: wall
+// particles, fixed or moved, are boundaries, not part of the granular system.
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+struct Energies {
+  double translational = 0.0; ///< sum 1/2 m v^2, J
+  double rotational = 0.0;    ///< sum 1/2 I omega^2, J
+  double elastic = 0.0;       ///< stored in contacts (normal and tangential springs), J
+  double gravitational = 0.0; ///< sum -m g.r (zero at the origin), J
+  double kinetic() const { return translational + rotational; }
+  double total() const { return kinetic() + elastic + gravitational; }
+};
+
+Energies energies(const Simulation& sim);
+/// Sum of m v over free particles, kg m/s.
+Vec2 linear_momentum(const Simulation& sim);
+/// Angular momentum about `point`: orbital sum m (r - point) x v plus spin sum I omega, kg m^2/s.
+double angular_momentum(const Simulation& sim, Vec2 point = {});
+/// Mean number of contacts per free particle (contacts with walls and wall particles included).
+double coordination_number(const Simulation& sim);
+/// Number of touching contacts (pairs and wall contacts).
+std::size_t contact_count(const Simulation& sim);
+/// Fraction of the rectangle [lo, hi] covered by free particles (exact disk-rectangle overlap).
+double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi);
+/// Total force the grains put on the given wall particles (fixed or moved), N.
+Vec2 force_on_particles(const Simulation& sim, const std::vector<std::uint32_t>& indices);
+
+/// Area of the intersection of the disk (centre c, radius r) with the rectangle [lo, hi].
+double disk_rectangle_area(Vec2 c, double r, Vec2 lo, Vec2 hi);
+
+} // namespace talus

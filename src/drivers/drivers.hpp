@@ -1,0 +1,55 @@
+#pragma once
+// Prescribed motion of wall particles (kind `moved`) and segment walls. A driver remembers where
+// its targets were when the run started and sets their position and velocity at any time t.
+#include <cstdint>
+#include <variant>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "state/particles.hpp"
+#include "state/walls.hpp"
+
+namespace talus {
+
+/// What a driver moves: particle indices (must be of kind `moved`) and segment indices.
+struct DriverTargets {
+  std::vector<std::uint32_t> particles;
+  std::vector<std::uint32_t> segments;
+};
+
+/// Sinusoidal vibration: displacement = amplitude sin(2 pi frequency t + phase) along direction.
+struct Vibrate {
+  Vec2 direction{0.0, 1.0}; ///< normalised on attach
+  double amplitude = 0.0;   ///< m
+  double frequency = 0.0;   ///< Hz
+  double phase = 0.0;       ///< rad
+};
+
+/// Constant velocity (the thesis' grain press): displacement = velocity t.
+struct Translate {
+  Vec2 velocity{}; ///< m/s
+};
+
+/// Rotation about a fixed centre at a constant rate (a rotating drum).
+struct Rotate {
+  Vec2 centre{};
+  double angular_velocity = 0.0; ///< rad/s, counter-clockwise positive
+};
+
+using Motion = std::variant<Vibrate, Translate, Rotate>;
+
+struct Driver {
+  Motion motion;
+  DriverTargets targets;
+  // captured at attach: reference positions and angles of the targets at t = 0
+  std::vector<Vec2> particle_origin;
+  std::vector<double> angle_origin;
+  std::vector<Vec2> segment_origin; ///< a, b, a, b, ...
+};
+
+/// Checks the targets and records their reference positions (time origin t = 0).
+void attach(Driver& d, const Particles& p, const Segments& walls);
+/// Sets positions and velocities of the targets at time t.
+void apply(const Driver& d, double t, Particles& p, Segments& walls);
+
+} // namespace talus

@@ -1,0 +1,33 @@
+#pragma once
+// Time integration of the free particles. Each scheme is split into the stage before the force
+// evaluation (predict) and the stage after it (correct); fixed and moved particles are skipped.
+#include <string_view>
+
+#include "state/particles.hpp"
+
+namespace talus {
+
+enum class Integrator { gear, verlet };
+
+std::string_view to_string(Integrator integrator);
+/// Parses "gear" / "verlet"; throws InvalidArgument listing the allowed names otherwise.
+Integrator parse_integrator(std::string_view name);
+
+/// Corrector weights of the 5-value Gear predictor-corrector for second-order equations with
+/// velocity-dependent forces (Poeschel & Schwager 2005, Computational Granular Dynamics; the
+/// thesis' eq. 2.4). Position-only forces would use c0 = 19/120.
+inline constexpr double gear_c[5] = {19.0 / 90.0, 3.0 / 4.0, 1.0, 1.0 / 2.0, 1.0 / 12.0};
+
+/// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
+void gear_initialise(Particles& p);
+/// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.
+void gear_predict(Particles& p, double dt, int threads);
+/// Corrects every predicted derivative by the difference of F/m and the predicted acceleration.
+void gear_correct(Particles& p, double dt, int threads);
+
+/// Velocity Verlet: half kick with the old forces, then drift.
+void verlet_predict(Particles& p, double dt, int threads);
+/// Velocity Verlet: half kick with the new forces.
+void verlet_correct(Particles& p, double dt, int threads);
+
+} // namespace talus

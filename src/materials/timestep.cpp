@@ -1,0 +1,107 @@
+#include "materials/timestep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+
+namespace talus {
+
+double linear_damping_ratio(double restitution) {
+  require(restitution > 0.0 && restitution <= 1.0, "restitution must be in (0, 1]");
+  const double l = std::log(restitution);
+  return -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);
+}
+
+namespace {
+double damped_frequency(double stiffness, double dashpot, double m_eff) {
+  const double beta = dashpot / (2.0 * m_eff);
+  const double w2 = stiffness / m_eff - beta * beta;
+  require(w2 > 0.0, "overdamped linear contact: restitution would be 0");
+  return std::sqrt(w2);
+}
+} // namespace
+
+double linear_restitution(double stiffness, double dashpot, double m_eff) {
+  const double beta = dashpot / (2.0 * m_eff);
+  return std::exp(-std::numbers::pi * beta / damped_frequency(stiffness, dashpot, m_eff));
+}
+
+double linear_collision_time(double stiffness, double dashpot, double m_eff) {
+  return std::numbers::pi / damped_frequency(stiffness, dashpot, m_eff);
+}
+
+double hertz_rho(double effective_young, double r_eff) {
+  return 4.0 / 3.0 * effective_young * std::sqrt(r_eff);
+}
+
+double hertz_collision_time(double m_eff, double rho, double impact_speed) {
+  const double c =
+      2.0 * std::pow(1.25, 0.4) * std::sqrt(std::numbers::pi) * std::tgamma(1.4) / std::tgamma(0.9);
+  return c * std::pow(m_eff / rho, 0.4) * std::pow(impact_speed, -0.2);
+}
+
+double hertz_max_overlap(double m_eff, double rho, double impact_speed) {
+  return std::pow(1.25 * m_eff * impact_speed * impact_speed / rho, 0.4);
+}
+
+namespace {
+// Dimensionless contact: x'' = -max(0, x^3/2 + D sqrt(x) x'), x(0) = 0, x'(0) = 1, with
+// x = xi / xi*, xi* = (m v^2 / rho)^(2/5), tau = t v / xi*, D = 3/2 A v / xi*. Returns -x'(exit).
+double dimensionless_restitution(double D) {
+  const auto acc = [D](double x, double u) {
+    if (x <= 0.0) return 0.0;
+    const double s = std::sqrt(x);
+    return -std::max(0.0, x * s + D * s * u);
+  };
+  const double h = 2.0e-5;
+  double x = 0.0, u = 1.0;
+  for (int step = 0; step < 10'000'000; ++step) {
+    const double k1x = u, k1u = acc(x, u);
+    const double k2x = u + 0.5 * h * k1u, k2u = acc(x + 0.5 * h * k1x, u + 0.5 * h * k1u);
+    const double k3x = u + 0.5 * h * k2u, k3u = acc(x + 0.5 * h * k2x, u + 0.5 * h * k2u);
+    const double k4x = u + h * k3u, k4u = acc(x + h * k3x, u + h * k3u);
+    const double xn = x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+    const double un = u + h / 6.0 * (k1u + 2.0 * k2u + 2.0 * k3u + k4u);
+    if (xn <= 0.0) {
+      const double f = x / (x - xn); // linear interpolation to the crossing
+      return -(u + f * (un - u));
+    }
+    x = xn;
+    u = un;
+  }
+  return 0.0;
+}
+} // namespace
+
+double hertz_restitution(double damping_A, double m_eff, double rho, double impact_speed) {
+  require(damping_A >= 0.0 && m_eff > 0.0 && rho > 0.0 && impact_speed > 0.0,
+          "hertz_restitution: A >= 0, m_eff > 0, rho > 0 and impact speed > 0 are required");
+  const double xi_star = std::pow(m_eff * impact_speed * impact_speed / rho, 0.4);
+  return dimensionless_restitution(1.5 * damping_A * impact_speed / xi_star);
+}
+
+double hertz_damping_for_restitution(double restitution, double m_eff, double rho,
+                                     double impact_speed) {
+  require(restitution > 0.0 && restitution <= 1.0, "restitution must be in (0, 1]");
+  if (restitution == 1.0) return 0.0;
+  const double xi_star = std::pow(m_eff * impact_speed * impact_speed / rho, 0.4);
+  const double scale = xi_star / impact_speed; // A in units of the contact's time scale
+  double lo = 0.0, hi = scale;
+  while (hertz_restitution(hi, m_eff, rho, impact_speed) > restitution) {
+    hi *= 2.0;
+    require(hi < 1e6 * scale, "hertz_damping_for_restitution: no damping reaches that restitution");
+  }
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (hertz_restitution(mid, m_eff, rho, impact_speed) > restitution ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+double verlet_stable_timestep(double stiffness, double m_eff) {
+  return 2.0 / std::sqrt(stiffness / m_eff);
+}
+
+} // namespace talus

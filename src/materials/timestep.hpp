@@ -1,0 +1,39 @@
+#pragma once
+// Single-contact closed forms: collision time, restitution <-> damping, stable timestep.
+// m_eff = m_i m_j / (m_i + m_j), r_eff = R_i R_j / (R_i + R_j); for a wall, m_eff = m, r_eff = R.
+
+namespace talus {
+
+// ---- linear spring-dashpot: m xi'' + eta xi' + k xi = 0 -------------------------------------
+
+/// zeta = -ln e / sqrt(pi^2 + ln^2 e): the damping ratio eta / (2 sqrt(k m)) giving restitution e.
+double linear_damping_ratio(double restitution);
+/// e = exp(-pi beta / omega), beta = eta / (2 m), omega = sqrt(k/m - beta^2).
+double linear_restitution(double stiffness, double dashpot, double m_eff);
+/// t_c = pi / omega.
+double linear_collision_time(double stiffness, double dashpot, double m_eff);
+
+// ---- Hertzian viscoelastic: m xi'' = -rho (xi^3/2 + 3/2 A sqrt(xi) xi'), rho = 4/3 E* sqrt(R*) -
+
+double hertz_rho(double effective_young, double r_eff);
+/// Elastic collision duration at impact speed v: t_c = c (m_eff / rho)^(2/5) v^(-1/5), with the
+/// exact c = 2 (5/4)^(2/5) sqrt(pi) Gamma(7/5) / Gamma(9/10) = 3.2181 (2.868 in terms of E*, R*).
+double hertz_collision_time(double m_eff, double rho, double impact_speed);
+/// Elastic maximum overlap: (5 m_eff v^2 / (4 rho))^(2/5).
+double hertz_max_overlap(double m_eff, double rho, double impact_speed);
+/// Restitution of the viscoelastic law at impact speed v, by accurate integration of the
+/// single-contact equation (relative error below 1e-8).
+double hertz_restitution(double damping_A, double m_eff, double rho, double impact_speed);
+/// The A that gives restitution e at impact speed v (inverse of hertz_restitution, by bisection).
+double hertz_damping_for_restitution(double restitution, double m_eff, double rho,
+                                     double impact_speed);
+
+// ---- stability ------------------------------------------------------------------------------
+
+/// Largest stable step of velocity Verlet for an undamped oscillator of stiffness k: 2/omega.
+/// The Gear predictor-corrector is stable to a smaller step (see gear_stability_fraction).
+double verlet_stable_timestep(double stiffness, double m_eff);
+/// Measured ratio of Gear's largest stable step to Verlet's, for the harmonic oscillator.
+inline constexpr double gear_stability_fraction = 0.5;
+
+} // namespace talus

@@ -1,0 +1,76 @@
+#include "neighbours/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace talus {
+
+namespace {
+// Number of cells of width >= range along one direction of length `length`.
+int cells_along(double length, double range, bool periodic, const char* axis) {
+  if (periodic) {
+    const double n = std::floor(length / range);
+    require(n >= 3.0, std::string("periodic box too small along ") + axis + ": " +
+                          std::to_string(length) + " m holds fewer than 3 interaction ranges of " +
+                          std::to_string(range) + " m (2 x largest radius + skin)");
+    return static_cast<int>(std::min(n, 1.0e6));
+  }
+  return static_cast<int>(std::clamp(std::floor(length / range) + 1.0, 1.0, 1.0e6));
+}
+} // namespace
+
+int CellGrid::cell_x(double x) const {
+  const int c = static_cast<int>(std::floor((x - origin.x) / cell_size.x));
+  return std::clamp(c, 0, nx - 1);
+}
+
+int CellGrid::cell_y(double y) const {
+  const int c = static_cast<int>(std::floor((y - origin.y) / cell_size.y));
+  return std::clamp(c, 0, ny - 1);
+}
+
+void CellGrid::build(const std::vector<Vec2>& positions, const Domain& domain, double range) {
+  periodic_x = domain.periodic_x;
+  periodic_y = domain.periodic_y;
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  for (const Vec2& p : positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  if (positions.empty()) lo = hi = {};
+  if (periodic_x) lo.x = domain.lo.x, hi.x = domain.hi.x;
+  if (periodic_y) lo.y = domain.lo.y, hi.y = domain.hi.y;
+  double rx = range, ry = range;
+  nx = cells_along(hi.x - lo.x, rx, periodic_x, "x");
+  ny = cells_along(hi.y - lo.y, ry, periodic_y, "y");
+  // Sparse outliers must not blow up memory: keep the cell count within a few per particle.
+  const double max_cells = 4.0 * static_cast<double>(positions.size()) + 16.0;
+  while (static_cast<double>(nx) * ny > max_cells) {
+    if (!periodic_x && nx > 1) rx *= 1.5, nx = cells_along(hi.x - lo.x, rx, false, "x");
+    if (!periodic_y && ny > 1) ry *= 1.5, ny = cells_along(hi.y - lo.y, ry, false, "y");
+    if ((periodic_x || nx == 1) && (periodic_y || ny == 1)) break;
+  }
+  origin = lo;
+  cell_size = {periodic_x ? (hi.x - lo.x) / nx : rx, periodic_y ? (hi.y - lo.y) / ny : ry};
+
+  const std::size_t n_cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  cell_start.assign(n_cells + 1, 0);
+  cell_of.resize(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const auto c = static_cast<std::uint32_t>(cell_y(positions[i].y) * nx + cell_x(positions[i].x));
+    cell_of[i] = c;
+    ++cell_start[c + 1];
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
+  items.resize(positions.size());
+  std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    items[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+} // namespace talus

@@ -1,0 +1,55 @@
+#pragma once
+// The Verlet list: every pair within reach (touching, or closer than the skin), as a half list
+// (j > i) in CSR form, with the tangential history of each pair stored beside its entry.
+#include <cstdint>
+#include <vector>
+
+#include "core/domain.hpp"
+#include "state/particles.hpp"
+#include "state/walls.hpp"
+
+namespace talus {
+
+/// Periodic image of j in a pair entry: j is taken at r_j + (sx L_x, sy L_y).
+struct ImageShift {
+  std::int8_t sx = 0;
+  std::int8_t sy = 0;
+  friend bool operator==(ImageShift, ImageShift) = default;
+};
+
+struct NeighbourList {
+  // particle pairs: entries row_offset[i] .. row_offset[i+1] have i as first particle
+  std::vector<std::uint32_t> row_offset;
+  std::vector<std::uint32_t> neighbour; ///< j > i, sorted within a row
+  std::vector<ImageShift> image;
+  std::vector<double> history; ///< tangential spring s (m) of each pair, 0 when not touching
+  // the transpose: entries in which particle k is the second particle, in entry order
+  std::vector<std::uint32_t> col_offset;
+  std::vector<std::uint32_t> col_entry;
+  // particle-segment pairs, CSR over particles
+  std::vector<std::uint32_t> wall_offset;
+  std::vector<std::uint32_t> wall_segment;
+  std::vector<double> wall_history;
+
+  std::vector<Vec2> reference;         ///< particle positions at the last build
+  std::vector<Vec2> segment_reference; ///< segment end points (a, b, a, b, ...) at the last build
+  double skin = 0.0;
+  std::uint64_t builds = 0;
+
+  std::size_t pair_count() const { return neighbour.size(); }
+  Vec2 shift(std::size_t entry, const Domain& d) const {
+    const Vec2 l = d.size();
+    return {image[entry].sx * l.x, image[entry].sy * l.y};
+  }
+};
+
+/// True when some particle or wall end point moved more than half the skin since the last build.
+bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
+
+/// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
+/// two non-free particles are left out. History of pairs still within reach is carried over.
+/// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.
+void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,
+                          const Domain& domain, double skin);
+
+} // namespace talus

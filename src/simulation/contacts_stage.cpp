@@ -1,0 +1,208 @@
+// Stage 4 of a step: contact forces. Each pair's force is computed once into its list entry (in
+// parallel), then every particle sums its entries in a fixed order: the result does not depend
+// on the number of threads, and no floating-point atomics are needed.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+namespace {
+
+struct WallHit {
+  Vec2 point;     // nearest point of the segment
+  double u = 0.0; // position along the segment, 0 at a, 1 at b
+  bool touching = false;
+  bool vertex() const { return u <= 0.0 || u >= 1.0; }
+};
+
+WallHit wall_hit(const Segment& s, Vec2 p, double radius) {
+  WallHit h;
+  const Vec2 ab = s.b - s.a;
+  const double l2 = norm2(ab);
+  h.u = l2 > 0.0 ? dot(p - s.a, ab) / l2 : 0.0;
+  h.point = h.u <= 0.0 ? s.a : (h.u >= 1.0 ? s.b : s.a + h.u * ab);
+  const double d2 = norm2(p - h.point);
+  h.touching = d2 < radius * radius && d2 > 0.0;
+  return h;
+}
+
+// A particle touching the shared end point of two segments touches that point only once: an end
+// point contact is dropped when a segment sharing that end point is touched along its face, or
+// when an earlier segment of the particle's list already touches the same end point.
+bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* segment,
+                      const Segments& walls, std::size_t k) {
+  const Vec2 v = hits[k].point;
+  for (std::size_t m = 0; m < hits.size(); ++m) {
+    if (m == k || !hits[m].touching) continue;
+    const Segment& o = walls[segment[m]];
+    if (o.a != v && o.b != v) continue;
+    if (!hits[m].vertex() || m < k) return true;
+  }
+  return false;
+}
+
+template <class N, class T>
+double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
+                  std::vector<ContactForce>& out, double dt, int threads) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const Vec2 box = domain.size();
+  double worst = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const Vec2 ri = p.position[i];
+    const double Ri = p.radius[i];
+    for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
+      const std::uint32_t j = list.neighbour[e];
+      const Vec2 shift{list.image[e].sx * box.x, list.image[e].sy * box.y};
+      const Vec2 d = ri - (p.position[j] + shift);
+      const double dist2 = norm2(d);
+      const double reach = Ri + p.radius[j];
+      if (dist2 >= reach * reach || dist2 == 0.0) {
+        out[e] = {};
+        list.history[e] = 0.0;
+        continue;
+      }
+      const double dist = std::sqrt(dist2);
+      const ContactGeometry g =
+          pair_geometry(d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
+                        p.velocity[j], p.angular_velocity[i], p.angular_velocity[j]);
+      out[e] = contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt);
+      worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
+    }
+  }
+  return worst;
+}
+
+template <class N, class T>
+double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, const PairTable& pairs,
+                  std::vector<ContactForce>& out, double dt, int threads) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  double worst = 0.0;
+#pragma omp parallel num_threads(threads) reduction(max : worst)
+  {
+    std::vector<WallHit> hits;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
+      if (w0 == w1) continue;
+      const Vec2 ri = p.position[i];
+      const double Ri = p.radius[i];
+      hits.clear();
+      for (std::uint32_t e = w0; e < w1; ++e)
+        hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
+      for (std::uint32_t e = w0; e < w1; ++e) {
+        const WallHit& h = hits[e - w0];
+        if (!h.touching ||
+            (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
+          out[e] = {};
+          list.wall_history[e] = 0.0;
+          continue;
+        }
+        const Segment& s = walls[list.wall_segment[e]];
+        const Vec2 d = ri - h.point;
+        const ContactGeometry g = wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i],
+                                                p.angular_velocity[i], s.velocity_at(h.point));
+        out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
+        worst = std::max(worst, g.overlap / Ri);
+      }
+    }
+  }
+  return worst;
+}
+
+void gather(Particles& p, const NeighbourList& list, const std::vector<ContactForce>& pf,
+            const std::vector<ContactForce>& wf, Vec2 gravity, int threads) {
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    Vec2 f = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
+    double tau = 0.0;
+    for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e) {
+      f += pf[e].force;
+      tau += pf[e].torque_i;
+    }
+    for (std::uint32_t c = list.col_offset[k]; c < list.col_offset[k + 1]; ++c) {
+      const std::uint32_t e = list.col_entry[c];
+      f -= pf[e].force;
+      tau += pf[e].torque_j;
+    }
+    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
+      f += wf[e].force;
+      tau += wf[e].torque_i;
+    }
+    p.force[k] = f;
+    p.torque[k] = tau;
+  }
+}
+
+} // namespace
+
+void Simulation::for_each_contact(const std::function<void(const ContactView&)>& f) const {
+  const Particles& p = world_.particles;
+  ContactView v;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    for (std::uint32_t e = list_.row_offset[i]; e < list_.row_offset[i + 1]; ++e) {
+      const std::uint32_t j = list_.neighbour[e];
+      const Vec2 d = p.position[i] - (p.position[j] + list_.shift(e, world_.domain));
+      const double dist2 = norm2(d), reach = p.radius[i] + p.radius[j];
+      if (dist2 >= reach * reach || dist2 == 0.0) continue;
+      v.i = i;
+      v.j = j;
+      v.wall = -1;
+      v.geometry =
+          pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j],
+                        p.velocity[i], p.velocity[j], p.angular_velocity[i], p.angular_velocity[j]);
+      v.parameters = &pairs_(p.material[i], p.material[j]);
+      v.history = list_.history[e];
+      f(v);
+    }
+  }
+  std::vector<WallHit> hits;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    const std::uint32_t w0 = list_.wall_offset[i], w1 = list_.wall_offset[i + 1];
+    hits.clear();
+    for (std::uint32_t e = w0; e < w1; ++e)
+      hits.push_back(wall_hit(world_.walls[list_.wall_segment[e]], p.position[i], p.radius[i]));
+    for (std::uint32_t e = w0; e < w1; ++e) {
+      const WallHit& h = hits[e - w0];
+      if (!h.touching ||
+          (h.vertex() && duplicate_vertex(hits, &list_.wall_segment[w0], world_.walls, e - w0)))
+        continue;
+      const Segment& s = world_.walls[list_.wall_segment[e]];
+      const Vec2 d = p.position[i] - h.point;
+      v.i = i;
+      v.j = i;
+      v.wall = static_cast<std::int32_t>(list_.wall_segment[e]);
+      v.geometry = wall_geometry(d, norm(d), p.radius[i], p.mass[i], p.velocity[i],
+                                 p.angular_velocity[i], s.velocity_at(h.point));
+      v.parameters = &pairs_(p.material[i], s.material);
+      v.history = list_.wall_history[e];
+      f(v);
+    }
+  }
+}
+
+void Simulation::compute_forces() {
+  Particles& p = world_.particles;
+  pair_force_.resize(list_.pair_count());
+  wall_force_.resize(list_.wall_segment.size());
+  const double dt = config_.timestep;
+  max_overlap_seen_ =
+      with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
+        const double a =
+            pair_stage<N, T>(p, list_, pairs_, world_.domain, pair_force_, dt, threads_);
+        const double b =
+            wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_);
+        return std::max(a, b);
+      });
+  gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
+  for (Segment& s : world_.walls) s.force = {};
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::uint32_t e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e)
+      world_.walls[list_.wall_segment[e]].force -= wall_force_[e].force;
+}
+
+} // namespace talus

@@ -1,0 +1,113 @@
+#include "simulation/simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include <omp.h>
+
+#include "core/error.hpp"
+
+namespace talus {
+
+namespace {
+
+double mean_free_radius(const Particles& p) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i)) sum += p.radius[i], ++n;
+  return n ? sum / static_cast<double>(n) : p.max_radius();
+}
+
+void validate_setup(const World& w, const SimulationConfig& c) {
+  require(std::isfinite(c.timestep) && c.timestep > 0.0,
+          "simulation.timestep = " + std::to_string(c.timestep) + " s; allowed: > 0");
+  require(c.skin >= 0.0, "simulation.skin must be >= 0 m (0: automatic)");
+  require(c.threads >= 0, "simulation.threads must be >= 0 (0: all cores)");
+  require(c.max_overlap_fraction > 0.0, "simulation.max_overlap_fraction must be > 0");
+  if (c.normal_law == NormalLaw::linear)
+    for (const Material& m : w.materials)
+      require(m.normal_stiffness > 0.0, "material '" + m.name +
+                                            "': normal_stiffness must be > 0 N/m for the "
+                                            "linear normal law (or choose normal law 'hertz')");
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    require(w.particles.material[i] < w.materials.size(),
+            "particle " + std::to_string(i) + ": material index out of range");
+  for (const Segment& s : w.walls)
+    require(s.material < w.materials.size(), "wall: material index out of range");
+}
+
+} // namespace
+
+Simulation::Simulation(World world, SimulationConfig config)
+    : world_(std::move(world)), config_(config) {
+  validate_setup(world_, config_);
+  pairs_ = PairTable(world_.materials);
+  threads_ = config_.threads > 0 ? config_.threads : omp_get_max_threads();
+  if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
+  for (Driver& d : world_.drivers) {
+    attach(d, world_.particles, world_.walls);
+    apply(d, 0.0, world_.particles, world_.walls);
+  }
+  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, config_.skin);
+  compute_forces();
+  if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
+}
+
+void Simulation::step() {
+  const double dt = config_.timestep;
+  Particles& p = world_.particles;
+  if (config_.integrator == Integrator::gear)
+    gear_predict(p, dt, threads_);
+  else
+    verlet_predict(p, dt, threads_);
+  const double t_next = static_cast<double>(steps_ + 1) * dt;
+  for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
+  if (needs_rebuild(list_, p, world_.walls))
+    build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
+  compute_forces();
+  if (config_.integrator == Integrator::gear)
+    gear_correct(p, dt, threads_);
+  else
+    verlet_correct(p, dt, threads_);
+  ++steps_;
+  time_ = t_next;
+  guard();
+}
+
+void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
+                     std::uint64_t every) {
+  for (std::uint64_t s = 0; s < steps; ++s) {
+    step();
+    if (observer && every > 0 && steps_ % every == 0) observer(*this);
+  }
+}
+
+void Simulation::guard() const {
+  const Particles& p = world_.particles;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    sum += p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y;
+  const bool finite = std::isfinite(sum);
+  if (finite && max_overlap_seen_ <= config_.max_overlap_fraction) return;
+
+  std::ostringstream msg;
+  msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
+      << " s): ";
+  if (!finite) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (!std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y)) {
+        msg << "particle id " << p.id[i] << " has a non-finite position or velocity";
+        break;
+      }
+  } else {
+    msg << "an overlap reached " << max_overlap_seen_ << " of the smaller radius (limit "
+        << config_.max_overlap_fraction << ")";
+  }
+  msg << ". The timestep is probably too large for the stiffest contact: try a smaller "
+         "timestep (about the collision time / 50), softer materials or lower speeds.";
+  throw InstabilityError(msg.str());
+}
+
+} // namespace talus

@@ -1,0 +1,77 @@
+#pragma once
+// The facade a user drives: owns the World, runs the stages of a step, calls observers.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "integrate/integrator.hpp"
+#include "materials/pair_table.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "simulation/world.hpp"
+
+namespace talus {
+
+struct SimulationConfig {
+  double timestep = 0.0; ///< s, required
+  Integrator integrator = Integrator::gear;
+  NormalLaw normal_law = NormalLaw::linear;
+  TangentialLaw tangential_law = TangentialLaw::cundall_strack;
+  double skin = 0.0; ///< m; 0: a quarter of the mean free-particle radius
+  int threads = 0;   ///< 0: all cores (OpenMP default)
+  /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
+  double max_overlap_fraction = 0.5;
+};
+
+/// One touching contact, as the force stage sees it. `wall` is the segment index for a
+/// particle-wall contact (then j is unused), or -1 for a particle pair.
+struct ContactView {
+  std::uint32_t i = 0;
+  std::uint32_t j = 0;
+  std::int32_t wall = -1;
+  ContactGeometry geometry;
+  const PairParameters* parameters = nullptr;
+  double history = 0.0;
+};
+
+class Simulation {
+public:
+  /// Validates the setup (materials, laws, timestep) and computes the initial forces.
+  Simulation(World world, SimulationConfig config);
+
+  /// One time step: predict, move bodies, neighbours, contacts, correct, guard.
+  void step();
+  /// `steps` steps; `observer` (if any) is called every `every` steps after the step.
+  void run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer = {},
+           std::uint64_t every = 1);
+
+  double time() const { return time_; }
+  std::uint64_t step_count() const { return steps_; }
+  const World& world() const { return world_; }
+  /// Mutable access, for setting up between steps (not while stepping).
+  World& world() { return world_; }
+  const SimulationConfig& config() const { return config_; }
+  const PairTable& pairs() const { return pairs_; }
+  const NeighbourList& neighbours() const { return list_; }
+  int threads() const { return threads_; }
+  /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
+  void for_each_contact(const std::function<void(const ContactView&)>& f) const;
+
+private:
+  void compute_forces();
+  void guard() const;
+
+  World world_;
+  SimulationConfig config_;
+  PairTable pairs_;
+  NeighbourList list_;
+  std::vector<ContactForce> pair_force_;
+  std::vector<ContactForce> wall_force_;
+  double time_ = 0.0;
+  std::uint64_t steps_ = 0;
+  int threads_ = 1;
+  double max_overlap_seen_ = 0.0; ///< largest overlap / smaller radius in the last force stage
+  std::uint32_t worst_pair_[2] = {0, 0};
+};
+
+} // namespace talus

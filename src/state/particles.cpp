@@ -1,0 +1,84 @@
+#include "state/particles.hpp"
+
+#include <algorithm>
+#include <numbers>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace talus {
+
+double shape_mass(Shape shape, double radius, double density, double thickness) {
+  switch (shape) {
+  case Shape::disk:
+    return density * std::numbers::pi * radius * radius * thickness;
+  case Shape::sphere:
+    return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
+  }
+  return 0.0;
+}
+
+double shape_inertia(Shape shape, double mass, double radius) {
+  switch (shape) {
+  case Shape::disk:
+    return 0.5 * mass * radius * radius;
+  case Shape::sphere:
+    return 0.4 * mass * radius * radius;
+  }
+  return 0.0;
+}
+
+std::size_t Particles::count(Kind k) const {
+  return static_cast<std::size_t>(std::count(kind.begin(), kind.end(), k));
+}
+
+double Particles::max_radius() const {
+  return radius.empty() ? 0.0 : *std::max_element(radius.begin(), radius.end());
+}
+
+double Particles::min_radius() const {
+  return radius.empty() ? 0.0 : *std::min_element(radius.begin(), radius.end());
+}
+
+void Particles::reserve(std::size_t n) {
+  position.reserve(n);
+  velocity.reserve(n);
+  force.reserve(n);
+  angle.reserve(n);
+  angular_velocity.reserve(n);
+  torque.reserve(n);
+  radius.reserve(n);
+  mass.reserve(n);
+  inertia.reserve(n);
+  inv_mass.reserve(n);
+  inv_inertia.reserve(n);
+  material.reserve(n);
+  kind.reserve(n);
+  id.reserve(n);
+}
+
+std::size_t Particles::add(const ParticleSpec& s) {
+  const std::string which = "particle " + std::to_string(size());
+  require(s.radius > 0.0, which + ": radius must be > 0 m");
+  require(s.mass > 0.0, which + ": mass must be > 0 kg");
+  require(s.inertia > 0.0, which + ": moment of inertia must be > 0 kg m^2");
+  const bool free = s.kind == Kind::free;
+  position.push_back(s.position);
+  velocity.push_back(s.velocity);
+  force.push_back({});
+  angle.push_back(s.angle);
+  angular_velocity.push_back(s.angular_velocity);
+  torque.push_back(0.0);
+  radius.push_back(s.radius);
+  mass.push_back(s.mass);
+  inertia.push_back(s.inertia);
+  inv_mass.push_back(free ? 1.0 / s.mass : 0.0);
+  inv_inertia.push_back(free ? 1.0 / s.inertia : 0.0);
+  material.push_back(s.material);
+  kind.push_back(s.kind);
+  id.push_back(static_cast<std::uint32_t>(id.size()));
+  gear = {}; // derivatives are (re)initialised by the integrator
+  return size() - 1;
+}
+
+} // namespace talus

@@ -1,0 +1,78 @@
+#pragma once
+// Particles as a structure of arrays: one vector per field, indexed by particle.
+#include <cstdint>
+#include <vector>
+
+#include "core/vec2.hpp"
+
+namespace talus {
+
+/// How a particle moves.
+enum class Kind : std::uint8_t {
+  free = 0,  ///< integrated from the forces on it (thesis type 0)
+  fixed = 1, ///< a wall particle: feels no force, never moves (thesis type 1)
+  moved = 2, ///< a wall particle whose motion a driver prescribes (thesis types 2 and 3)
+};
+
+/// How mass and moment of inertia follow from radius and density.
+enum class Shape : std::uint8_t {
+  disk = 0,   ///< m = rho pi r^2 t (t: thickness), I = m r^2 / 2
+  sphere = 1, ///< m = 4/3 pi r^3 rho, I = 2/5 m r^2, moving in the plane
+};
+
+/// Mass of a particle of the given shape. `thickness` applies to disks only.
+double shape_mass(Shape shape, double radius, double density, double thickness = 1.0);
+/// Moment of inertia about the particle's centre, for rotation in the plane.
+double shape_inertia(Shape shape, double mass, double radius);
+
+/// Higher time derivatives the Gear predictor-corrector keeps (empty with velocity Verlet).
+struct GearDerivatives {
+  std::vector<Vec2> r2, r3, r4;         ///< acceleration, 3rd and 4th derivative of position
+  std::vector<double> phi2, phi3, phi4; ///< the same for the angle
+  bool empty() const { return r2.empty(); }
+};
+
+/// What it takes to add one particle.
+struct ParticleSpec {
+  Vec2 position;
+  double radius = 0.0;
+  std::uint16_t material = 0;
+  Kind kind = Kind::free;
+  Shape shape = Shape::disk;
+  Vec2 velocity{};
+  double angle = 0.0;
+  double angular_velocity = 0.0;
+  double mass = 0.0;    ///< 0: from shape and the material's density
+  double inertia = 0.0; ///< 0: from shape and mass
+};
+
+struct Particles {
+  std::vector<Vec2> position;
+  std::vector<Vec2> velocity;
+  std::vector<Vec2> force;
+  std::vector<double> angle;
+  std::vector<double> angular_velocity;
+  std::vector<double> torque;
+  std::vector<double> radius;
+  std::vector<double> mass;
+  std::vector<double> inertia;
+  std::vector<double> inv_mass;    ///< 0 for fixed and moved particles
+  std::vector<double> inv_inertia; ///< 0 for fixed and moved particles
+  std::vector<std::uint16_t> material;
+  std::vector<Kind> kind;
+  std::vector<std::uint32_t> id; ///< stable identity: survives any reordering
+  GearDerivatives gear;
+
+  std::size_t size() const { return position.size(); }
+  bool empty() const { return position.empty(); }
+  bool is_free(std::size_t i) const { return kind[i] == Kind::free; }
+  std::size_t count(Kind k) const;
+  double max_radius() const;
+  double min_radius() const;
+
+  /// Appends a particle with mass and inertia already resolved (> 0). Returns its index.
+  std::size_t add(const ParticleSpec& spec);
+  void reserve(std::size_t n);
+};
+
+} // namespace talus

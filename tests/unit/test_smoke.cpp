@@ -1,0 +1,5 @@
+#include "simulation/simulation.hpp"
+#include <gtest/gtest.h>
+TEST(Smoke, Builds) {
+  SUCCEED();
+}
