@@ -8,10 +8,25 @@
 
 namespace talus {
 
+namespace {
+// -ln e as a function of x = beta / omega for the never-attractive dashpot; increasing in x.
+double log_loss(double x) { return x * (std::numbers::pi - 2.0 * std::atan(x)); }
+} // namespace
+
 double linear_damping_ratio(double restitution) {
-  require(restitution > 0.0 && restitution <= 1.0, "restitution must be in (0, 1]");
-  const double l = std::log(restitution);
-  return -l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);
+  const double e_min = std::exp(-2.0);
+  require(restitution > e_min && restitution <= 1.0,
+          "restitution = " + std::to_string(restitution) +
+              " cannot be reached by the linear spring-dashpot; allowed: (0.1354, 1]");
+  const double target = -std::log(restitution);
+  double lo = 0.0, hi = 1.0;
+  while (log_loss(hi) < target) hi *= 2.0;
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (log_loss(mid) < target ? lo : hi) = mid;
+  }
+  const double x = 0.5 * (lo + hi);
+  return x / std::sqrt(1.0 + x * x); // zeta = beta / omega_0
 }
 
 namespace {
@@ -24,11 +39,22 @@ double damped_frequency(double stiffness, double dashpot, double m_eff) {
 } // namespace
 
 double linear_restitution(double stiffness, double dashpot, double m_eff) {
+  const double x = dashpot / (2.0 * m_eff) / damped_frequency(stiffness, dashpot, m_eff);
+  return std::exp(-log_loss(x));
+}
+
+double linear_collision_time(double stiffness, double dashpot, double m_eff) {
+  const double w = damped_frequency(stiffness, dashpot, m_eff);
+  const double delta = 2.0 * std::atan(dashpot / (2.0 * m_eff) / w);
+  return (std::numbers::pi - delta + std::sin(delta)) / w;
+}
+
+double linear_restitution_textbook(double stiffness, double dashpot, double m_eff) {
   const double beta = dashpot / (2.0 * m_eff);
   return std::exp(-std::numbers::pi * beta / damped_frequency(stiffness, dashpot, m_eff));
 }
 
-double linear_collision_time(double stiffness, double dashpot, double m_eff) {
+double linear_collision_time_textbook(double stiffness, double dashpot, double m_eff) {
   return std::numbers::pi / damped_frequency(stiffness, dashpot, m_eff);
 }
 

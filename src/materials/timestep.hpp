@@ -4,14 +4,22 @@
 
 namespace talus {
 
-// ---- linear spring-dashpot: m xi'' + eta xi' + k xi = 0 -------------------------------------
+// ---- linear spring-dashpot: m xi'' = -max(0, k xi + eta xi') ----------------------------------
+// With beta = eta / (2 m), omega = sqrt(k/m - beta^2) and x = beta / omega. Because the force is
+// never attractive, the grains part when it vanishes, before the overlap does (Schwager &
+// Poeschel 2007, Granular Matter 9, 465): e = exp(-x (pi - 2 atan x)), and the overlap returns to
+// zero after t_c = (pi - 2 atan x + sin(2 atan x)) / omega. For weak damping these tend to the
+// textbook e = exp(-pi x) and t_c = pi / omega. The lowest reachable restitution is e^-2.
 
-/// zeta = -ln e / sqrt(pi^2 + ln^2 e): the damping ratio eta / (2 sqrt(k m)) giving restitution e.
+/// The damping ratio zeta = eta / (2 sqrt(k m)) that gives restitution e (exact, by bisection).
 double linear_damping_ratio(double restitution);
-/// e = exp(-pi beta / omega), beta = eta / (2 m), omega = sqrt(k/m - beta^2).
+/// Restitution of the (never attractive) linear spring-dashpot contact.
 double linear_restitution(double stiffness, double dashpot, double m_eff);
-/// t_c = pi / omega.
+/// Duration of the overlap of the (never attractive) linear spring-dashpot contact.
 double linear_collision_time(double stiffness, double dashpot, double m_eff);
+/// The textbook values for a dashpot allowed to pull: e = exp(-pi beta/omega), t_c = pi/omega.
+double linear_restitution_textbook(double stiffness, double dashpot, double m_eff);
+double linear_collision_time_textbook(double stiffness, double dashpot, double m_eff);
 
 // ---- Hertzian viscoelastic: m xi'' = -rho (xi^3/2 + 3/2 A sqrt(xi) xi'), rho = 4/3 E* sqrt(R*) -
 

@@ -27,10 +27,15 @@ void validate_setup(const World& w, const SimulationConfig& c) {
   require(c.threads >= 0, "simulation.threads must be >= 0 (0: all cores)");
   require(c.max_overlap_fraction > 0.0, "simulation.max_overlap_fraction must be > 0");
   if (c.normal_law == NormalLaw::linear)
-    for (const Material& m : w.materials)
+    for (const Material& m : w.materials) {
       require(m.normal_stiffness > 0.0, "material '" + m.name +
                                             "': normal_stiffness must be > 0 N/m for the "
                                             "linear normal law (or choose normal law 'hertz')");
+      require(m.normal_damping_rate >= 0.0 || m.restitution > std::exp(-2.0),
+              "material '" + m.name + "': restitution = " + std::to_string(m.restitution) +
+                  " cannot be reached by the never-attractive linear spring-dashpot; allowed: "
+                  "(0.1354, 1]");
+    }
   for (std::size_t i = 0; i < w.particles.size(); ++i)
     require(w.particles.material[i] < w.materials.size(),
             "particle " + std::to_string(i) + ": material index out of range");

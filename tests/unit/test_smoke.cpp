@@ -1,5 +1,0 @@
-#include "simulation/simulation.hpp"
-#include <gtest/gtest.h>
-TEST(Smoke, Builds) {
-  SUCCEED();
-}
