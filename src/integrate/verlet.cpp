@@ -16,16 +16,25 @@ Integrator parse_integrator(std::string_view name) {
   throw InvalidArgument("unknown integrator '" + std::string(name) + "'; allowed: gear, verlet");
 }
 
+// Positions and velocities follow velocity Verlet exactly. The velocity the contact laws see
+// while F(t + dt) is computed is not the half-step one but its prediction v(t) + dt a(t)
+// (Groot & Warren 1997, lambda = 1): velocity-dependent damping then lags by O(dt^2), not O(dt).
 void verlet_predict(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
+  p.force_previous.resize(p.size());
+  p.torque_previous.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (p.kind[i] != Kind::free) continue;
-    p.velocity[i] += half * p.inv_mass[i] * p.force[i];
-    p.position[i] += dt * p.velocity[i];
-    p.angular_velocity[i] += half * p.inv_inertia[i] * p.torque[i];
-    p.angle[i] += dt * p.angular_velocity[i];
+    const Vec2 kick = half * p.inv_mass[i] * p.force[i];
+    p.position[i] += dt * (p.velocity[i] + kick);
+    p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
+    const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
+    p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
+    p.angular_velocity[i] += 2.0 * spin_kick;
+    p.force_previous[i] = p.force[i];
+    p.torque_previous[i] = p.torque[i];
   }
 }
 
@@ -35,8 +44,9 @@ void verlet_correct(Particles& p, double dt, int threads) {
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (p.kind[i] != Kind::free) continue;
-    p.velocity[i] += half * p.inv_mass[i] * p.force[i];
-    p.angular_velocity[i] += half * p.inv_inertia[i] * p.torque[i];
+    // v(t + dt) = v(t) + dt/2 (a(t) + a(t + dt)): replace the predicted second half-kick
+    p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
+    p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
   }
 }
 

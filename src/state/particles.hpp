@@ -62,6 +62,8 @@ struct Particles {
   std::vector<Kind> kind;
   std::vector<std::uint32_t> id; ///< stable identity: survives any reordering
   GearDerivatives gear;
+  std::vector<Vec2> force_previous;    ///< velocity Verlet: F(t) while F(t + dt) is computed
+  std::vector<double> torque_previous; ///< velocity Verlet: the same for the torque
 
   std::size_t size() const { return position.size(); }
   bool empty() const { return position.empty(); }
