@@ -1,0 +1,185 @@
+// Segment walls and prescribed motion: what a wall carries, joints touched once, drivers exact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "analysis/observables.hpp"
+#include "core/error.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus {
+namespace {
+
+Material stiff() {
+  Material m;
+  m.normal_stiffness = 1.0e5;
+  m.restitution = 0.3;
+  m.friction = 0.5;
+  return m;
+}
+
+Driver driver(Motion motion, std::vector<std::uint32_t> particles,
+              std::vector<std::uint32_t> segments = {}) {
+  Driver d;
+  d.motion = motion;
+  d.targets = {std::move(particles), std::move(segments)};
+  return d;
+}
+
+SimulationConfig config(double dt = 2e-6) {
+  SimulationConfig c;
+  c.timestep = dt;
+  return c;
+}
+
+// A grain at rest on a floor made of two collinear segments, right above their joint: the floor
+// carries its weight once (the joint is not touched twice), and reports it.
+TEST(SegmentWalls, GrainOnAJointIsCarriedOnceAndTheFloorReportsItsWeight) {
+  for (const double x : {0.0, 0.3e-3, 5e-3}) { // on the joint, near it, far from it
+    World w;
+    w.materials = {stiff()};
+    w.gravity = {0.0, -9.81};
+    w.add_wall({-0.05, 0.0}, {0.0, 0.0});
+    w.add_wall({0.0, 0.0}, {0.05, 0.0});
+    w.add_particle({.position = {x, 1e-3}, .radius = 1e-3});
+    Simulation s(std::move(w), config());
+    s.run(40'000); // settles on the floor
+    const double weight = s.world().particles.mass[0] * 9.81;
+    const double sag = weight / 1.0e5;
+    EXPECT_NEAR(s.world().particles.position[0].y, 1e-3 - sag, 0.02 * sag) << "x = " << x;
+    const Vec2 floor = s.world().walls[0].force + s.world().walls[1].force;
+    EXPECT_NEAR(floor.y, -weight, 1e-3 * weight) << "x = " << x;
+  }
+}
+
+TEST(SegmentWalls, GrainStaysInsideABox) {
+  World w;
+  w.materials = {stiff()};
+  w.gravity = {0.0, -9.81};
+  w.add_wall({0.0, 0.0}, {0.02, 0.0});
+  w.add_wall({0.0, 0.1}, {0.0, 0.0});
+  w.add_wall({0.02, 0.0}, {0.02, 0.1});
+  w.add_particle({.position = {0.01, 0.02}, .radius = 1e-3, .velocity = {0.8, -0.3}});
+  Simulation s(std::move(w), config());
+  s.run(100'000);
+  const Vec2 r = s.world().particles.position[0];
+  EXPECT_GT(r.x, 0.0);
+  EXPECT_LT(r.x, 0.02);
+  EXPECT_GT(r.y, 0.0);
+}
+
+TEST(Drivers, VibrateTranslateAndRotateFollowTheirLaws) {
+  World w;
+  w.materials = {stiff()};
+  const auto a = w.add_particle({.position = {0.0, 0.0}, .radius = 1e-3, .kind = Kind::moved});
+  const auto b = w.add_particle({.position = {1.0, 0.0}, .radius = 1e-3, .kind = Kind::moved});
+  const auto c = w.add_particle({.position = {2.0, 0.0}, .radius = 1e-3, .kind = Kind::moved});
+  const auto seg = w.add_wall({-1.0, -1.0}, {1.0, -1.0});
+  const auto u32 = [](std::size_t v) { return static_cast<std::uint32_t>(v); };
+  w.drivers.push_back(driver(Vibrate{{0.0, 2.0}, 1e-3, 10.0, 0.0}, {u32(a)}));
+  w.drivers.push_back(driver(Translate{{0.0, -0.5}}, {u32(b)}, {u32(seg)}));
+  w.drivers.push_back(driver(Rotate{{2.0, 1.0}, 2.0}, {u32(c)}));
+  Simulation s(std::move(w), config(1e-4));
+  s.run(1234);
+  const double t = s.time();
+  const auto& p = s.world().particles;
+  const double wv = 2.0 * std::numbers::pi * 10.0;
+  EXPECT_NEAR(p.position[a].y, 1e-3 * std::sin(wv * t), 1e-15);
+  EXPECT_NEAR(p.velocity[a].y, 1e-3 * wv * std::cos(wv * t), 1e-12);
+  EXPECT_NEAR(p.position[b].y, -0.5 * t, 1e-15);
+  EXPECT_NEAR(s.world().walls[seg].a.y, -1.0 - 0.5 * t, 1e-15);
+  EXPECT_DOUBLE_EQ(s.world().walls[seg].velocity.y, -0.5);
+  // rotation about (2, 1) at 2 rad/s, starting at angle -pi/2 from the centre
+  const double phi = -std::numbers::pi / 2 + 2.0 * t;
+  EXPECT_NEAR(p.position[c].x, 2.0 + std::cos(phi), 1e-12);
+  EXPECT_NEAR(p.position[c].y, 1.0 + std::sin(phi), 1e-12);
+  EXPECT_NEAR(norm(p.velocity[c]), 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.angular_velocity[c], 2.0);
+}
+
+TEST(Drivers, RefuseToDriveAFreeParticle) {
+  World w;
+  w.materials = {stiff()};
+  w.add_particle({.position = {0.0, 0.0}, .radius = 1e-3});
+  w.drivers.push_back(driver(Translate{{1.0, 0.0}}, {0}));
+  EXPECT_THROW(Simulation(std::move(w), config()), InvalidArgument);
+}
+
+TEST(Observables, DiskRectangleAreaIsExact) {
+  const double pi = std::numbers::pi;
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-2, -2}, {2, 2}), pi, 1e-12);      // inside
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, -2}, {2, 2}), pi / 2, 1e-12);   // half
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, 0}, {2, 2}), pi / 4, 1e-12);    // quarter
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {5, 5}, {6, 6}), 0.0, 1e-15);       // apart
+  // circular segment above y = 0.5: r^2 acos(d/r) - d sqrt(r^2 - d^2)
+  const double seg = std::acos(0.5) - 0.5 * std::sqrt(0.75);
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-2, 0.5}, {2, 2}), seg, 1e-12);
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-0.3, -0.4}, {0.2, 0.1}), 0.5 * 0.5, 1e-12);
+}
+
+TEST(Observables, MomentaEnergyAndCoordinationOfASimpleState) {
+  World w;
+  w.materials = {stiff()};
+  w.gravity = {0.0, -10.0};
+  w.add_particle({.position = {0.0, 1.0}, .radius = 0.1, .velocity = {1.0, 0.0}, .angular_velocity = 2.0, .mass = 2.0, .inertia = 0.5});
+  w.add_particle({.position = {0.19, 1.0}, .radius = 0.1, .mass = 1.0, .inertia = 0.1});
+  w.add_particle({.position = {5.0, 5.0}, .radius = 0.1, .kind = Kind::fixed});
+  Simulation s(std::move(w), config());
+  const Energies e = energies(s);
+  EXPECT_DOUBLE_EQ(e.translational, 1.0);
+  EXPECT_DOUBLE_EQ(e.rotational, 0.5 * 0.5 * 4.0);
+  EXPECT_DOUBLE_EQ(e.gravitational, 3.0 * 10.0 * 1.0);
+  EXPECT_NEAR(e.elastic, 0.5 * 1.0e5 * 0.01 * 0.01, 1e-8); // overlap 0.01 m (0.19 inexact)
+  EXPECT_EQ(linear_momentum(s), (Vec2{2.0, 0.0}));
+  // orbital about (0, 0): 2 * (0 * 0 - 1 * 1) = -2; spin 0.5 * 2 = 1
+  EXPECT_DOUBLE_EQ(angular_momentum(s, {0.0, 0.0}), -1.0);
+  EXPECT_DOUBLE_EQ(coordination_number(s), 1.0);
+  EXPECT_EQ(contact_count(s), 1U);
+}
+
+TEST(Materials, MixingRulesAndValidation) {
+  Material a, b;
+  a.young = 1e9, a.poisson = 0.25, a.normal_stiffness = 1e5, a.friction = 0.2;
+  b.young = 3e9, b.poisson = 0.35, b.normal_stiffness = 3e5, b.friction = 0.6;
+  const PairParameters p = mix(a, b);
+  EXPECT_NEAR(p.effective_young, 1.0 / ((1 - 0.0625) / 1e9 + (1 - 0.1225) / 3e9), 1e-3);
+  EXPECT_NEAR(p.normal_stiffness, 1.5e5, 1e-9);
+  EXPECT_NEAR(p.friction, 0.4, 1e-15);
+  EXPECT_NEAR(mix(a, a).normal_stiffness, a.normal_stiffness, 1e-9); // self-pair keeps its own
+  Material bad;
+  bad.name = "sand";
+  bad.restitution = 1.5;
+  try {
+    validate(bad);
+    FAIL() << "restitution 1.5 accepted";
+  } catch (const InvalidArgument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("sand"), std::string::npos);
+    EXPECT_NE(what.find("restitution"), std::string::npos);
+    EXPECT_NE(what.find("(0, 1]"), std::string::npos);
+  }
+}
+
+// A grain bouncing on a floor whose spring is far too stiff for the timestep (omega dt = 5)
+// gains energy at every bounce until an overlap passes half its radius.
+TEST(Stability, AnExplodingRunStopsWithADiagnosis) {
+  World w;
+  Material m = stiff();
+  m.normal_stiffness = 2e6;
+  m.restitution = 1.0;
+  w.materials = {m};
+  w.gravity = {0.0, -9.81};
+  w.add_wall({-1.0, 0.0}, {1.0, 0.0});
+  w.add_particle({.position = {0.0, 1.5e-3}, .radius = 1e-3});
+  Simulation s(std::move(w), config(2e-4));
+  try {
+    s.run(1'000'000);
+    FAIL() << "no instability detected";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("timestep"), std::string::npos);
+  }
+}
+
+} // namespace
+} // namespace talus
