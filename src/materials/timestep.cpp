@@ -10,7 +10,9 @@ namespace talus {
 
 namespace {
 // -ln e as a function of x = beta / omega for the never-attractive dashpot; increasing in x.
-double log_loss(double x) { return x * (std::numbers::pi - 2.0 * std::atan(x)); }
+double log_loss(double x) {
+  return x * (std::numbers::pi - 2.0 * std::atan(x));
+}
 } // namespace
 
 double linear_damping_ratio(double restitution) {

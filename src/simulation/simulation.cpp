@@ -1,5 +1,6 @@
 #include "simulation/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -49,7 +50,11 @@ Simulation::Simulation(World world, SimulationConfig config)
     : world_(std::move(world)), config_(config) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials);
-  threads_ = config_.threads > 0 ? config_.threads : omp_get_max_threads();
+  const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
+  const std::size_t per_thread = std::max<std::size_t>(1, config_.min_particles_per_thread);
+  const auto useful = static_cast<int>(std::min<std::size_t>(
+      world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
+  threads_ = std::max(1, useful);
   if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
   for (Driver& d : world_.drivers) {
     attach(d, world_.particles, world_.walls);

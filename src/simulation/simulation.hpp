@@ -19,6 +19,9 @@ struct SimulationConfig {
   TangentialLaw tangential_law = TangentialLaw::cundall_strack;
   double skin = 0.0; ///< m; 0: a quarter of the mean free-particle radius
   int threads = 0;   ///< 0: all cores (OpenMP default)
+  /// Fewer particles than this per thread is not worth the threads' overhead: small systems
+  /// use fewer threads (the results are bit-identical whatever the count).
+  std::size_t min_particles_per_thread = 500;
   /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
   double max_overlap_fraction = 0.5;
 };

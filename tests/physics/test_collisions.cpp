@@ -16,12 +16,13 @@ using testing::two_grains;
 
 constexpr double r = 1.0e-3; // m
 
-SimulationConfig config_for(const World& w, Integrator integrator, TangentialLaw t,
-                            double steps_per_collision = reference::conservation_steps_per_collision) {
+SimulationConfig
+config_for(const World& w, Integrator integrator, TangentialLaw t,
+           double steps_per_collision = reference::conservation_steps_per_collision) {
   SimulationConfig c;
   const double m_eff = 0.5 * w.particles.mass[0];
-  c.timestep = linear_collision_time(w.materials[0].normal_stiffness, 0.0, m_eff) /
-               steps_per_collision;
+  c.timestep =
+      linear_collision_time(w.materials[0].normal_stiffness, 0.0, m_eff) / steps_per_collision;
   c.integrator = integrator;
   c.tangential_law = t;
   return c;

@@ -32,8 +32,10 @@ std::uint64_t poured_hash(int threads, Integrator integrator) {
   spec.count = 400;
   PourBox box = build_pour_box(spec);
   box.config.threads = threads;
+  box.config.min_particles_per_thread = 1; // really use the threads on this small system
   box.config.integrator = integrator;
   Simulation s(std::move(box.world), box.config);
+  EXPECT_EQ(s.threads(), threads);
   s.run(20'000); // grains fall, collide and pile up: many contacts with history
   EXPECT_GT(s.neighbours().builds, 3U);
   return state_hash(s);

@@ -34,7 +34,8 @@ double oscillator_error(Integrator integrator, double steps) {
 }
 
 TEST(IntegratorOrder, VerletIsSecondOrder) {
-  const double ratio = oscillator_error(Integrator::verlet, 100) / oscillator_error(Integrator::verlet, 200);
+  const double ratio =
+      oscillator_error(Integrator::verlet, 100) / oscillator_error(Integrator::verlet, 200);
   EXPECT_NEAR(ratio, reference::verlet_error_ratio,
               reference::verlet_error_ratio * reference::order_tolerance);
 }

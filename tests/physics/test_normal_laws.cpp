@@ -48,8 +48,8 @@ TEST_P(LinearLaw, MatchesTextbookRestitutionAndDurationAtWeakDamping) {
   const double mass = shape_mass(Shape::disk, r, m.density), m_eff = 0.5 * mass;
   const double eta = mix(m, m).normal_dashpot(m_eff);
   const double tc = linear_collision_time_textbook(m.normal_stiffness, eta, m_eff);
-  const Outcome o = head_on(m, NormalLaw::linear, GetParam(), 0.02,
-                            tc / reference::linear_steps_per_collision);
+  const Outcome o =
+      head_on(m, NormalLaw::linear, GetParam(), 0.02, tc / reference::linear_steps_per_collision);
   const double e = linear_restitution_textbook(m.normal_stiffness, eta, m_eff);
   EXPECT_NEAR(o.restitution, e, e * reference::linear_tolerance);
   EXPECT_NEAR(o.contact_time, tc, tc * reference::linear_tolerance);
@@ -96,7 +96,8 @@ TEST(HertzLaw, ElasticCollisionMatchesClosedForms) {
                           std::pow(m_eff * m_eff / (r_eff * e_star * e_star * v), 0.2);
     const double xi_ref = std::pow(5.0 * m_eff * v * v / (4.0 * rho), 0.4);
     const double f_ref = rho * std::pow(xi_ref, 1.5);
-    const Outcome o = head_on(m, NormalLaw::hertz, Integrator::gear, v, tc_ref / 200.0, Shape::sphere);
+    const Outcome o =
+        head_on(m, NormalLaw::hertz, Integrator::gear, v, tc_ref / 200.0, Shape::sphere);
     EXPECT_NEAR(o.contact_time, tc_ref, tc_ref * reference::hertz_tolerance) << "v = " << v;
     EXPECT_NEAR(o.max_overlap, xi_ref, xi_ref * reference::hertz_tolerance) << "v = " << v;
     EXPECT_NEAR(o.max_force, f_ref, f_ref * reference::hertz_tolerance) << "v = " << v;

@@ -31,7 +31,8 @@ TEST_P(Rolling, StartsToRollAtTheClassicalSpeedAndTime) {
   w.add_wall({-1.0, 0.0}, {10.0, 0.0});
   const double mass = shape_mass(rc.shape, r, m.density);
   const double sag = mass * g / m.normal_stiffness; // resting overlap
-  w.add_particle({.position = {0.0, r - sag}, .radius = r, .shape = rc.shape, .velocity = {v0, 0.0}});
+  w.add_particle(
+      {.position = {0.0, r - sag}, .radius = r, .shape = rc.shape, .velocity = {v0, 0.0}});
 
   SimulationConfig c;
   c.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 50.0;
@@ -41,10 +42,11 @@ TEST_P(Rolling, StartsToRollAtTheClassicalSpeedAndTime) {
   Simulation s(std::move(w), c);
 
   const bool disk = rc.shape == Shape::disk;
-  const double t_ref = (disk ? reference::disk_roll_time_factor
-                             : reference::sphere_roll_time_factor) * v0 / (mu * g);
-  const double v_ref = (disk ? reference::disk_roll_speed_ratio
-                             : reference::sphere_roll_speed_ratio) * v0;
+  const double t_ref =
+      (disk ? reference::disk_roll_time_factor : reference::sphere_roll_time_factor) * v0 /
+      (mu * g);
+  const double v_ref =
+      (disk ? reference::disk_roll_speed_ratio : reference::sphere_roll_speed_ratio) * v0;
   const auto& p = s.world().particles;
   // rolling begins when the contact point's slip falls below 1% of v0
   double t_roll = -1.0, v_roll = 0.0;

@@ -28,10 +28,10 @@ inline World two_grains(const Material& m, double r, double v, double b = 0.0,
   w.materials = {m};
   const double sep = 2.0 * r * (1.0 + gap);
   const double dx = std::sqrt(std::max(sep * sep - b * b, 0.0));
-  w.add_particle({.position = {-0.5 * dx, -0.5 * b}, .radius = r, .shape = shape,
-                  .velocity = {0.5 * v, 0.0}});
-  w.add_particle({.position = {0.5 * dx, 0.5 * b}, .radius = r, .shape = shape,
-                  .velocity = {-0.5 * v, 0.0}});
+  w.add_particle(
+      {.position = {-0.5 * dx, -0.5 * b}, .radius = r, .shape = shape, .velocity = {0.5 * v, 0.0}});
+  w.add_particle(
+      {.position = {0.5 * dx, 0.5 * b}, .radius = r, .shape = shape, .velocity = {-0.5 * v, 0.0}});
   return w;
 }
 

@@ -108,10 +108,10 @@ TEST(Drivers, RefuseToDriveAFreeParticle) {
 
 TEST(Observables, DiskRectangleAreaIsExact) {
   const double pi = std::numbers::pi;
-  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-2, -2}, {2, 2}), pi, 1e-12);      // inside
-  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, -2}, {2, 2}), pi / 2, 1e-12);   // half
-  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, 0}, {2, 2}), pi / 4, 1e-12);    // quarter
-  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {5, 5}, {6, 6}), 0.0, 1e-15);       // apart
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-2, -2}, {2, 2}), pi, 1e-12);    // inside
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, -2}, {2, 2}), pi / 2, 1e-12); // half
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {0, 0}, {2, 2}), pi / 4, 1e-12);  // quarter
+  EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {5, 5}, {6, 6}), 0.0, 1e-15);     // apart
   // circular segment above y = 0.5: r^2 acos(d/r) - d sqrt(r^2 - d^2)
   const double seg = std::acos(0.5) - 0.5 * std::sqrt(0.75);
   EXPECT_NEAR(disk_rectangle_area({0, 0}, 1.0, {-2, 0.5}, {2, 2}), seg, 1e-12);
@@ -122,7 +122,12 @@ TEST(Observables, MomentaEnergyAndCoordinationOfASimpleState) {
   World w;
   w.materials = {stiff()};
   w.gravity = {0.0, -10.0};
-  w.add_particle({.position = {0.0, 1.0}, .radius = 0.1, .velocity = {1.0, 0.0}, .angular_velocity = 2.0, .mass = 2.0, .inertia = 0.5});
+  w.add_particle({.position = {0.0, 1.0},
+                  .radius = 0.1,
+                  .velocity = {1.0, 0.0},
+                  .angular_velocity = 2.0,
+                  .mass = 2.0,
+                  .inertia = 0.5});
   w.add_particle({.position = {0.19, 1.0}, .radius = 0.1, .mass = 1.0, .inertia = 0.1});
   w.add_particle({.position = {5.0, 5.0}, .radius = 0.1, .kind = Kind::fixed});
   Simulation s(std::move(w), config());
