@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages talus needs to build and test, if any are missing.
+set -euo pipefail
+
+packages=(
+  g++ cmake ninja-build     # compiler and build
+  libgtest-dev              # tests (GoogleTest)
+  libfmt-dev libcli11-dev   # formatting, command line
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "talus: installing missing Debian packages: ${missing[*]}"
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
