@@ -6,6 +6,7 @@ packages=(
   g++ cmake ninja-build     # compiler and build
   libgtest-dev              # tests (GoogleTest)
   libfmt-dev libcli11-dev   # formatting, command line
+  libcairo2-dev pkg-config  # pictures
 )
 
 missing=()

@@ -14,6 +14,7 @@
 #include "analysis/observables.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
+#include "render/snapshot_png.hpp"
 #include "scenario/pour_box.hpp"
 
 namespace talus::cli {
@@ -112,6 +113,7 @@ void run_demo(const DemoOptions& o) {
                     p.angular_velocity[i], p.radius[i], p.mass[i], static_cast<int>(p.kind[i]));
   write_atomically(dir / "thermo.csv", thermo);
   write_atomically(dir / "particles.csv", final_state);
+  write_snapshot_png(sim, (dir / "final.png").string(), 1200, SnapshotColour::size);
   const double rate = static_cast<double>(done) * static_cast<double>(p.size()) / seconds;
   fmt::print("{} after {} steps (t = {:.3f} s): {:.2f} s wall, {:.3e} particle-steps/s, "
              "{} neighbour-list builds\n",
@@ -122,7 +124,7 @@ void run_demo(const DemoOptions& o) {
   fmt::print("the floor carries {:.4f} N of the grains' weight {:.4f} N (the rest rests on the "
              "side walls through friction)\n",
              -sim.world().walls[0].force.y, weight);
-  fmt::print("wrote {}/thermo.csv and {}/particles.csv\n", dir.string(), dir.string());
+  fmt::print("wrote {0}/thermo.csv, {0}/particles.csv and {0}/final.png\n", dir.string());
 }
 
 } // namespace
