@@ -18,6 +18,14 @@ Integrator parse_integrator(std::string_view name);
 /// thesis' eq. 2.4). Position-only forces would use c0 = 19/120.
 inline constexpr double gear_c[5] = {19.0 / 90.0, 3.0 / 4.0, 1.0, 1.0 / 2.0, 1.0 / 12.0};
 
+/// Largest timestep at which the integrator keeps an undamped contact oscillation of stiffness k
+/// and reduced mass m_eff bounded. Velocity Verlet: omega dt < 2, exactly. Gear (5 values,
+/// c0 = 19/90) is weakly unstable on an undamped oscillator: the amplitude grows per step by
+/// 1.5e-5 at omega dt = 0.25 and 7.5e-4 at 0.5, roughly as (omega dt)^5.7 (amplification matrix
+/// iterated, see docs/model.md); its bound is taken as omega dt = 0.2, where the growth is
+/// about 5e-6 per step and far below what contact damping removes.
+double max_stable_timestep(Integrator integrator, double stiffness, double m_eff);
+
 /// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
 void gear_initialise(Particles& p);
 /// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.

@@ -1,5 +1,6 @@
 #include "integrate/integrator.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "core/error.hpp"
@@ -19,6 +20,12 @@ Integrator parse_integrator(std::string_view name) {
 // Positions and velocities follow velocity Verlet exactly. The velocity the contact laws see
 // while F(t + dt) is computed is not the half-step one but its prediction v(t) + dt a(t)
 // (Groot & Warren 1997, lambda = 1): velocity-dependent damping then lags by O(dt^2), not O(dt).
+double max_stable_timestep(Integrator integrator, double stiffness, double m_eff) {
+  require(stiffness > 0.0 && m_eff > 0.0, "max_stable_timestep: stiffness and mass must be > 0");
+  const double omega = std::sqrt(stiffness / m_eff);
+  return (integrator == Integrator::verlet ? 2.0 : 0.2) / omega;
+}
+
 void verlet_predict(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());

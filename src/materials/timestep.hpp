@@ -39,9 +39,7 @@ double hertz_damping_for_restitution(double restitution, double m_eff, double rh
 // ---- stability ------------------------------------------------------------------------------
 
 /// Largest stable step of velocity Verlet for an undamped oscillator of stiffness k: 2/omega.
-/// The Gear predictor-corrector is stable to a smaller step (see gear_stability_fraction).
+/// (For the Gear predictor-corrector see max_stable_timestep in integrate/integrator.hpp.)
 double verlet_stable_timestep(double stiffness, double m_eff);
-/// Measured ratio of Gear's largest stable step to Verlet's, for the harmonic oscillator.
-inline constexpr double gear_stability_fraction = 0.5;
 
 } // namespace talus

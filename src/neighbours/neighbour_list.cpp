@@ -22,14 +22,26 @@ bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments
 
 namespace {
 
-// Copies the history of entries whose key survives from the old row to the new row. Both rows
-// are sorted by key.
-void carry_history(const std::uint32_t* old_key, const double* old_history, std::size_t old_n,
-                   const std::uint32_t* new_key, double* new_history, std::size_t new_n) {
-  std::size_t a = 0;
-  for (std::size_t b = 0; b < new_n; ++b) {
-    while (a < old_n && old_key[a] < new_key[b]) ++a;
-    new_history[b] = (a < old_n && old_key[a] == new_key[b]) ? old_history[a] : 0.0;
+// A CSR table of (key, history) rows, keys sorted within each row.
+struct HistoryRows {
+  const std::vector<std::uint32_t>& offset;
+  const std::vector<std::uint32_t>& key;
+  const std::vector<double>& history;
+};
+
+// Sizes `history` to the new rows and copies the history of every entry whose key survives from
+// the old row to the new one (a merge of sorted rows); new entries start at 0. The old table is
+// used only if it has the same number of rows.
+void carry_history(const HistoryRows& old_rows, const std::vector<std::uint32_t>& offset,
+                   const std::vector<std::uint32_t>& key, std::vector<double>& history) {
+  history.assign(key.size(), 0.0);
+  if (old_rows.offset.size() != offset.size()) return;
+  for (std::size_t i = 0; i + 1 < offset.size(); ++i) {
+    std::uint32_t a = old_rows.offset[i];
+    for (std::uint32_t b = offset[i]; b < offset[i + 1]; ++b) {
+      while (a < old_rows.offset[i + 1] && old_rows.key[a] < key[b]) ++a;
+      if (a < old_rows.offset[i + 1] && old_rows.key[a] == key[b]) history[b] = old_rows.history[a];
+    }
   }
 }
 
@@ -42,7 +54,6 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   std::vector<std::uint32_t> old_offset = std::move(list.row_offset);
   std::vector<std::uint32_t> old_neighbour = std::move(list.neighbour);
   std::vector<double> old_history = std::move(list.history);
-  const bool can_carry = old_offset.size() == n + 1;
 
   list.row_offset.assign(n + 1, 0);
   list.neighbour.clear();
@@ -88,15 +99,8 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
     list.row_offset[i + 1] = static_cast<std::uint32_t>(list.neighbour.size());
   }
 
-  list.history.assign(list.neighbour.size(), 0.0);
-  if (can_carry) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t o0 = old_offset[i], o1 = old_offset[i + 1];
-      const std::uint32_t n0 = list.row_offset[i], n1 = list.row_offset[i + 1];
-      carry_history(old_neighbour.data() + o0, old_history.data() + o0, o1 - o0,
-                    list.neighbour.data() + n0, list.history.data() + n0, n1 - n0);
-    }
-  }
+  carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
+                list.history);
 
   // transpose: for each particle, the entries where it is the second partner, in entry order
   list.col_offset.assign(n + 1, 0);
@@ -113,7 +117,6 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
   std::vector<std::uint32_t> old_offset = std::move(list.wall_offset);
   std::vector<std::uint32_t> old_segment = std::move(list.wall_segment);
   std::vector<double> old_history = std::move(list.wall_history);
-  const bool can_carry = old_offset.size() == n + 1;
 
   list.wall_offset.assign(n + 1, 0);
   list.wall_segment.clear();
@@ -126,15 +129,8 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
     }
     list.wall_offset[i + 1] = static_cast<std::uint32_t>(list.wall_segment.size());
   }
-  list.wall_history.assign(list.wall_segment.size(), 0.0);
-  if (can_carry) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t o0 = old_offset[i], o1 = old_offset[i + 1];
-      const std::uint32_t n0 = list.wall_offset[i], n1 = list.wall_offset[i + 1];
-      carry_history(old_segment.data() + o0, old_history.data() + o0, o1 - o0,
-                    list.wall_segment.data() + n0, list.wall_history.data() + n0, n1 - n0);
-    }
-  }
+  carry_history({old_offset, old_segment, old_history}, list.wall_offset, list.wall_segment,
+                list.wall_history);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "integrate/integrator.hpp"
 #include "physics/reference_values.hpp"
 #include "support/two_body.hpp"
 
@@ -48,6 +49,46 @@ TEST(IntegratorOrder, GearShowsItsOrder) {
       << "errors " << e1 << " and " << e2;
   // and at equal cost Gear is the more accurate of the two here
   EXPECT_LT(e1, oscillator_error(Integrator::verlet, 100));
+}
+
+} // namespace
+} // namespace talus
+
+namespace talus {
+namespace {
+
+// Largest stable timestep: a grain pressed between two fixed grains oscillates undamped.
+double amplitude_growth(Integrator integrator, double fraction_of_bound, int steps) {
+  const double r = 1.0e-3, k = 1.0e4;
+  Material m = testing::elastic_material(k);
+  World w;
+  w.materials = {m};
+  w.add_particle({.position = {-1.99e-3, 0.0}, .radius = r, .kind = Kind::fixed});
+  w.add_particle({.position = {1.99e-3, 0.0}, .radius = r, .kind = Kind::fixed});
+  w.add_particle({.position = {1e-7, 0.0}, .radius = r}); // 1% of the overlaps: in contact
+  const double mass = w.particles.mass[2];
+  SimulationConfig c;
+  // two springs in parallel: stiffness 2k on the grain (m_eff = m against fixed grains)
+  c.timestep = fraction_of_bound * max_stable_timestep(integrator, 2.0 * k, mass);
+  c.integrator = integrator;
+  c.tangential_law = TangentialLaw::coulomb;
+  c.max_overlap_fraction = 1e9; // let it grow: this test measures the growth
+  Simulation s(std::move(w), c);
+  double peak = 0.0;
+  s.run(static_cast<std::uint64_t>(steps), [&](const Simulation& sim) {
+    peak = std::max(peak, std::abs(sim.world().particles.position[2].x));
+  });
+  return peak / 1e-7;
+}
+
+TEST(StableTimestep, VerletBoundIsSharp) {
+  EXPECT_LT(amplitude_growth(Integrator::verlet, 0.95, 2000), 10.0);
+  EXPECT_GT(amplitude_growth(Integrator::verlet, 1.05, 2000), 50.0); // grows until it leaves
+}
+
+TEST(StableTimestep, GearStaysBoundedAtItsBound) {
+  EXPECT_LT(amplitude_growth(Integrator::gear, 1.0, 2000), 1.05);
+  EXPECT_GT(amplitude_growth(Integrator::gear, 3.0, 2000), 1.5); // and it is a real bound
 }
 
 } // namespace

@@ -1,0 +1,96 @@
+// Tangential laws against their definitions, and a damping rate given LAMMPS' way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/contact_law.hpp"
+#include "materials/timestep.hpp"
+#include "support/two_body.hpp"
+
+namespace talus {
+namespace {
+
+ContactGeometry touching(double overlap, double v_tangent) {
+  ContactGeometry g;
+  g.normal = {1.0, 0.0};
+  g.overlap = overlap;
+  g.r_eff = 5e-4;
+  g.m_eff = 1e-5;
+  g.arm_i = g.arm_j = 1e-3 - overlap / 2;
+  g.v_normal = 0.0;
+  g.v_tangent = v_tangent;
+  return g;
+}
+
+PairParameters params() {
+  Material m;
+  m.young = 1e8;
+  m.poisson = 0.3;
+  m.normal_stiffness = 1e4;
+  m.friction = 0.5;
+  return mix(m, m);
+}
+
+TEST(TangentialLaws, MindlinStiffnessIsEightGStarSqrtRXi) {
+  const PairParameters p = params();
+  const ContactGeometry g = touching(1e-6, 1e-3);
+  double s = 0.0;
+  const double dt = 1e-7; // a small step: the spring stays far below mu F_n
+  const ContactForce f = contact_force<HertzViscoelastic, MindlinNoSlip>(p, g, s, dt);
+  const double kt = 8.0 * p.effective_shear * std::sqrt(g.r_eff * g.overlap);
+  EXPECT_DOUBLE_EQ(s, 1e-3 * dt);
+  EXPECT_NEAR(dot(f.force, g.tangent()), -kt * s, 1e-12 * kt * s);
+  // torques: both grains are turned the same way by a tangential force (-a F_t each)
+  EXPECT_NEAR(f.torque_i, g.arm_i * kt * s, 1e-15);
+  EXPECT_NEAR(f.torque_j, g.arm_j * kt * s, 1e-15);
+}
+
+TEST(TangentialLaws, CundallStrackSlipsAtMuFnAndResetsItsSpring) {
+  const PairParameters p = params();
+  const ContactGeometry g = touching(1e-5, 0.1);
+  double s = 0.0;
+  ContactForce f{};
+  for (int k = 0; k < 1000; ++k)
+    f = contact_force<LinearSpringDashpot, CundallStrack>(p, g, s, 1e-6);
+  const double fn = p.normal_stiffness * g.overlap;
+  EXPECT_NEAR(f.normal_force, fn, 1e-15);
+  EXPECT_NEAR(dot(f.force, g.tangent()), -0.5 * fn, 1e-15); // sliding: F_t = -mu F_n
+  const double kt = p.tangential_stiffness_ratio * p.normal_stiffness;
+  EXPECT_NEAR(s, 0.5 * fn / kt, 1e-15); // the spring carries exactly the Coulomb force
+}
+
+TEST(TangentialLaws, ViscousCoulombIsCappedAndOpposesSlip) {
+  PairParameters p = params();
+  p.tangential_damping = 1e3;
+  double s = 0.0;
+  const ContactGeometry slow = touching(1e-5, -1e-3), fast = touching(1e-5, 10.0);
+  const double fn = p.normal_stiffness * 1e-5;
+  const auto ft = [&](const ContactGeometry& g) {
+    return dot(contact_force<LinearSpringDashpot, ViscousCoulomb>(p, g, s, 1e-6).force,
+               g.tangent());
+  };
+  EXPECT_NEAR(ft(slow), 1e3 * 1e-5 * 1e-3, 1e-18); // viscous: gamma_t m* |v_t|, opposing
+  EXPECT_NEAR(ft(fast), -0.5 * fn, 1e-15);         // capped at mu F_n
+  EXPECT_EQ(s, 0.0);                               // no history
+}
+
+// A damping rate gamma_n (1/s) as LAMMPS' gran/hooke takes it gives the restitution of the
+// never-attractive dashpot eta = gamma_n m*.
+TEST(TangentialLaws, LammpsStyleDampingRateGivesItsRestitution) {
+  Material m = testing::elastic_material(1e5);
+  m.normal_damping_rate = 100.0;
+  World w = testing::two_grains(m, 4.5e-3, 0.1, 0.0, Shape::sphere, 0.01);
+  const double m_eff = 0.5 * w.particles.mass[0];
+  const double eta = 100.0 * m_eff;
+  SimulationConfig c;
+  c.timestep = linear_collision_time(1e5, eta, m_eff) / 200.0;
+  c.tangential_law = TangentialLaw::coulomb;
+  Simulation s(std::move(w), c);
+  ASSERT_TRUE(testing::collide(s, 1'000'000).separated);
+  const auto& p = s.world().particles;
+  const double e = linear_restitution(1e5, eta, m_eff);
+  EXPECT_NEAR((p.velocity[1].x - p.velocity[0].x) / 0.1, e, 0.005 * e);
+}
+
+} // namespace
+} // namespace talus
