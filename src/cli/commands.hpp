@@ -4,7 +4,18 @@
 
 namespace talus::cli {
 
+/// Exit status of the chosen command (set by the command's callback).
+int& exit_status();
+
 /// `talus demo`: grains poured into a box settle under gravity (the README's main job).
 void add_demo_command(CLI::App& app);
+/// `talus run SCENARIO`: a scenario file, a thesis .in file or a built-in scenario's name.
+void add_run_command(CLI::App& app);
+/// `talus resume DIR`: continue a stopped run from its last checkpoint.
+void add_resume_command(CLI::App& app);
+/// `talus scenarios`: the built-in scenarios, one line each.
+void add_scenarios_command(CLI::App& app);
+/// `talus convert IN OUT`: thesis .in <-> scenario .toml.
+void add_convert_command(CLI::App& app);
 
 } // namespace talus::cli

@@ -12,6 +12,10 @@ int main(int argc, char** argv) {
   CLI::App app{"talus: discrete element simulation of granular media (2D soft disks)", "talus"};
   app.set_version_flag("--version", std::string("talus ") + TALUS_VERSION);
   app.require_subcommand(1);
+  talus::cli::add_run_command(app);
+  talus::cli::add_resume_command(app);
+  talus::cli::add_scenarios_command(app);
+  talus::cli::add_convert_command(app);
   talus::cli::add_demo_command(app);
   try {
     app.parse(argc, argv);
@@ -27,5 +31,5 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 1;
   }
-  return 0;
+  return talus::cli::exit_status();
 }

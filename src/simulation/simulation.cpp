@@ -47,7 +47,15 @@ void validate_setup(const World& w, const SimulationConfig& c) {
 } // namespace
 
 Simulation::Simulation(World world, SimulationConfig config)
-    : world_(std::move(world)), config_(config) {
+    : Simulation(SimulationState{std::move(world), {}, 0.0, 0}, config, false) {}
+
+Simulation Simulation::restore(SimulationState state, SimulationConfig config) {
+  return Simulation(std::move(state), config, true);
+}
+
+Simulation::Simulation(SimulationState state, SimulationConfig config, bool restoring)
+    : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
+      time_(state.time), steps_(state.steps) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
@@ -56,6 +64,12 @@ Simulation::Simulation(World world, SimulationConfig config)
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
   if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
+  if (restoring) {
+    require(list_.row_offset.size() == world_.particles.size() + 1,
+            "restored state: the neighbour list does not match the particles");
+    config_.skin = list_.skin;
+    return;
+  }
   for (Driver& d : world_.drivers) {
     attach(d, world_.particles, world_.walls);
     apply(d, 0.0, world_.particles, world_.walls);

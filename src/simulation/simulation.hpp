@@ -37,10 +37,24 @@ struct ContactView {
   double history = 0.0;
 };
 
+/// Everything that determines how a run continues: saved in checkpoints.
+struct SimulationState {
+  World world;
+  NeighbourList neighbours;
+  double time = 0.0;
+  std::uint64_t steps = 0;
+};
+
 class Simulation {
 public:
   /// Validates the setup (materials, laws, timestep) and computes the initial forces.
   Simulation(World world, SimulationConfig config);
+  /// Continues from a saved state exactly: drivers keep their origins, forces, integrator
+  /// derivatives and the neighbour list (with its build positions) are taken as saved, so the
+  /// continuation is bit-identical to the run that was saved. `config.threads` may differ.
+  static Simulation restore(SimulationState state, SimulationConfig config);
+  /// A copy of the state, for a checkpoint.
+  SimulationState state() const { return {world_, list_, time_, steps_}; }
 
   /// One time step: predict, move bodies, neighbours, contacts, correct, guard.
   void step();
@@ -61,6 +75,7 @@ public:
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
 private:
+  Simulation(SimulationState state, SimulationConfig config, bool restoring);
   void compute_forces();
   void guard() const;
 

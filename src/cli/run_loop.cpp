@@ -1,0 +1,405 @@
+#include "cli/run_loop.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "analysis/observables.hpp"
+#include "io/checkpoint.hpp"
+#include "io/thesis_format.hpp"
+#include "io/vtk.hpp"
+#include "render/snapshot_png.hpp"
+#include "scenario/load.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+// ---- the bookkeeping saved with each checkpoint ------------------------------------------------
+
+std::string RunBook::encode() const {
+  std::ostringstream o;
+  o.precision(17);
+  for (const auto& [f, b] : file_bytes) o << "file " << f << " " << b << "\n";
+  o << "snapshots " << snapshots << "\nfreezes " << freezes << "\nlast_freeze " << last_freeze
+    << "\nwall_seconds " << wall_seconds << "\nsettle_time " << settle_time << "\ncollision_time "
+    << collision_time << "\nfill " << fill.lo.x << " " << fill.lo.y << " " << fill.hi.x << " "
+    << fill.hi.y << "\nbounds " << bounds.lo.x << " " << bounds.lo.y << " " << bounds.hi.x << " "
+    << bounds.hi.y << "\ntracked";
+  for (const auto t : tracked) o << " " << t;
+  o << "\n";
+  for (const auto& [name, g] : groups) {
+    o << "group " << name << " " << g.particles.size();
+    for (const auto i : g.particles) o << " " << i;
+    o << " " << g.segments.size();
+    for (const auto i : g.segments) o << " " << i;
+    o << "\n";
+  }
+  return o.str();
+}
+
+RunBook RunBook::decode(const std::string& text) {
+  RunBook b;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream l(line);
+    std::string key;
+    l >> key;
+    if (key == "file") {
+      std::string f;
+      std::uint64_t n = 0;
+      l >> f >> n;
+      b.file_bytes[f] = n;
+    } else if (key == "snapshots")
+      l >> b.snapshots;
+    else if (key == "freezes")
+      l >> b.freezes;
+    else if (key == "last_freeze")
+      l >> b.last_freeze;
+    else if (key == "wall_seconds")
+      l >> b.wall_seconds;
+    else if (key == "settle_time")
+      l >> b.settle_time;
+    else if (key == "collision_time")
+      l >> b.collision_time;
+    else if (key == "fill")
+      l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
+    else if (key == "bounds")
+      l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
+    else if (key == "tracked") {
+      for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
+    } else if (key == "group") {
+      std::string name;
+      std::size_t n = 0;
+      l >> name >> n;
+      DriverTargets& g = b.groups[name];
+      g.particles.resize(n);
+      for (auto& i : g.particles) l >> i;
+      l >> n;
+      g.segments.resize(n);
+      for (auto& i : g.segments) l >> i;
+    }
+  }
+  return b;
+}
+
+namespace {
+
+volatile std::sig_atomic_t stop_requested = 0;
+void on_signal(int) {
+  stop_requested = 1;
+}
+
+std::uint64_t every(double interval, double dt) {
+  if (interval <= 0.0) return 0;
+  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / dt)));
+}
+
+class Run {
+public:
+  Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, const RunOptions& o)
+      : s_(s), sim_(std::move(sim)), book_(std::move(book)), dir_(std::move(dir)), o_(o) {
+    const double dt = sim_.config().timestep;
+    total_ = static_cast<std::uint64_t>(std::ceil(s.simulation.duration / dt - 1e-9));
+    stop_ = o.stop_at >= 0.0
+                ? std::min(total_, static_cast<std::uint64_t>(std::ceil(o.stop_at / dt - 1e-9)))
+                : total_;
+    thermo_every_ = every(s.output.thermo_interval, dt);
+    snapshot_every_ = every(s.output.snapshot_interval, dt);
+    track_every_ = std::max<std::uint64_t>(1, every(s.output.track_interval, dt));
+    checkpoint_every_ = every(s.output.checkpoint_interval, dt);
+    tty_ = !o.quiet && ::isatty(STDERR_FILENO);
+    for (std::size_t i = 0; i < sim_.world().particles.size(); ++i)
+      if (sim_.world().particles.is_free(i))
+        weight_scale_ += sim_.world().particles.mass[i] * norm(sim_.world().gravity) *
+                         sim_.world().particles.radius[i];
+  }
+
+  void open_files(bool fresh) {
+    const auto mode = fresh ? std::ios::out | std::ios::trunc : std::ios::out | std::ios::app;
+    thermo_.open(dir_ / "thermo.csv", mode);
+    if (!book_.tracked.empty()) track_.open(dir_ / "track.csv", mode);
+    if (s_.output.thesis_out) out_.open(dir_ / "run.out", mode);
+    if (!thermo_) throw std::runtime_error("cannot write " + (dir_ / "thermo.csv").string());
+    if (!fresh) return;
+    std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
+                       "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
+                       "packing_fraction";
+    for (const auto& [name, _] : book_.groups) head += ",force_" + name + "_x,force_" + name + "_y";
+    thermo_ << head << "\n";
+    if (track_.is_open()) track_ << "time,id,x,y,angle,vx,vy,omega\n";
+    if (out_.is_open()) out_ << thesis_out_header(sim_, s_.simulation.duration);
+    record_thermo();
+    record_track();
+    write_snapshot();
+    if (out_.is_open()) out_ << thesis_out_block(sim_);
+  }
+
+  int loop() {
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    stop_requested = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const double wall_before = book_.wall_seconds;
+    const std::uint64_t first_step = sim_.step_count();
+    const auto wall_now = [&] {
+      return wall_before +
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    std::string ended = "duration";
+    while (sim_.step_count() < stop_) {
+      sim_.step();
+      const std::uint64_t k = sim_.step_count();
+      if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
+      if (k % thermo_every_ == 0) {
+        record_thermo();
+        progress(wall_now() - wall_before, k - first_step);
+        if (s_.frost.model == "uniform" && freeze()) {
+          if (s_.frost.cycles > 0 && book_.freezes >= s_.frost.cycles) {
+            ended = "cycles";
+            break;
+          }
+        }
+      }
+      if (snapshot_every_ && k % snapshot_every_ == 0) {
+        write_snapshot();
+        if (out_.is_open()) out_ << thesis_out_block(sim_);
+      }
+      if (checkpoint_every_ && k % checkpoint_every_ == 0) checkpoint(wall_now());
+      if (stop_requested) {
+        checkpoint(wall_now());
+        finish_progress();
+        fmt::print(stderr,
+                   "talus: interrupted at t = {:.6g} s; checkpoint written. Continue with: "
+                   "talus resume {}\n",
+                   sim_.time(), dir_.string());
+        write_run_json(wall_now(), sim_.step_count() - first_step, "signal");
+        return exit_interrupted;
+      }
+    }
+    if (sim_.step_count() < total_ && ended == "duration") ended = "stop_at";
+    checkpoint(wall_now());
+    finish_progress();
+    if (ended != "stop_at" && s_.output.picture) {
+      write_snapshot_png(sim_, (dir_ / "final.png").string(), 1200, SnapshotColour::speed);
+    }
+    write_run_json(wall_now(), sim_.step_count() - first_step, ended);
+    if (!o_.quiet)
+      fmt::print("{} at t = {:.6g} s after {} steps; run folder {}\n",
+                 ended == "stop_at" ? "stopped (--stop-at)" : "finished", sim_.time(),
+                 sim_.step_count(), dir_.string());
+    return ended == "stop_at" ? exit_stopped : exit_completed;
+  }
+
+private:
+  void record_thermo() {
+    const Energies e = energies(sim_);
+    const Vec2 p = linear_momentum(sim_);
+    std::string row = fmt::format(
+        "{:.9g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},{},{:.6f}",
+        sim_.time(), sim_.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
+        e.total(), p.x, p.y, angular_momentum(sim_), coordination_number(sim_), contact_count(sim_),
+        packing_fraction(sim_, book_.fill.lo, book_.fill.hi));
+    for (const auto& [name, g] : book_.groups) {
+      Vec2 f = force_on_particles(sim_, g.particles);
+      for (const auto sidx : g.segments) f += sim_.world().walls[sidx].force;
+      row += fmt::format(",{:.9e},{:.9e}", f.x, f.y);
+    }
+    thermo_ << row << "\n";
+    last_kinetic_ = e.kinetic();
+  }
+
+  void record_track() {
+    const Particles& p = sim_.world().particles;
+    for (const auto i : book_.tracked)
+      track_ << fmt::format("{:.9g},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g}\n", sim_.time(),
+                            p.id[i], p.position[i].x, p.position[i].y, p.angle[i], p.velocity[i].x,
+                            p.velocity[i].y, p.angular_velocity[i]);
+  }
+
+  void write_snapshot() {
+    const std::uint64_t n = book_.snapshots++;
+    const std::string name = fmt::format("particles_{:06d}.vtp", n);
+    write_file_atomically((dir_ / "snapshots" / name).string(), vtp_particles(sim_));
+    if (!sim_.world().walls.empty())
+      write_file_atomically((dir_ / "snapshots" / fmt::format("walls_{:06d}.vtp", n)).string(),
+                            vtp_walls(sim_));
+    write_collections();
+  }
+
+  void write_collections() {
+    // times of snapshot k: k * interval (snapshot 0 at t = 0)
+    std::vector<std::pair<double, std::string>> particles, walls;
+    const double dt = sim_.config().timestep;
+    for (std::uint64_t k = 0; k < book_.snapshots; ++k) {
+      const double t = static_cast<double>(k * snapshot_every_) * dt;
+      particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
+      walls.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
+    }
+    write_file_atomically((dir_ / "particles.pvd").string(), pvd_collection(particles));
+    if (!sim_.world().walls.empty())
+      write_file_atomically((dir_ / "walls.pvd").string(), pvd_collection(walls));
+  }
+
+  // The thesis' freeze (sec. 5.2): when the grains have come to rest, every free grain's height
+  // above the floor is multiplied by the heave factor. Returns true when it froze.
+  bool freeze() {
+    if (last_kinetic_ >= s_.frost.kinetic_threshold * weight_scale_) return false;
+    if (sim_.time() - book_.last_freeze < s_.frost.min_interval) return false;
+    Particles& p = sim_.world().particles;
+    const double floor = book_.bounds.lo.y;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.is_free(i)) p.position[i].y = floor + (p.position[i].y - floor) * s_.frost.heave_factor;
+    ++book_.freezes;
+    book_.last_freeze = sim_.time();
+    if (!o_.quiet && !tty_) fmt::print("freeze {} at t = {:.6g} s\n", book_.freezes, sim_.time());
+    return true;
+  }
+
+  void checkpoint(double wall) {
+    for (std::ofstream* f : {&thermo_, &track_, &out_}) f->flush();
+    book_.file_bytes.clear();
+    for (const char* name : {"thermo.csv", "track.csv", "run.out"})
+      if (fs::exists(dir_ / name)) book_.file_bytes[name] = fs::file_size(dir_ / name);
+    book_.wall_seconds = wall;
+    Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
+    const fs::path latest = dir_ / "checkpoint.bin", previous = dir_ / "checkpoint.prev.bin";
+    if (fs::exists(latest)) fs::rename(latest, previous);
+    write_file_atomically(latest.string(), encode_checkpoint(c));
+  }
+
+  void progress(double wall, std::uint64_t steps_done) {
+    if (o_.quiet) return;
+    const double fraction = static_cast<double>(sim_.step_count()) / static_cast<double>(total_);
+    const double rate = wall > 0 ? static_cast<double>(steps_done) / wall : 0.0;
+    const double eta = rate > 0 ? static_cast<double>(stop_ - sim_.step_count()) / rate : 0.0;
+    if (tty_) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_print_ < std::chrono::milliseconds(250)) return;
+      last_print_ = now;
+      const int filled = static_cast<int>(fraction * 30.0);
+      fmt::print(
+          stderr, "\r  t = {:.4f} / {:.4f} s [{}{}] {:5.1f}%  {:.3g} steps/s  ETA {:.0f} s   ",
+          sim_.time(), s_.simulation.duration, std::string(static_cast<std::size_t>(filled), '#'),
+          std::string(static_cast<std::size_t>(30 - filled), '.'), 100.0 * fraction, rate, eta);
+      printed_ = true;
+    } else if (fraction >= next_report_) {
+      next_report_ = std::floor(fraction * 10.0 + 1.0) / 10.0;
+      fmt::print(
+          "t = {:.5g} / {:.5g} s ({:.0f}%), {:.3g} steps/s, E_kin = {:.4e} J, ETA {:.0f} s\n",
+          sim_.time(), s_.simulation.duration, 100.0 * fraction, rate, last_kinetic_, eta);
+      std::fflush(stdout);
+    }
+  }
+
+  void finish_progress() {
+    if (printed_) fmt::print(stderr, "\n");
+  }
+
+  void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {
+    const std::size_t n = sim_.world().particles.size();
+    const double session_wall = wall - book_.wall_seconds;
+    (void)session_wall;
+    const std::string json = fmt::format(
+        "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
+        "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
+        "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
+        "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.3f},\n"
+        "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
+        "\"{}\"\n}}\n",
+        TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),
+        sim_.config().timestep, book_.collision_time, to_string(sim_.config().integrator),
+        sim_.threads(), book_.settle_time, wall,
+        wall > 0
+            ? static_cast<double>(steps_done) * static_cast<double>(n) / std::max(wall - 0.0, 1e-9)
+            : 0.0,
+        book_.freezes, ended);
+    write_file_atomically((dir_ / "run.json").string(), json);
+  }
+
+  const Scenario& s_;
+  Simulation sim_;
+  RunBook book_;
+  fs::path dir_;
+  RunOptions o_;
+  std::uint64_t total_ = 0, stop_ = 0;
+  std::uint64_t thermo_every_ = 1, snapshot_every_ = 0, track_every_ = 1, checkpoint_every_ = 0;
+  std::ofstream thermo_, track_, out_;
+  bool tty_ = false, printed_ = false;
+  double next_report_ = 0.1;
+  double weight_scale_ = 0.0, last_kinetic_ = 0.0;
+  std::chrono::steady_clock::time_point last_print_{};
+};
+
+SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
+  if (o.threads >= 0) c.threads = o.threads;
+  return c;
+}
+
+} // namespace
+
+int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
+  const fs::path d(dir);
+  if (fs::exists(d) && !fs::is_empty(d))
+    throw InvalidArgument("run folder '" + dir +
+                          "' already exists and is not empty; choose "
+                          "another with --out, or continue it with: talus resume " +
+                          dir);
+  fs::create_directories(d / "snapshots");
+  write_file_atomically((d / "scenario.toml").string(), to_toml(s));
+  RunBook book;
+  book.tracked = built.tracked;
+  book.groups = built.groups;
+  book.fill = built.fill;
+  book.bounds = built.bounds;
+  book.settle_time = built.settle_time;
+  book.collision_time = built.collision_time;
+  Simulation sim(std::move(built.world), with_threads(built.config, o));
+  Run run(s, std::move(sim), std::move(book), d, o);
+  run.open_files(true);
+  return run.loop();
+}
+
+int resume_run(const std::string& dir, const RunOptions& o) {
+  const fs::path d(dir);
+  if (!fs::exists(d / "scenario.toml"))
+    throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
+  const Scenario s = load_scenario_file((d / "scenario.toml").string());
+  std::optional<Checkpoint> c;
+  for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
+    const fs::path p = d / name;
+    if (!fs::exists(p)) continue;
+    try {
+      c = decode_checkpoint(read_file(p.string()), p.string());
+      break;
+    } catch (const CheckpointError& e) {
+      fmt::print(stderr, "talus: {}; trying the previous checkpoint\n", e.what());
+    }
+  }
+  if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
+  RunBook book = RunBook::decode(c->run_data);
+  // cut the outputs back to what they held at the checkpoint
+  for (const auto& [name, bytes] : book.file_bytes)
+    if (fs::exists(d / name)) fs::resize_file(d / name, bytes);
+  for (const auto& entry : fs::directory_iterator(d / "snapshots")) {
+    unsigned long k = 0;
+    const std::string f = entry.path().filename().string();
+    if (std::sscanf(f.c_str(), "%*[a-z]_%lu.vtp", &k) == 1 && k >= book.snapshots)
+      fs::remove(entry.path());
+  }
+  Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
+  if (!o.quiet)
+    fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
+  Run run(s, std::move(sim), std::move(book), d, o);
+  run.open_files(false);
+  return run.loop();
+}
+
+} // namespace talus::cli

@@ -1,0 +1,262 @@
+#include "io/checkpoint.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+#include <unistd.h>
+
+namespace talus {
+
+namespace {
+
+constexpr char magic[8] = {'T', 'A', 'L', 'U', 'S', 'C', 'K', 'P'};
+
+std::uint64_t fnv1a(const char* data, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (std::size_t k = 0; k < n; ++k)
+    h = (h ^ static_cast<unsigned char>(data[k])) * 1099511628211ULL;
+  return h;
+}
+
+class Writer {
+public:
+  template <class T> void pod(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    out_.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  }
+  template <class T> void vec(const std::vector<T>& v) {
+    pod<std::uint64_t>(v.size());
+    if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  }
+  void str(const std::string& s) {
+    pod<std::uint64_t>(s.size());
+    out_.append(s);
+  }
+  std::string& bytes() { return out_; }
+
+private:
+  std::string out_;
+};
+
+class Reader {
+public:
+  Reader(const std::string& bytes, std::size_t begin, std::size_t end, std::string source)
+      : b_(bytes), at_(begin), end_(end), source_(std::move(source)) {}
+  template <class T> T pod() {
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, b_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return v;
+  }
+  template <class T> void vec(std::vector<T>& v) {
+    const auto n = pod<std::uint64_t>();
+    if (n > (end_ - at_) / std::max<std::size_t>(sizeof(T), 1)) fail("an array runs past the end");
+    v.resize(n);
+    if (n) std::memcpy(v.data(), b_.data() + at_, n * sizeof(T));
+    at_ += n * sizeof(T);
+  }
+  std::string str() {
+    const auto n = pod<std::uint64_t>();
+    need(n);
+    std::string s = b_.substr(at_, n);
+    at_ += n;
+    return s;
+  }
+  bool done() const { return at_ == end_; }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw CheckpointError(source_ + ": corrupt checkpoint: " + what);
+  }
+
+private:
+  void need(std::size_t n) const {
+    if (n > end_ - at_) fail("truncated");
+  }
+  const std::string& b_;
+  std::size_t at_, end_;
+  std::string source_;
+};
+
+void write_particles(Writer& w, const Particles& p) {
+  w.vec(p.position), w.vec(p.velocity), w.vec(p.force), w.vec(p.angle);
+  w.vec(p.angular_velocity), w.vec(p.torque), w.vec(p.radius), w.vec(p.mass), w.vec(p.inertia);
+  w.vec(p.inv_mass), w.vec(p.inv_inertia), w.vec(p.material), w.vec(p.kind), w.vec(p.id);
+  w.vec(p.gear.r2), w.vec(p.gear.r3), w.vec(p.gear.r4);
+  w.vec(p.gear.phi2), w.vec(p.gear.phi3), w.vec(p.gear.phi4);
+  w.vec(p.force_previous), w.vec(p.torque_previous);
+}
+
+void read_particles(Reader& r, Particles& p) {
+  r.vec(p.position), r.vec(p.velocity), r.vec(p.force), r.vec(p.angle);
+  r.vec(p.angular_velocity), r.vec(p.torque), r.vec(p.radius), r.vec(p.mass), r.vec(p.inertia);
+  r.vec(p.inv_mass), r.vec(p.inv_inertia), r.vec(p.material), r.vec(p.kind), r.vec(p.id);
+  r.vec(p.gear.r2), r.vec(p.gear.r3), r.vec(p.gear.r4);
+  r.vec(p.gear.phi2), r.vec(p.gear.phi3), r.vec(p.gear.phi4);
+  r.vec(p.force_previous), r.vec(p.torque_previous);
+  const std::size_t n = p.position.size();
+  for (const std::size_t m : {p.velocity.size(), p.radius.size(), p.mass.size(), p.kind.size(),
+                              p.material.size(), p.id.size(), p.inv_mass.size()})
+    if (m != n) r.fail("particle arrays of different lengths");
+}
+
+void write_material(Writer& w, const Material& m) {
+  w.str(m.name);
+  for (const double v :
+       {m.density, m.young, m.poisson, m.restitution, m.friction, m.tangential_damping,
+        m.normal_stiffness, m.tangential_stiffness_ratio, m.normal_damping_rate, m.hertz_damping})
+    w.pod(v);
+}
+
+Material read_material(Reader& r) {
+  Material m;
+  m.name = r.str();
+  for (double* v : {&m.density, &m.young, &m.poisson, &m.restitution, &m.friction,
+                    &m.tangential_damping, &m.normal_stiffness, &m.tangential_stiffness_ratio,
+                    &m.normal_damping_rate, &m.hertz_damping})
+    *v = r.pod<double>();
+  return m;
+}
+
+void write_driver(Writer& w, const Driver& d) {
+  w.pod<std::uint32_t>(static_cast<std::uint32_t>(d.motion.index()));
+  std::visit([&](const auto& m) { w.pod(m); }, d.motion);
+  w.vec(d.targets.particles), w.vec(d.targets.segments);
+  w.vec(d.particle_origin), w.vec(d.angle_origin), w.vec(d.segment_origin);
+}
+
+Driver read_driver(Reader& r) {
+  Driver d;
+  switch (r.pod<std::uint32_t>()) {
+  case 0:
+    d.motion = r.pod<Vibrate>();
+    break;
+  case 1:
+    d.motion = r.pod<Translate>();
+    break;
+  case 2:
+    d.motion = r.pod<Rotate>();
+    break;
+  default:
+    r.fail("unknown driver type");
+  }
+  r.vec(d.targets.particles), r.vec(d.targets.segments);
+  r.vec(d.particle_origin), r.vec(d.angle_origin), r.vec(d.segment_origin);
+  return d;
+}
+
+} // namespace
+
+std::string encode_checkpoint(const Checkpoint& c) {
+  Writer w;
+  const World& world = c.state.world;
+  write_particles(w, world.particles);
+  w.vec(world.walls);
+  w.pod<std::uint64_t>(world.materials.size());
+  for (const Material& m : world.materials) write_material(w, m);
+  w.pod(world.domain), w.pod(world.gravity), w.pod(world.disk_thickness);
+  w.pod<std::uint64_t>(world.drivers.size());
+  for (const Driver& d : world.drivers) write_driver(w, d);
+  const NeighbourList& l = c.state.neighbours;
+  w.vec(l.row_offset), w.vec(l.neighbour), w.vec(l.image), w.vec(l.history);
+  w.vec(l.col_offset), w.vec(l.col_entry), w.vec(l.wall_offset), w.vec(l.wall_segment);
+  w.vec(l.wall_history), w.vec(l.reference), w.vec(l.segment_reference);
+  w.pod(l.skin), w.pod(l.builds);
+  w.pod(c.state.time), w.pod(c.state.steps);
+  w.pod(c.config);
+  w.str(c.run_data);
+
+  std::string out(magic, sizeof(magic));
+  const std::string& payload = w.bytes();
+  const std::uint32_t version = checkpoint_version;
+  const std::uint64_t size = payload.size(), sum = fnv1a(payload.data(), payload.size());
+  out.append(reinterpret_cast<const char*>(&version), sizeof(version));
+  out.append(reinterpret_cast<const char*>(&size), sizeof(size));
+  out += payload;
+  out.append(reinterpret_cast<const char*>(&sum), sizeof(sum));
+  return out;
+}
+
+Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source) {
+  constexpr std::size_t head = sizeof(magic) + sizeof(std::uint32_t) + sizeof(std::uint64_t);
+  if (bytes.size() < head + sizeof(std::uint64_t) ||
+      bytes.compare(0, sizeof(magic), magic, sizeof(magic)) != 0)
+    throw CheckpointError(source + ": not a talus checkpoint (or truncated)");
+  std::uint32_t version = 0;
+  std::uint64_t size = 0, sum = 0;
+  std::memcpy(&version, bytes.data() + sizeof(magic), sizeof(version));
+  std::memcpy(&size, bytes.data() + sizeof(magic) + sizeof(version), sizeof(size));
+  if (version != checkpoint_version)
+    throw CheckpointError(source + ": checkpoint format version " + std::to_string(version) +
+                          "; this talus reads version " + std::to_string(checkpoint_version));
+  if (size != bytes.size() - head - sizeof(sum))
+    throw CheckpointError(source + ": corrupt checkpoint: truncated or padded (size mismatch)");
+  std::memcpy(&sum, bytes.data() + head + size, sizeof(sum));
+  if (sum != fnv1a(bytes.data() + head, size))
+    throw CheckpointError(source + ": corrupt checkpoint: checksum mismatch");
+
+  Reader r(bytes, head, head + size, source);
+  Checkpoint c;
+  World& world = c.state.world;
+  read_particles(r, world.particles);
+  r.vec(world.walls);
+  world.materials.resize(r.pod<std::uint64_t>());
+  for (Material& m : world.materials) m = read_material(r);
+  world.domain = r.pod<Domain>();
+  world.gravity = r.pod<Vec2>();
+  world.disk_thickness = r.pod<double>();
+  world.drivers.resize(r.pod<std::uint64_t>());
+  for (Driver& d : world.drivers) d = read_driver(r);
+  NeighbourList& l = c.state.neighbours;
+  r.vec(l.row_offset), r.vec(l.neighbour), r.vec(l.image), r.vec(l.history);
+  r.vec(l.col_offset), r.vec(l.col_entry), r.vec(l.wall_offset), r.vec(l.wall_segment);
+  r.vec(l.wall_history), r.vec(l.reference), r.vec(l.segment_reference);
+  l.skin = r.pod<double>();
+  l.builds = r.pod<std::uint64_t>();
+  c.state.time = r.pod<double>();
+  c.state.steps = r.pod<std::uint64_t>();
+  c.config = r.pod<SimulationConfig>();
+  c.run_data = r.str();
+  if (!r.done()) r.fail("unexpected bytes at the end");
+  return c;
+}
+
+void write_file_atomically(const std::string& path, const std::string& bytes) {
+  const std::string tmp = path + ".tmp";
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw std::runtime_error("cannot write " + path + ": " + why);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 || ::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + why);
+  }
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + why);
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+} // namespace talus

@@ -1,0 +1,37 @@
+#pragma once
+// Checkpoints: the whole simulation state, and the run's own bookkeeping, in one binary file
+// with a magic word, a format version and a checksum, written atomically.
+#include <stdexcept>
+#include <string>
+
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+/// A checkpoint that cannot be used: missing, truncated, corrupted or of another version.
+class CheckpointError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Checkpoint {
+  SimulationState state;
+  SimulationConfig config;
+  std::string run_data; ///< opaque to the engine: the command line's own bookkeeping
+};
+
+inline constexpr std::uint32_t checkpoint_version = 1;
+
+/// The bytes of a checkpoint file.
+std::string encode_checkpoint(const Checkpoint& c);
+/// Parses checkpoint bytes; throws CheckpointError naming `source` and what is wrong.
+Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source);
+
+/// Writes `bytes` to path atomically: a temporary file, flushed and fsync'ed, then renamed over
+/// path. Throws std::runtime_error naming the file (full disk, no permission) and leaves no
+/// partial file behind.
+void write_file_atomically(const std::string& path, const std::string& bytes);
+/// Reads a whole file; throws std::runtime_error naming it.
+std::string read_file(const std::string& path);
+
+} // namespace talus

@@ -1,0 +1,86 @@
+#include "io/vtk.hpp"
+
+#include <fmt/format.h>
+
+namespace talus {
+
+namespace {
+
+template <class F>
+void array(std::string& out, const char* name, int components, std::size_t n, F value) {
+  out += fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                     "format=\"ascii\">\n",
+                     name, components);
+  for (std::size_t i = 0; i < n; ++i) out += value(i) + "\n";
+  out += "        </DataArray>\n";
+}
+
+} // namespace
+
+std::string vtp_particles(const Simulation& sim) {
+  const Particles& p = sim.world().particles;
+  const std::size_t n = p.size();
+  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\">\n  <PolyData>\n";
+  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\">\n", n, n);
+  out += "      <PointData Scalars=\"radius\">\n";
+  array(out, "id", 1, n, [&](std::size_t i) { return fmt::format("{}", p.id[i]); });
+  array(out, "radius", 1, n, [&](std::size_t i) { return fmt::format("{:.9g}", p.radius[i]); });
+  array(out, "velocity", 3, n, [&](std::size_t i) {
+    return fmt::format("{:.9g} {:.9g} 0", p.velocity[i].x, p.velocity[i].y);
+  });
+  array(out, "angular_velocity", 1, n,
+        [&](std::size_t i) { return fmt::format("{:.9g}", p.angular_velocity[i]); });
+  array(out, "force", 3, n,
+        [&](std::size_t i) { return fmt::format("{:.9g} {:.9g} 0", p.force[i].x, p.force[i].y); });
+  array(out, "kind", 1, n,
+        [&](std::size_t i) { return fmt::format("{}", static_cast<int>(p.kind[i])); });
+  array(out, "material", 1, n, [&](std::size_t i) { return fmt::format("{}", p.material[i]); });
+  out += "      </PointData>\n      <Points>\n";
+  array(out, "position", 3, n, [&](std::size_t i) {
+    return fmt::format("{:.12g} {:.12g} 0", p.position[i].x, p.position[i].y);
+  });
+  out += "      </Points>\n      <Verts>\n"
+         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}\n", i);
+  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}\n", i + 1);
+  out += "        </DataArray>\n      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return out;
+}
+
+std::string vtp_walls(const Simulation& sim) {
+  const Segments& w = sim.world().walls;
+  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\">\n  <PolyData>\n";
+  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * w.size(),
+                     w.size());
+  out += "      <CellData>\n";
+  array(out, "force", 3, w.size(),
+        [&](std::size_t s) { return fmt::format("{:.9g} {:.9g} 0", w[s].force.x, w[s].force.y); });
+  out += "      </CellData>\n      <Points>\n";
+  array(out, "position", 3, 2 * w.size(), [&](std::size_t k) {
+    const Vec2 v = k % 2 ? w[k / 2].b : w[k / 2].a;
+    return fmt::format("{:.12g} {:.12g} 0", v.x, v.y);
+  });
+  out += "      </Points>\n      <Lines>\n"
+         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t k = 0; k < 2 * w.size(); ++k) out += fmt::format("{}\n", k);
+  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t s = 0; s < w.size(); ++s) out += fmt::format("{}\n", 2 * (s + 1));
+  out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return out;
+}
+
+std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries) {
+  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n"
+                    "  <Collection>\n";
+  for (const auto& [t, file] : entries)
+    out += fmt::format("    <DataSet timestep=\"{:.9g}\" part=\"0\" file=\"{}\"/>\n", t, file);
+  out += "  </Collection>\n</VTKFile>\n";
+  return out;
+}
+
+} // namespace talus

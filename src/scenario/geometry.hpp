@@ -1,0 +1,27 @@
+#pragma once
+// The thesis' containers and a few more, as named groups of wall segments.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scenario/scenario.hpp"
+
+namespace talus {
+
+struct ContainerShape {
+  /// Wall segments by group: every builder fills "walls" with all of them, plus its own groups
+  /// ("floor", "left", "right", "lid", "drum").
+  std::map<std::string, std::vector<SegmentSpec>> groups;
+  /// Temporary walls during packing (the closed orifice of a hopper or an hourglass).
+  std::vector<SegmentSpec> gate;
+  Rect fill;   ///< where grains are placed before they settle
+  Rect bounds; ///< the container's extent
+  /// Drivers the builder implies (the grain press' lid, the drum's rotation).
+  std::vector<DriverSection> drivers;
+};
+
+/// Builds the container named by g.builder ("none": only g.segments). Throws ScenarioError for
+/// missing or inconsistent dimensions, naming the key.
+ContainerShape build_container(const GeometrySection& g);
+
+} // namespace talus
