@@ -7,6 +7,8 @@ packages=(
   libgtest-dev              # tests (GoogleTest)
   libfmt-dev libcli11-dev   # formatting, command line
   libcairo2-dev pkg-config  # pictures
+  libtomlplusplus-dev       # scenario files
+  python3-vtk9              # tests: VTK reads the snapshots as ParaView does
 )
 
 missing=()

@@ -1,0 +1,121 @@
+// The scenario loader: clear errors (file, line, key, allowed values), overrides, round trip.
+#include <gtest/gtest.h>
+
+#include "scenario/build.hpp"
+#include "scenario/load.hpp"
+
+namespace talus {
+namespace {
+
+std::string error_of(const std::string& text, const std::vector<std::string>& set = {}) {
+  try {
+    load_scenario(text, "test.toml", set);
+  } catch (const ScenarioError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScenarioLoader, UnknownKeyIsRejectedWithLineAndSuggestion) {
+  const std::string e = error_of(
+      "[simulation]\nduration = 1.0\n\n[[materials]]\nname = \"sand\"\nrestitutoin = 0.5\n");
+  EXPECT_NE(e.find("test.toml:6"), std::string::npos) << e;
+  EXPECT_NE(e.find("materials.0.restitutoin"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean 'restitution'"), std::string::npos) << e;
+}
+
+TEST(ScenarioLoader, OutOfRangeAndWrongTypesNameTheAllowedValues) {
+  std::string e = error_of("[[materials]]\nrestitution = 1.5\n");
+  EXPECT_NE(e.find("test.toml:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("(0, 1]"), std::string::npos) << e;
+  e = error_of("[simulation]\nintegrator = \"rk4\"\n");
+  EXPECT_NE(e.find("allowed values: gear, verlet"), std::string::npos) << e;
+  e = error_of("[particles]\ncount = \"many\"\n");
+  EXPECT_NE(e.find("particles.count"), std::string::npos) << e;
+  e = error_of("[simulation]\ntimestep = -1.0\n");
+  EXPECT_NE(e.find("simulation.timestep"), std::string::npos) << e;
+  e = error_of("[particles]\nmaterial = \"clay\"\n");
+  EXPECT_NE(e.find("no material named 'clay'"), std::string::npos) << e;
+  e = error_of("name = \"x\"\n[simulation\n");
+  EXPECT_NE(e.find("test.toml:2"), std::string::npos) << e; // TOML syntax errors keep their line
+}
+
+TEST(ScenarioLoader, SetOverridesAnyKey) {
+  const Scenario s = load_scenario("[particles]\ncount = 10\n[[materials]]\nfriction = 0.5\n", "t",
+                                   {"particles.count=5000", "materials.0.friction=0.3",
+                                    "geometry.builder=box", "simulation.gravity=[0.0, -1.0]"});
+  EXPECT_EQ(s.particles.count, 5000U);
+  EXPECT_DOUBLE_EQ(s.materials[0].friction, 0.3);
+  EXPECT_EQ(s.geometry.builder, "box");
+  EXPECT_DOUBLE_EQ(s.simulation.gravity.y, -1.0);
+  EXPECT_NE(error_of("", {"particles.cuont=5"}).find("did you mean 'count'"), std::string::npos);
+  EXPECT_NE(error_of("", {"nonsense"}).find("key=value"), std::string::npos);
+}
+
+TEST(ScenarioLoader, ResolvedScenarioRereadsToTheSameScenario) {
+  const Scenario s = load_scenario(
+      "name = \"rt\"\n[simulation]\ntimestep = 1e-6\n[[materials]]\nname = \"a\"\n"
+      "[particles]\ncount = 3\nmaterial = \"a\"\nsize = { distribution = \"discrete\", radii = "
+      "[0.001, 0.002], fractions = [0.25, 0.75] }\n[geometry]\nbuilder = \"box\"\nwidth = 0.1\n"
+      "height = 0.1\n[[drivers]]\ntype = \"vibrate\"\ntarget = \"floor\"\namplitude = 0.001\n",
+      "t");
+  const std::string once = to_toml(s);
+  const std::string twice = to_toml(load_scenario(once, "resolved.toml"));
+  EXPECT_EQ(once, twice);
+  EXPECT_EQ(load_scenario(once, "resolved.toml").simulation.timestep, 1e-6); // exact round trip
+}
+
+TEST(ScenarioBuild, TimestepAboveTheStabilityBoundIsRefusedWithTheBound) {
+  const Scenario s = load_scenario("[simulation]\ntimestep = 0.01\n[particles]\ncount = 4\n"
+                                   "[geometry]\nbuilder = \"box\"\nwidth = 0.1\nheight = 0.1\n",
+                                   "t");
+  try {
+    build_scenario(s);
+    FAIL() << "accepted";
+  } catch (const ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("simulation.timestep"), std::string::npos) << what;
+    EXPECT_NE(what.find("stability bound"), std::string::npos) << what;
+    EXPECT_NE(what.find("auto"), std::string::npos) << what;
+  }
+}
+
+TEST(ScenarioBuild, AutoTimestepIsTheCollisionTimeOverTheFactor) {
+  const Scenario s = load_scenario("[simulation]\ntimestep_factor = 40\n[particles]\ncount = 4\n"
+                                   "[geometry]\nbuilder = \"box\"\nwidth = 0.1\nheight = 0.1\n",
+                                   "t");
+  const BuiltScenario b = build_scenario(s);
+  EXPECT_DOUBLE_EQ(b.config.timestep, b.collision_time / 40.0);
+  EXPECT_EQ(b.world.particles.count(Kind::free), 4U);
+  EXPECT_EQ(b.world.walls.size(), 4U); // a closed box
+}
+
+TEST(ScenarioBuild, TooManyGrainsForTheRegionIsAClearError) {
+  const Scenario s = load_scenario("[particles]\ncount = 100000\n[geometry]\nbuilder = \"box\"\n"
+                                   "width = 0.1\nheight = 0.1\n",
+                                   "t");
+  EXPECT_THROW(build_scenario(s), ScenarioError);
+}
+
+TEST(ScenarioBuild, ParticleWallsHaveNoGapsAGrainCanPass) {
+  const Scenario s = load_scenario("[particles]\ncount = 10\nsize = { mean_radius = 0.002, spread "
+                                   "= 0.0005 }\n[geometry]\nbuilder = \"silo\"\nwidth = 0.05\n"
+                                   "height = 0.1\nwalls = \"particles\"\n",
+                                   "t");
+  const BuiltScenario b = build_scenario(s);
+  const Particles& p = b.world.particles;
+  double r_min = 1.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i)) r_min = std::min(r_min, p.radius[i]);
+  // neighbouring wall particles along the floor: the gap between them is far below a grain
+  std::vector<double> xs;
+  for (const auto i : b.groups.at("floor").particles) xs.push_back(p.position[i].x);
+  std::sort(xs.begin(), xs.end());
+  for (std::size_t k = 1; k < xs.size(); ++k) {
+    const double gap = xs[k] - xs[k - 1] - 2.0 * p.radius[b.groups.at("floor").particles[0]];
+    EXPECT_LT(gap, 2.0 * r_min);
+  }
+}
+
+} // namespace
+} // namespace talus

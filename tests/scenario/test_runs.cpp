@@ -1,0 +1,163 @@
+// Runs of the built-in scenarios (shortened), resume after a stop, files a reader can open.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli/builtin_scenarios.hpp"
+#include "cli/run_loop.hpp"
+#include "io/checkpoint.hpp"
+#include "io/thesis_format.hpp"
+#include "scenario/load.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus {
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("talus_test_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+Scenario builtin(const std::string& name, const std::vector<std::string>& set) {
+  for (const auto& b : cli::builtin_scenarios())
+    if (b.name == name) return load_scenario(b.text, name, set);
+  throw std::runtime_error("no built-in " + name);
+}
+
+int run(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
+  cli::RunOptions o;
+  o.quiet = true;
+  o.stop_at = stop_at;
+  return cli::start_run(s, build_scenario(s), dir.string(), o);
+}
+
+// Each built-in scenario builds and runs a few milliseconds with fewer grains.
+class BuiltinScenario : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BuiltinScenario, BuildsAndRunsShortened) {
+  const std::string name = GetParam();
+  std::vector<std::string> set = {"simulation.duration=0.004", "output.snapshot_interval=0.002",
+                                  "packing.settle_max_time=0.02"};
+  if (name != "collisions") set.push_back("particles.count=120");
+  const Scenario s = builtin(name, set);
+  const fs::path dir = fresh_dir(name);
+  ASSERT_EQ(run(s, dir), cli::exit_completed);
+  for (const char* f : {"scenario.toml", "thermo.csv", "run.json", "particles.pvd",
+                        "checkpoint.bin", "snapshots/particles_000000.vtp"})
+    EXPECT_TRUE(fs::exists(dir / f)) << name << ": " << f;
+  // the resolved scenario reruns: it loads back to the same scenario
+  const Scenario again = load_scenario_file((dir / "scenario.toml").string());
+  EXPECT_EQ(to_toml(again), to_toml(s));
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, BuiltinScenario,
+                         ::testing::Values("collisions", "hourglass", "silo_shake", "force_network",
+                                           "frost_heave", "drum"));
+
+std::string final_state(const fs::path& dir) {
+  const Checkpoint c = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "x");
+  const Particles& p = c.state.world.particles;
+  std::string bytes(reinterpret_cast<const char*>(p.position.data()),
+                    p.position.size() * sizeof(Vec2));
+  bytes.append(reinterpret_cast<const char*>(p.velocity.data()), p.velocity.size() * sizeof(Vec2));
+  bytes.append(reinterpret_cast<const char*>(p.angular_velocity.data()), p.size() * sizeof(double));
+  bytes.append(reinterpret_cast<const char*>(c.state.neighbours.history.data()),
+               c.state.neighbours.history.size() * sizeof(double));
+  return bytes;
+}
+
+// Stop halfway (with a checkpoint), resume, and land on exactly the uninterrupted result.
+TEST(Resume, IsBitIdenticalToAnUninterruptedRun) {
+  for (const std::string integrator : {"gear", "verlet"}) {
+    const Scenario s =
+        builtin("drum", {"particles.count=150", "packing.settle_max_time=0.05",
+                         "simulation.duration=0.03", "output.checkpoint_interval=0.007",
+                         "output.snapshot_interval=0.005", "simulation.integrator=" + integrator});
+    const fs::path whole = fresh_dir("whole"), parts = fresh_dir("parts");
+    ASSERT_EQ(run(s, whole), cli::exit_completed);
+    ASSERT_EQ(run(s, parts, 0.0123), cli::exit_stopped);
+    cli::RunOptions o;
+    o.quiet = true;
+    o.threads = 2; // a different thread count on resume changes nothing
+    ASSERT_EQ(cli::resume_run(parts.string(), o), cli::exit_completed);
+    EXPECT_EQ(final_state(whole), final_state(parts)) << integrator;
+    EXPECT_EQ(read_file((whole / "thermo.csv").string()),
+              read_file((parts / "thermo.csv").string()));
+    EXPECT_EQ(read_file((whole / "particles.pvd").string()),
+              read_file((parts / "particles.pvd").string()));
+    fs::remove_all(whole);
+    fs::remove_all(parts);
+  }
+}
+
+TEST(Resume, ACorruptCheckpointFallsBackToThePreviousOne) {
+  const Scenario s =
+      builtin("collisions", {"simulation.duration=0.02", "output.checkpoint_interval=0.004"});
+  const fs::path dir = fresh_dir("corrupt");
+  ASSERT_EQ(run(s, dir, 0.01), cli::exit_stopped);
+  // damage the latest checkpoint: flip a byte in the middle
+  std::string bytes = read_file((dir / "checkpoint.bin").string());
+  bytes[bytes.size() / 2] ^= 0x5A;
+  write_file_atomically((dir / "checkpoint.bin").string(), bytes);
+  EXPECT_THROW(decode_checkpoint(bytes, "damaged"), CheckpointError);
+  cli::RunOptions o;
+  o.quiet = true;
+  EXPECT_EQ(cli::resume_run(dir.string(), o), cli::exit_completed);
+  fs::remove_all(dir);
+}
+
+TEST(Resume, TruncatedCheckpointIsDetected) {
+  const Scenario s = builtin("collisions", {"simulation.duration=0.002"});
+  const fs::path dir = fresh_dir("truncated");
+  ASSERT_EQ(run(s, dir), cli::exit_completed);
+  const std::string bytes = read_file((dir / "checkpoint.bin").string());
+  EXPECT_THROW(decode_checkpoint(bytes.substr(0, bytes.size() - 9), "cut"), CheckpointError);
+  EXPECT_THROW(decode_checkpoint("not a checkpoint", "text"), CheckpointError);
+  fs::remove_all(dir);
+}
+
+TEST(RunFolder, NothingIsWrittenWhenTheScenarioIsBad) {
+  const fs::path dir = fresh_dir("bad");
+  EXPECT_THROW(
+      {
+        const Scenario s = load_scenario("[particles]\ncount = 100000\n[geometry]\nbuilder = "
+                                         "\"box\"\nwidth = 0.1\nheight = 0.1\n",
+                                         "bad.toml");
+        run(s, dir);
+      },
+      ScenarioError);
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+TEST(ThesisFormat, InFileRoundTripsThroughAScenario) {
+  const std::string in = "3\n1\n0.5\n1e-06\n0 -9.81 0\n"
+                         "0.01 0.02 0 0.1 0 0 0.001 0.002 0 0.5 0.01 10000 50\n"
+                         "0.02 0.02 0 -0.1 0 0 0.001 0.002 0 0.5 0.01 10000 50\n"
+                         "0.0 0.0 0 0 0 0 0.001 0.002 1 0.5 0.01 10000 50\n";
+  const ThesisFile f = read_thesis_in(in, "a.in");
+  ASSERT_EQ(f.particles.size(), 3U);
+  const Scenario s = scenario_from_thesis(f, "a");
+  EXPECT_EQ(s.simulation.normal_law, NormalLaw::linear);
+  EXPECT_DOUBLE_EQ(s.materials[0].normal_stiffness, 10000.0);
+  EXPECT_EQ(s.particles.list[2].kind, "fixed");
+  const Scenario reread = load_scenario(to_toml(s), "a.toml");
+  EXPECT_EQ(write_thesis_in(thesis_from_scenario(reread)), write_thesis_in(f));
+}
+
+TEST(ThesisFormat, BadLinesNameTheLineAndColumn) {
+  try {
+    read_thesis_in("1\n1\n0.5\n1e-6\n0 -9.81 0\n0.01 0.02 0 0.1 0 0 0.001\n", "b.in");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("b.in:6"), std::string::npos) << what;
+    EXPECT_NE(what.find("column 8 (radius)"), std::string::npos) << what;
+  }
+  EXPECT_THROW(read_thesis_in("1\n7\n", "c.in"), ScenarioError);
+}
+
+} // namespace
+} // namespace talus
