@@ -85,9 +85,14 @@ void add_run_command(CLI::App& app) {
     if (!o->run.quiet)
       fmt::print("talus run {}: {}\n", s.name,
                  s.description.empty() ? "(no description)" : s.description);
-    BuiltScenario built = build_scenario(s, [&](double t, double ke) {
-      if (!o->run.quiet) fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
-    });
+    BuiltScenario built;
+    try {
+      built = build_scenario(s, [&](double t, double ke) {
+        if (!o->run.quiet) fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
+      });
+    } catch (const ScenarioError& e) { // say which file the key is in
+      throw ScenarioError(o->scenario + ": " + e.what());
+    }
     if (!o->run.quiet) {
       std::size_t free = built.world.particles.count(Kind::free);
       fmt::print("  {} grains, {} wall particles, {} wall segments; dt = {:.4g} s (collision time "

@@ -1,0 +1,21 @@
+#!/bin/sh
+# Ctrl-C (SIGINT) stops a run after writing a checkpoint, with exit status 130; resume finishes it.
+set -u
+talus="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+"$talus" run drum --out "$dir/run" --quiet --set simulation.duration=100 --set particles.count=100 \
+  --set output.checkpoint_interval=1000 &
+pid=$!
+# wait until the run has started stepping (thermo.csv has rows), then interrupt it
+for _ in $(seq 1 300); do
+  [ -f "$dir/run/thermo.csv" ] && [ "$(wc -l < "$dir/run/thermo.csv")" -gt 3 ] && break
+  sleep 0.1
+done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[ "$status" -eq 130 ] || { echo "exit status $status, expected 130"; exit 1; }
+[ -f "$dir/run/checkpoint.bin" ] || { echo "no checkpoint after SIGINT"; exit 1; }
+grep -q '"ended_by": "signal"' "$dir/run/run.json" || { echo "run.json does not say signal"; exit 1; }
+echo "interrupted with status 130 and a checkpoint"
