@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   talus::cli::add_scenarios_command(app);
   talus::cli::add_convert_command(app);
   talus::cli::add_demo_command(app);
+  talus::cli::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -88,7 +88,9 @@ void add_run_command(CLI::App& app) {
     BuiltScenario built;
     try {
       built = build_scenario(s, [&](double t, double ke) {
-        if (!o->run.quiet) fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
+        if (o->run.quiet) return;
+        fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
+        std::fflush(stdout);
       });
     } catch (const ScenarioError& e) { // say which file the key is in
       throw ScenarioError(o->scenario + ": " + e.what());
@@ -102,6 +104,7 @@ void add_run_command(CLI::App& app) {
                  built.settle_time > 0 ? fmt::format("; settled in {:.3f} s", built.settle_time)
                                        : "");
       if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
+      std::fflush(stdout);
     }
     exit_status() = start_run(s, std::move(built), dir, o->run);
   });

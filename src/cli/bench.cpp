@@ -1,0 +1,188 @@
+// `talus bench dense2d`: the reference benchmark, timed side by side with LAMMPS.
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sys/resource.h>
+#include <thread>
+#include <unistd.h>
+
+#include <fmt/chrono.h>
+#include <fmt/core.h>
+
+#include "analysis/observables.hpp"
+#include "cli/commands.hpp"
+#include "io/checkpoint.hpp"
+#include "scenario/dense2d.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+struct BenchOptions {
+  std::size_t n = 10000;
+  std::uint64_t steps = 2000;
+  int threads = 1;
+  bool lammps = false;
+  double settle_time = 0.6; // s, as dense2d-settle.in
+  std::string cache = "bench/cache";
+  std::string results = "bench/results";
+  std::string lammps_inputs;
+};
+
+std::string machine_name() {
+  std::ifstream cpu("/proc/cpuinfo");
+  std::string line, model = "unknown-cpu";
+  while (std::getline(cpu, line))
+    if (line.rfind("model name", 0) == 0) {
+      model = line.substr(line.find(':') + 2);
+      break;
+    }
+  std::string name = model + "-" + std::to_string(std::thread::hardware_concurrency()) + "cores";
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  return name;
+}
+
+double peak_rss_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) * 1024.0;
+}
+
+std::size_t side(std::size_t n) {
+  return static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(n))));
+}
+
+// The settled system, from the cache or settled now (and cached).
+SimulationState settled_state(const BenchOptions& o, std::size_t nx, std::size_t ny,
+                              SimulationConfig& config) {
+  Dense2d d = build_dense2d(nx, ny);
+  config = d.config;
+  config.threads = o.threads;
+  const fs::path file = fs::path(o.cache) / fmt::format("dense2d_{}x{}.ckpt", nx, ny);
+  if (fs::exists(file)) {
+    try {
+      Checkpoint c = decode_checkpoint(read_file(file.string()), file.string());
+      fmt::print("settled packing from {}\n", file.string());
+      return std::move(c.state);
+    } catch (const CheckpointError& e) {
+      fmt::print("cache unusable ({}); settling again\n", e.what());
+    }
+  }
+  fmt::print("settling {} x {} disks for {} s ({} steps)...\n", nx, ny, o.settle_time,
+             static_cast<std::uint64_t>(o.settle_time / config.timestep));
+  std::fflush(stdout);
+  Simulation sim(std::move(d.world), config);
+  sim.run(static_cast<std::uint64_t>(std::llround(o.settle_time / config.timestep)));
+  fs::create_directories(o.cache);
+  write_file_atomically(file.string(), encode_checkpoint({sim.state(), sim.config(), ""}));
+  return sim.state();
+}
+
+// Runs LAMMPS on the same system; returns its seconds per particle-step (0 if it failed).
+double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
+  if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
+    fmt::print("lammps: `lmp` is not on the PATH (apt-get install lammps); skipped\n");
+    return 0.0;
+  }
+  const fs::path dir = fs::absolute(fs::path(o.cache) / "lammps");
+  fs::create_directories(dir);
+  for (const char* f : {"dense2d-settle.in", "dense2d-bench.in"})
+    fs::copy_file(fs::path(o.lammps_inputs) / f, dir / f, fs::copy_options::overwrite_existing);
+  const std::string vars = fmt::format("-var nx {} -var ny {}", nx, ny);
+  if (!fs::exists(dir / fmt::format("settled_{}x{}.restart", nx, ny))) {
+    fmt::print("lammps: settling its own packing (dense2d-settle.in)...\n");
+    std::fflush(stdout);
+    if (std::system(fmt::format("cd '{}' && lmp -in dense2d-settle.in {} -log settle.log > settle.out 2>&1",
+                                dir.string(), vars).c_str()) != 0) {
+      fmt::print("lammps: settling failed; see {}/settle.out\n", dir.string());
+      return 0.0;
+    }
+  }
+  if (std::system(fmt::format("cd '{}' && lmp -in dense2d-bench.in {} -var nsteps {} -log bench.log "
+                              "> bench.out 2>&1",
+                              dir.string(), vars, o.steps).c_str()) != 0) {
+    fmt::print("lammps: the run failed; see {}/bench.out\n", dir.string());
+    return 0.0;
+  }
+  const std::string log = read_file((dir / "bench.log").string());
+  std::smatch m;
+  if (!std::regex_search(log, m, std::regex(R"(Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms)"))) {
+    fmt::print("lammps: no 'Loop time' in {}/bench.log\n", dir.string());
+    return 0.0;
+  }
+  const double seconds = std::stod(m[1]), steps = std::stod(m[3]), atoms = std::stod(m[4]);
+  return seconds / (steps * atoms);
+}
+
+void run_bench(const BenchOptions& o) {
+  const std::size_t nx = side(o.n), ny = side(o.n);
+  SimulationConfig config;
+  SimulationState state = settled_state(o, nx, ny, config);
+  Simulation sim = Simulation::restore(std::move(state), config);
+  const double n = static_cast<double>(sim.world().particles.size());
+  sim.run(100); // warm up: caches, first rebuild
+  const auto start = std::chrono::steady_clock::now();
+  sim.run(o.steps);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double per = seconds / (n * static_cast<double>(o.steps));
+  const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
+  const double bytes = peak_rss_bytes() / n;
+
+  fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s)\n", sim.world().particles.size(),
+             nx, ny, o.steps, sim.threads());
+  fmt::print("  ns per particle-step:       {:.2f}\n", per * 1e9);
+  fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
+  fmt::print("  contacts per particle:      {:.3f}\n", contacts);
+  fmt::print("  peak memory per particle:   {:.0f} bytes\n", bytes);
+  double lammps = 0.0;
+  if (o.lammps) {
+    lammps = run_lammps(o, nx, ny);
+    if (lammps > 0.0) {
+      fmt::print("  LAMMPS ns per particle-step: {:.2f}\n", lammps * 1e9);
+      fmt::print("  LAMMPS time / talus time:    {:.2f}\n", lammps / per);
+    }
+  }
+  fs::create_directories(o.results);
+  const fs::path csv = fs::path(o.results) / (machine_name() + ".csv");
+  const bool fresh = !fs::exists(csv);
+  std::ofstream out(csv, std::ios::app);
+  if (fresh)
+    out << "date,talus_version,benchmark,n,steps,threads,ns_per_particle_step,"
+           "particle_steps_per_second,contacts_per_particle,bytes_per_particle,"
+           "lammps_ns_per_particle_step,lammps_over_talus\n";
+  out << fmt::format("{:%Y-%m-%dT%H:%M:%S},{},dense2d,{},{},{},{:.3f},{:.6g},{:.3f},{:.0f},{},{}\n",
+                     fmt::gmtime(std::time(nullptr)), TALUS_VERSION, sim.world().particles.size(),
+                     o.steps, sim.threads(), per * 1e9, 1.0 / per, contacts, bytes,
+                     lammps > 0 ? fmt::format("{:.3f}", lammps * 1e9) : "",
+                     lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "");
+  fmt::print("appended to {}\n", csv.string());
+}
+
+} // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  o->lammps_inputs = std::string(TALUS_SOURCE_DIR) + "/bench/lammps";
+  CLI::App* bench = app.add_subcommand("bench", "benchmarks (figures, not tests)");
+  bench->require_subcommand(1);
+  CLI::App* cmd = bench->add_subcommand(
+      "dense2d", "a settled polydisperse packing on a floor, periodic in x (bench/lammps/README.md)");
+  cmd->add_option("--n", o->n, "number of disks (rounded to a square)")->capture_default_str()->check(CLI::Range(9, 100000000));
+  cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
+  cmd->add_option("--threads", o->threads, "threads (0: all cores)")->capture_default_str();
+  cmd->add_flag("--lammps", o->lammps, "also run LAMMPS (lmp) on the same system and print the ratio");
+  cmd->add_option("--cache", o->cache, "folder for settled packings")->capture_default_str();
+  cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
+  cmd->add_option("--lammps-inputs", o->lammps_inputs, "folder with dense2d-settle.in and dense2d-bench.in")->capture_default_str();
+  cmd->add_option("--settle-time", o->settle_time, "settling time, s")->capture_default_str();
+  cmd->callback([o] { run_bench(*o); });
+}
+
+} // namespace talus::cli
