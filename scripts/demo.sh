@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# The main job: install what is missing, build, and pour grains into a box until they settle.
-# Extra arguments go to `talus demo` (see `build/src/talus demo --help`).
+# The main job: install what is missing, build, and run the built-in `drum` scenario (grains
+# settled in a drum that then turns for 3 s) into a new run folder runs/drum-DATE-TIME, with its
+# picture, energy and coordination curves (thermo.csv), ParaView snapshots and run.json.
+# Extra arguments go to `talus run` (e.g. --set particles.count=600, --threads 2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
-build/src/talus demo --out runs/demo "$@"
+out="runs/drum-$(date +%Y%m%d-%H%M%S)"
+build/src/talus run drum --out "$out" "$@"
+echo "pictures and numbers: $out/final.png, $out/thermo.csv, $out/particles.pvd (ParaView)"
