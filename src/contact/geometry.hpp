@@ -32,13 +32,24 @@ struct ContactForce {
   double normal_force = 0.0; ///< F_n >= 0, N
 };
 
+/// What the force stage keeps of a contact, per list entry (the lean form of ContactForce).
+struct PairForce {
+  Vec2 force;
+  double torque_i = 0.0;
+  double torque_j = 0.0;
+  PairForce() = default;
+  PairForce(const ContactForce& c) : force(c.force), torque_i(c.torque_i), torque_j(c.torque_j) {}
+};
+
 /// Geometry of a particle-particle pair; d = r_i - r_j (minimum image), dist = |d| > 0.
+/// `with_r_eff` = false leaves r_eff at 0 for laws that do not use it (saves a division).
 inline ContactGeometry pair_geometry(Vec2 d, double dist, double r_i, double r_j, double m_i,
-                                     double m_j, Vec2 v_i, Vec2 v_j, double w_i, double w_j) {
+                                     double m_j, Vec2 v_i, Vec2 v_j, double w_i, double w_j,
+                                     bool with_r_eff = true) {
   ContactGeometry g;
-  g.normal = d / dist;
+  g.normal = d * (1.0 / dist);
   g.overlap = r_i + r_j - dist;
-  g.r_eff = r_i * r_j / (r_i + r_j);
+  g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : 0.0;
   g.m_eff = m_i * m_j / (m_i + m_j);
   g.arm_i = r_i - 0.5 * g.overlap;
   g.arm_j = r_j - 0.5 * g.overlap;

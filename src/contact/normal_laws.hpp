@@ -11,6 +11,7 @@ namespace talus {
 /// Linear spring-dashpot (thesis eq. 2.10): F_n = k_n xi + eta_n dxi/dt, never attractive.
 /// eta_n = gamma_n m_eff, or 2 zeta sqrt(k_n m_eff) from the restitution (materials/timestep.hpp).
 struct LinearSpringDashpot {
+  static constexpr bool uses_r_eff = false;
   static double force(const PairParameters& p, const ContactGeometry& g) {
     const double f = p.normal_stiffness * g.overlap + p.normal_dashpot(g.m_eff) * g.overlap_rate();
     return std::max(f, 0.0);
@@ -27,6 +28,7 @@ struct LinearSpringDashpot {
 /// Hertzian viscoelastic (Brilliantov et al. 1996; thesis eq. 2.9):
 /// F_n = rho (xi^3/2 + 3/2 A sqrt(xi) dxi/dt), rho = 4/3 E* sqrt(R*), never attractive.
 struct HertzViscoelastic {
+  static constexpr bool uses_r_eff = true;
   static double force(const PairParameters& p, const ContactGeometry& g) {
     const double rho = 4.0 / 3.0 * p.effective_young * std::sqrt(g.r_eff);
     const double s = std::sqrt(g.overlap);

@@ -14,6 +14,7 @@ namespace talus {
 /// eta_t = gamma_t m_eff. No history: no static friction.
 struct ViscousCoulomb {
   static constexpr bool has_history = false;
+  static constexpr bool uses_r_eff = false;
   static double force(const PairParameters& p, const ContactGeometry& g, double normal_force,
                       double /*normal_stiffness*/, double& /*history*/, double /*dt*/) {
     const double viscous = p.tangential_damping * g.m_eff * std::abs(g.v_tangent);
@@ -28,6 +29,7 @@ struct ViscousCoulomb {
 /// reset to carry it: s = -(F_t + eta_t v_t) / k_t. `Stiffness` gives k_t.
 template <class Stiffness> struct TangentialSpring {
   static constexpr bool has_history = true;
+  static constexpr bool uses_r_eff = Stiffness::uses_r_eff;
   static double stiffness(const PairParameters& p, const ContactGeometry& g, double kn) {
     return Stiffness::of(p, g, kn);
   }
@@ -48,12 +50,14 @@ template <class Stiffness> struct TangentialSpring {
 
 /// Cundall-Strack: k_t = ratio x k_n (linear law) or ratio x tangent stiffness (Hertz).
 struct CundallStrackStiffness {
+  static constexpr bool uses_r_eff = false;
   static double of(const PairParameters& p, const ContactGeometry&, double kn) {
     return p.tangential_stiffness_ratio * kn;
   }
 };
 /// Hertz-Mindlin no-slip: k_t = 8 G* sqrt(R* xi).
 struct MindlinStiffness {
+  static constexpr bool uses_r_eff = true;
   static double of(const PairParameters& p, const ContactGeometry& g, double) {
     return 8.0 * p.effective_shear * std::sqrt(g.r_eff * g.overlap);
   }

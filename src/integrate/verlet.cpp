@@ -31,9 +31,10 @@ void verlet_predict(Particles& p, double dt, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   p.force_previous.resize(p.size());
   p.torque_previous.resize(p.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
+  // No branch on the kind: fixed and moved particles have inv_mass = 0 (no kick); fixed ones are
+  // at rest (the Simulation makes sure) and drivers overwrite moved ones after this stage.
+#pragma omp parallel for simd schedule(static) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (p.kind[i] != Kind::free) continue;
     const Vec2 kick = half * p.inv_mass[i] * p.force[i];
     p.position[i] += dt * (p.velocity[i] + kick);
     p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
@@ -48,9 +49,8 @@ void verlet_predict(Particles& p, double dt, int threads) {
 void verlet_correct(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for simd schedule(static) num_threads(threads)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (p.kind[i] != Kind::free) continue;
     // v(t + dt) = v(t) + dt/2 (a(t) + a(t + dt)): replace the predicted second half-kick
     p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
     p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);

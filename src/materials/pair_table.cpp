@@ -7,10 +7,6 @@
 
 namespace talus {
 
-double PairParameters::normal_dashpot(double m_eff) const {
-  return damping_rate * m_eff + damping_sqrt_coeff * std::sqrt(m_eff);
-}
-
 PairParameters mix(const Material& a, const Material& b) {
   PairParameters p;
   const auto mean = [](double x, double y) { return 0.5 * (x + y); };

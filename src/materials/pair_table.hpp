@@ -1,5 +1,6 @@
 #pragma once
 // Contact parameters for every pair of materials, mixed once before a run.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -23,7 +24,11 @@ struct PairParameters {
   double restitution = 1.0;        ///< the mixed e (informational for the Hertz law)
 
   /// Linear dashpot coefficient eta_n (kg/s) for a pair of reduced mass m_eff.
-  double normal_dashpot(double m_eff) const;
+  double normal_dashpot(double m_eff) const {
+    const double rate_part = damping_rate * m_eff;
+    return damping_sqrt_coeff == 0.0 ? rate_part
+                                     : rate_part + damping_sqrt_coeff * std::sqrt(m_eff);
+  }
 };
 
 PairParameters mix(const Material& a, const Material& b);

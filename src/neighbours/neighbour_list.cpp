@@ -11,8 +11,10 @@ bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments
     return true;
   const double limit2 = 0.25 * list.skin * list.skin;
   bool moved = false;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    moved |= norm2(p.position[i] - list.reference[i]) > limit2;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+#pragma omp parallel for schedule(static) reduction(|| : moved) if (n > 20000)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    moved = moved || norm2(p.position[i] - list.reference[i]) > limit2;
   for (std::size_t s = 0; s < walls.size(); ++s) {
     moved |= norm2(walls[s].a - list.segment_reference[2 * s]) > limit2;
     moved |= norm2(walls[s].b - list.segment_reference[2 * s + 1]) > limit2;

@@ -44,9 +44,33 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
   return false;
 }
 
-template <class N, class T>
+// Stores each pair's force in its list entry (for the parallel gather).
+struct StoreInEntry {
+  std::vector<PairForce>& out;
+  void operator()(Particles&, std::uint32_t e, std::ptrdiff_t, std::uint32_t,
+                  const PairForce& f) const {
+    out[e] = f;
+  }
+  void none(std::uint32_t e) const { out[e] = {}; }
+};
+
+// Adds each pair's force to both particles at once (one thread). Visiting the entries in order,
+// a particle receives first the entries where it is the second partner (earlier rows), then its
+// own row: the order gather() sums in, so both ways give bit-identical forces.
+struct ScatterToParticles {
+  void operator()(Particles& p, std::uint32_t, std::ptrdiff_t i, std::uint32_t j,
+                  const PairForce& f) const {
+    p.force[i] += f.force;
+    p.torque[i] += f.torque_i;
+    p.force[j] -= f.force;
+    p.torque[j] += f.torque_j;
+  }
+  void none(std::uint32_t) const {}
+};
+
+template <class N, class T, class Sink>
 double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
-                  std::vector<ContactForce>& out, double dt, int threads) {
+                  const Sink& sink, double dt, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const Vec2 box = domain.size();
   double worst = 0.0;
@@ -61,15 +85,17 @@ double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, con
       const double dist2 = norm2(d);
       const double reach = Ri + p.radius[j];
       if (dist2 >= reach * reach || dist2 == 0.0) {
-        out[e] = {};
+        sink.none(e);
         list.history[e] = 0.0;
         continue;
       }
       const double dist = std::sqrt(dist2);
-      const ContactGeometry g =
-          pair_geometry(d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
-                        p.velocity[j], p.angular_velocity[i], p.angular_velocity[j]);
-      out[e] = contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt);
+      const ContactGeometry g = pair_geometry(
+          d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i], p.velocity[j],
+          p.angular_velocity[i], p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
+      sink(p, e, i, j,
+           PairForce(
+               contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt)));
       worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
     }
   }
@@ -78,7 +104,7 @@ double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, con
 
 template <class N, class T>
 double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, const PairTable& pairs,
-                  std::vector<ContactForce>& out, double dt, int threads) {
+                  std::vector<PairForce>& out, double dt, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   double worst = 0.0;
 #pragma omp parallel num_threads(threads) reduction(max : worst)
@@ -113,21 +139,23 @@ double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, cons
   return worst;
 }
 
-void gather(Particles& p, const NeighbourList& list, const std::vector<ContactForce>& pf,
-            const std::vector<ContactForce>& wf, Vec2 gravity, int threads) {
+// Every particle sums, in a fixed order: gravity, the entries where it is the second partner
+// (in entry order), its own row, its wall contacts. Threads change nothing in the result.
+void gather(Particles& p, const NeighbourList& list, const std::vector<PairForce>& pf,
+            const std::vector<PairForce>& wf, Vec2 gravity, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     Vec2 f = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
     double tau = 0.0;
-    for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e) {
-      f += pf[e].force;
-      tau += pf[e].torque_i;
-    }
     for (std::uint32_t c = list.col_offset[k]; c < list.col_offset[k + 1]; ++c) {
       const std::uint32_t e = list.col_entry[c];
       f -= pf[e].force;
       tau += pf[e].torque_j;
+    }
+    for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e) {
+      f += pf[e].force;
+      tau += pf[e].torque_i;
     }
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
       f += wf[e].force;
@@ -136,6 +164,15 @@ void gather(Particles& p, const NeighbourList& list, const std::vector<ContactFo
     p.force[k] = f;
     p.torque[k] = tau;
   }
+}
+
+// The one-thread path: gravity, then pairs scattered in entry order, then wall contacts.
+void add_walls(Particles& p, const NeighbourList& list, const std::vector<PairForce>& wf) {
+  for (std::size_t k = 0; k < p.size(); ++k)
+    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
+      p.force[k] += wf[e].force;
+      p.torque[k] += wf[e].torque_i;
+    }
 }
 
 } // namespace
@@ -187,18 +224,32 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
 
 void Simulation::compute_forces() {
   Particles& p = world_.particles;
-  pair_force_.resize(list_.pair_count());
   wall_force_.resize(list_.wall_segment.size());
   const double dt = config_.timestep;
+  const bool serial = threads_ == 1;
+  if (serial) {
+    pair_force_.clear();
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      p.force[k] = p.kind[k] == Kind::free ? p.mass[k] * world_.gravity : Vec2{};
+      p.torque[k] = 0.0;
+    }
+  } else {
+    pair_force_.resize(list_.pair_count());
+  }
   max_overlap_seen_ =
       with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
         const double a =
-            pair_stage<N, T>(p, list_, pairs_, world_.domain, pair_force_, dt, threads_);
+            serial ? pair_stage<N, T>(p, list_, pairs_, world_.domain, ScatterToParticles{}, dt, 1)
+                   : pair_stage<N, T>(p, list_, pairs_, world_.domain, StoreInEntry{pair_force_},
+                                      dt, threads_);
         const double b =
             wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_);
         return std::max(a, b);
       });
-  gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
+  if (serial)
+    add_walls(p, list_, wall_force_);
+  else
+    gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
   for (Segment& s : world_.walls) s.force = {};
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::uint32_t e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e)

@@ -70,6 +70,11 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     config_.skin = list_.skin;
     return;
   }
+  for (std::size_t i = 0; i < world_.particles.size(); ++i)
+    if (world_.particles.kind[i] == Kind::fixed) { // a fixed wall particle never moves
+      world_.particles.velocity[i] = {};
+      world_.particles.angular_velocity[i] = 0.0;
+    }
   for (Driver& d : world_.drivers) {
     attach(d, world_.particles, world_.walls);
     apply(d, 0.0, world_.particles, world_.walls);

@@ -83,8 +83,8 @@ private:
   SimulationConfig config_;
   PairTable pairs_;
   NeighbourList list_;
-  std::vector<ContactForce> pair_force_;
-  std::vector<ContactForce> wall_force_;
+  std::vector<PairForce> pair_force_;
+  std::vector<PairForce> wall_force_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;
