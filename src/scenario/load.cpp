@@ -235,6 +235,16 @@ void read_frost(TableReader& r, FrostSection& f) {
   f.cycles = static_cast<std::size_t>(r.integer("cycles", 0, 0, 1'000'000));
 }
 
+// Reads the table at `name` (if present) with `read`, then rejects any key it did not read.
+template <class F>
+void section(TableReader& top, const char* name, const std::string& file, F&& read) {
+  if (const toml::table* t = top.table(name)) {
+    TableReader r(*t, file, name);
+    read(r);
+    r.finish();
+  }
+}
+
 } // namespace
 
 std::uint16_t material_index(const Scenario& s, const std::string& name, const std::string& key) {
@@ -293,42 +303,18 @@ Scenario load_scenario(std::string_view text, const std::string& file,
     m.hertz_damping = -1.0;
     s.materials.push_back(m);
   }
-  if (const toml::table* t = top.table("particles")) {
-    TableReader r(*t, file, "particles");
-    read_particles(r, s.particles, file);
-    r.finish();
-  }
-  if (const toml::table* t = top.table("packing")) {
-    TableReader r(*t, file, "packing");
-    read_packing(r, s.packing);
-    r.finish();
-  }
-  if (const toml::table* t = top.table("geometry")) {
-    TableReader r(*t, file, "geometry");
-    read_geometry(r, s.geometry, file);
-    r.finish();
-  }
+  section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
+  section(top, "packing", file, [&](TableReader& r) { read_packing(r, s.packing); });
+  section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry, file); });
   k = 0;
   for (const toml::table* t : top.tables("drivers")) {
     TableReader r(*t, file, "drivers." + std::to_string(k++));
     s.drivers.push_back(read_driver(r));
     r.finish();
   }
-  if (const toml::table* t = top.table("track")) {
-    TableReader r(*t, file, "track");
-    read_track(r, s.track);
-    r.finish();
-  }
-  if (const toml::table* t = top.table("output")) {
-    TableReader r(*t, file, "output");
-    read_output(r, s.output);
-    r.finish();
-  }
-  if (const toml::table* t = top.table("frost")) {
-    TableReader r(*t, file, "frost");
-    read_frost(r, s.frost);
-    r.finish();
-  }
+  section(top, "track", file, [&](TableReader& r) { read_track(r, s.track); });
+  section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
+  section(top, "frost", file, [&](TableReader& r) { read_frost(r, s.frost); });
   top.finish();
 
   // references between sections
