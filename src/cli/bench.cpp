@@ -99,21 +99,28 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
   if (!fs::exists(dir / fmt::format("settled_{}x{}.restart", nx, ny))) {
     fmt::print("lammps: settling its own packing (dense2d-settle.in)...\n");
     std::fflush(stdout);
-    if (std::system(fmt::format("cd '{}' && lmp -in dense2d-settle.in {} -log settle.log > settle.out 2>&1",
-                                dir.string(), vars).c_str()) != 0) {
+    if (std::system(
+            fmt::format("cd '{}' && lmp -in dense2d-settle.in {} -log settle.log > settle.out 2>&1",
+                        dir.string(), vars)
+                .c_str()) != 0) {
       fmt::print("lammps: settling failed; see {}/settle.out\n", dir.string());
       return 0.0;
     }
   }
-  if (std::system(fmt::format("cd '{}' && lmp -in dense2d-bench.in {} -var nsteps {} -log bench.log "
-                              "> bench.out 2>&1",
-                              dir.string(), vars, o.steps).c_str()) != 0) {
+  if (std::system(
+          fmt::format("cd '{}' && lmp -in dense2d-bench.in {} -var nsteps {} -log bench.log "
+                      "> bench.out 2>&1",
+                      dir.string(), vars, o.steps)
+              .c_str()) != 0) {
     fmt::print("lammps: the run failed; see {}/bench.out\n", dir.string());
     return 0.0;
   }
   const std::string log = read_file((dir / "bench.log").string());
   std::smatch m;
-  if (!std::regex_search(log, m, std::regex(R"(Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms)"))) {
+  if (!std::regex_search(
+          log, m,
+          std::regex(
+              R"(Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms)"))) {
     fmt::print("lammps: no 'Loop time' in {}/bench.log\n", dir.string());
     return 0.0;
   }
@@ -130,7 +137,8 @@ void run_bench(const BenchOptions& o) {
   sim.run(100); // warm up: caches, first rebuild
   const auto start = std::chrono::steady_clock::now();
   sim.run(o.steps);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double per = seconds / (n * static_cast<double>(o.steps));
   const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
   const double bytes = peak_rss_bytes() / n;
@@ -165,6 +173,34 @@ void run_bench(const BenchOptions& o) {
   fmt::print("appended to {}\n", csv.string());
 }
 
+// The thesis' table 2.2: 1000 steps at dt = 1e-6 s for 382 to 3885 disks, Verlet-list column.
+void run_thesis_table(int threads) {
+  struct Row {
+    std::size_t n;
+    double thesis_minutes;
+  };
+  static constexpr Row rows[] = {
+      {382, 0.0166667}, {685, 0.0833333}, {1285, 0.183333}, {2485, 0.4}, {3885, 0.733333}};
+  fmt::print("| disks | thesis, Verlet list (min) | talus (s) | talus (min) | speed-up |\n"
+             "|---|---|---|---|---|\n");
+  for (const Row& r : rows) {
+    const auto nx = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(r.n))));
+    Dense2d d = build_dense2d(nx, (r.n + nx - 1) / nx, 12345, r.n);
+    d.config.threads = threads;
+    Simulation settle(std::move(d.world), d.config);
+    settle.run(30'000); // 0.3 s: a settled packing, as the thesis' runs started from
+    SimulationConfig fine = d.config;
+    fine.timestep = 1.0e-6; // the thesis' timestep
+    Simulation sim = Simulation::restore(settle.state(), fine);
+    const auto start = std::chrono::steady_clock::now();
+    sim.run(1000);
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("| {} | {:.3f} | {:.4f} | {:.5f} | {:.0f}x |\n", r.n, r.thesis_minutes, s, s / 60.0,
+               r.thesis_minutes * 60.0 / s);
+  }
+}
+
 } // namespace
 
 void add_bench_command(CLI::App& app) {
@@ -173,16 +209,29 @@ void add_bench_command(CLI::App& app) {
   CLI::App* bench = app.add_subcommand("bench", "benchmarks (figures, not tests)");
   bench->require_subcommand(1);
   CLI::App* cmd = bench->add_subcommand(
-      "dense2d", "a settled polydisperse packing on a floor, periodic in x (bench/lammps/README.md)");
-  cmd->add_option("--n", o->n, "number of disks (rounded to a square)")->capture_default_str()->check(CLI::Range(9, 100000000));
+      "dense2d",
+      "a settled polydisperse packing on a floor, periodic in x (bench/lammps/README.md)");
+  cmd->add_option("--n", o->n, "number of disks (rounded to a square)")
+      ->capture_default_str()
+      ->check(CLI::Range(9, 100000000));
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->capture_default_str();
-  cmd->add_flag("--lammps", o->lammps, "also run LAMMPS (lmp) on the same system and print the ratio");
+  cmd->add_flag("--lammps", o->lammps,
+                "also run LAMMPS (lmp) on the same system and print the ratio");
   cmd->add_option("--cache", o->cache, "folder for settled packings")->capture_default_str();
   cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
-  cmd->add_option("--lammps-inputs", o->lammps_inputs, "folder with dense2d-settle.in and dense2d-bench.in")->capture_default_str();
+  cmd->add_option("--lammps-inputs", o->lammps_inputs,
+                  "folder with dense2d-settle.in and dense2d-bench.in")
+      ->capture_default_str();
   cmd->add_option("--settle-time", o->settle_time, "settling time, s")->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
+
+  auto threads = std::make_shared<int>(1);
+  CLI::App* thesis = bench->add_subcommand(
+      "thesis",
+      "the thesis' table 2.2 (1000 steps of 382 to 3885 disks at dt = 1e-6 s) beside talus");
+  thesis->add_option("--threads", *threads, "threads (0: all cores)")->capture_default_str();
+  thesis->callback([threads] { run_thesis_table(*threads); });
 }
 
 } // namespace talus::cli

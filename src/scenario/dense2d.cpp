@@ -7,7 +7,7 @@
 
 namespace talus {
 
-Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed) {
+Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::size_t count) {
   require(nx >= 3 && ny >= 1, "dense2d: needs nx >= 3 (periodic in x) and ny >= 1");
   Dense2d d;
   World& w = d.world;
@@ -28,6 +28,7 @@ Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed) {
   w.particles.reserve(nx * ny);
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {
+      if (count > 0 && w.particles.size() == count) break;
       const double r = 0.5 * (0.0085 + 0.001 * rng.uniform());
       const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * m.density;
       w.add_particle({.position = {pitch * (static_cast<double>(i) + 0.5),

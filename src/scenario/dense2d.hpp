@@ -14,6 +14,8 @@ struct Dense2d {
 /// LAMMPS input's `lattice sq 0.01`), density 1000 kg/m^3 with LAMMPS' sphere mass and disc
 /// inertia (I = m r^2 / 2); k_n = 1e5 N/m, k_t = 2/7 k_n, gamma_n = 100 1/s, gamma_t = 50 1/s,
 /// mu = 0.5, the same law on the floor at y = 0; velocity Verlet, dt = 1e-5 s, skin 1 mm.
-Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed = 12345);
+/// `count` > 0 keeps only the first `count` lattice sites (rows fill from the floor up).
+Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed = 12345,
+                      std::size_t count = 0);
 
 } // namespace talus
