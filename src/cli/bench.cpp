@@ -135,8 +135,10 @@ void run_bench(const BenchOptions& o) {
   Simulation sim = Simulation::restore(std::move(state), config);
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
+  const std::uint64_t builds_before = sim.neighbours().builds;
   const auto start = std::chrono::steady_clock::now();
   sim.run(o.steps);
+  const std::uint64_t builds = sim.neighbours().builds - builds_before;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double per = seconds / (n * static_cast<double>(o.steps));
@@ -149,6 +151,7 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
   fmt::print("  peak memory per particle:   {:.0f} bytes\n", bytes);
+  fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
   double lammps = 0.0;
   if (o.lammps) {
     lammps = run_lammps(o, nx, ny);
