@@ -2,6 +2,7 @@
 // Time integration of the free particles. Each scheme is split into the stage before the force
 // evaluation (predict) and the stage after it (correct); fixed and moved particles are skipped.
 #include <string_view>
+#include <vector>
 
 #include "state/particles.hpp"
 
@@ -26,16 +27,26 @@ inline constexpr double gear_c[5] = {19.0 / 90.0, 3.0 / 4.0, 1.0, 1.0 / 2.0, 1.0
 /// about 5e-6 per step and far below what contact damping removes.
 double max_stable_timestep(Integrator integrator, double stiffness, double m_eff);
 
+/// The Verlet list's drift test, done inside the predictor's loop (one pass less over memory):
+/// the predictor reports whether some particle ended farther than sqrt(limit2) from its
+/// reference (the list's build position). A reference of another size always reports true.
+struct DriftTest {
+  const std::vector<Vec2>& reference;
+  double limit2;
+};
+
 /// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
 void gear_initialise(Particles& p);
 /// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.
-void gear_predict(Particles& p, double dt, int threads);
+/// Returns the drift test's answer.
+bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 /// Corrects every predicted derivative by the difference of F/m and the predicted acceleration.
-void gear_correct(Particles& p, double dt, int threads);
+/// Returns false if a position or velocity came out non-finite.
+bool gear_correct(Particles& p, double dt, int threads);
 
-/// Velocity Verlet: half kick with the old forces, then drift.
-void verlet_predict(Particles& p, double dt, int threads);
-/// Velocity Verlet: half kick with the new forces.
-void verlet_correct(Particles& p, double dt, int threads);
+/// Velocity Verlet: half kick with the old forces, then drift. Returns the drift test's answer.
+bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift);
+/// Velocity Verlet: half kick with the new forces. Returns false if a value is non-finite.
+bool verlet_correct(Particles& p, double dt, int threads);
 
 } // namespace talus

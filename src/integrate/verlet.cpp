@@ -26,17 +26,21 @@ double max_stable_timestep(Integrator integrator, double stiffness, double m_eff
   return (integrator == Integrator::verlet ? 2.0 : 0.2) / omega;
 }
 
-void verlet_predict(Particles& p, double dt, int threads) {
+bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   p.force_previous.resize(p.size());
   p.torque_previous.resize(p.size());
+  const bool has_reference = drift.reference.size() == p.size();
+  const Vec2* reference = has_reference ? drift.reference.data() : nullptr;
+  bool moved = !has_reference;
   // No branch on the kind: fixed and moved particles have inv_mass = 0 (no kick); fixed ones are
   // at rest (the Simulation makes sure) and drivers overwrite moved ones after this stage.
-#pragma omp parallel for simd schedule(static) num_threads(threads)
+#pragma omp parallel for simd schedule(static) num_threads(threads) reduction(|| : moved)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec2 kick = half * p.inv_mass[i] * p.force[i];
     p.position[i] += dt * (p.velocity[i] + kick);
+    if (reference) moved = moved || norm2(p.position[i] - reference[i]) > drift.limit2;
     p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
     const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
     p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
@@ -44,17 +48,21 @@ void verlet_predict(Particles& p, double dt, int threads) {
     p.force_previous[i] = p.force[i];
     p.torque_previous[i] = p.torque[i];
   }
+  return moved;
 }
 
-void verlet_correct(Particles& p, double dt, int threads) {
+bool verlet_correct(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for simd schedule(static) num_threads(threads)
+  double sum = 0.0; // 0 x v is 0 for a finite v and NaN otherwise: sum is finite iff all are
+#pragma omp parallel for simd schedule(static) num_threads(threads) reduction(+ : sum)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     // v(t + dt) = v(t) + dt/2 (a(t) + a(t + dt)): replace the predicted second half-kick
     p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
     p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
+    sum += 0.0 * (p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y);
   }
+  return std::isfinite(sum);
 }
 
 } // namespace talus

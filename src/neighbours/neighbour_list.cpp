@@ -22,6 +22,20 @@ bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments
   return moved;
 }
 
+bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,
+                 const std::vector<std::uint32_t>& driven) {
+  if (list.reference.size() != p.size() || list.segment_reference.size() != 2 * walls.size())
+    return true;
+  const double limit2 = 0.25 * list.skin * list.skin;
+  for (const auto i : driven)
+    if (norm2(p.position[i] - list.reference[i]) > limit2) return true;
+  for (std::size_t s = 0; s < walls.size(); ++s)
+    if (norm2(walls[s].a - list.segment_reference[2 * s]) > limit2 ||
+        norm2(walls[s].b - list.segment_reference[2 * s + 1]) > limit2)
+      return true;
+  return false;
+}
+
 namespace {
 
 // A CSR table of (key, history) rows, keys sorted within each row.

@@ -46,6 +46,11 @@ struct NeighbourList {
 /// True when some particle or wall end point moved more than half the skin since the last build.
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
 
+/// True when a wall end point, or one of the given (driven) particles, moved more than half the
+/// skin since the last build: the part of the drift test the integrator does not do.
+bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,
+                 const std::vector<std::uint32_t>& driven);
+
 /// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
 /// two non-free particles are left out. History of pairs still within reach is carried over.
 /// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.

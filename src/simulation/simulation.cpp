@@ -64,6 +64,8 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
   if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
+  for (const Driver& d : world_.drivers)
+    driven_.insert(driven_.end(), d.targets.particles.begin(), d.targets.particles.end());
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
@@ -87,19 +89,16 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
 void Simulation::step() {
   const double dt = config_.timestep;
   Particles& p = world_.particles;
-  if (config_.integrator == Integrator::gear)
-    gear_predict(p, dt, threads_);
-  else
-    verlet_predict(p, dt, threads_);
+  const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
+  bool moved = config_.integrator == Integrator::gear ? gear_predict(p, dt, threads_, drift)
+                                                      : verlet_predict(p, dt, threads_, drift);
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
-  if (needs_rebuild(list_, p, world_.walls))
-    build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
+  moved = moved || walls_moved(list_, p, world_.walls, driven_);
+  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
   compute_forces();
-  if (config_.integrator == Integrator::gear)
-    gear_correct(p, dt, threads_);
-  else
-    verlet_correct(p, dt, threads_);
+  finite_ = config_.integrator == Integrator::gear ? gear_correct(p, dt, threads_)
+                                                   : verlet_correct(p, dt, threads_);
   ++steps_;
   time_ = t_next;
   guard();
@@ -115,10 +114,7 @@ void Simulation::run(std::uint64_t steps, const std::function<void(const Simulat
 
 void Simulation::guard() const {
   const Particles& p = world_.particles;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    sum += p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y;
-  const bool finite = std::isfinite(sum);
+  const bool finite = finite_;
   if (finite && max_overlap_seen_ <= config_.max_overlap_fraction) return;
 
   std::ostringstream msg;

@@ -88,7 +88,9 @@ private:
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;
-  double max_overlap_seen_ = 0.0; ///< largest overlap / smaller radius in the last force stage
+  double max_overlap_seen_ = 0.0;     ///< largest overlap / smaller radius in the last force stage
+  bool finite_ = true;                ///< every position and velocity finite after the last step
+  std::vector<std::uint32_t> driven_; ///< particles moved by drivers (their drift is checked)
   std::uint32_t worst_pair_[2] = {0, 0};
 };
 
