@@ -1,4 +1,5 @@
 // talus: discrete element simulation of granular media (command line).
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -9,6 +10,8 @@
 #include "core/error.hpp"
 
 int main(int argc, char** argv) {
+  // A file size limit or a full disk must fail a write (and be reported), not kill the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"talus: discrete element simulation of granular media (2D soft disks)", "talus"};
   app.set_version_flag("--version", std::string("talus ") + TALUS_VERSION);
   app.require_subcommand(1);
@@ -18,6 +21,7 @@ int main(int argc, char** argv) {
   talus::cli::add_convert_command(app);
   talus::cli::add_demo_command(app);
   talus::cli::add_bench_command(app);
+  talus::cli::add_checkpoint_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

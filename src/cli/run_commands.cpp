@@ -129,6 +129,31 @@ void add_scenarios_command(CLI::App& app) {
   });
 }
 
+void add_checkpoint_command(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand(
+      "checkpoint", "describe a run folder's last checkpoint: time, step, particles, state hash "
+                    "(two runs with the same hash have bit-identical states)");
+  cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
+  cmd->callback([dir] {
+    const std::string file = (fs::path(*dir) / "checkpoint.bin").string();
+    const Checkpoint c = decode_checkpoint(read_file(file), file);
+    const Particles& p = c.state.world.particles;
+    std::uint64_t h = 1469598103934665603ULL;
+    const auto mix = [&h](const void* data, std::size_t bytes) {
+      const auto* b = static_cast<const unsigned char*>(data);
+      for (std::size_t k = 0; k < bytes; ++k) h = (h ^ b[k]) * 1099511628211ULL;
+    };
+    mix(p.position.data(), p.size() * sizeof(Vec2));
+    mix(p.velocity.data(), p.size() * sizeof(Vec2));
+    mix(p.angle.data(), p.size() * sizeof(double));
+    mix(p.angular_velocity.data(), p.size() * sizeof(double));
+    mix(c.state.neighbours.history.data(), c.state.neighbours.history.size() * sizeof(double));
+    fmt::print("time {:.9g} s\nstep {}\nparticles {}\nstate_hash {:016x}\n", c.state.time,
+               c.state.steps, p.size(), h);
+  });
+}
+
 void add_convert_command(CLI::App& app) {
   auto in = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();

@@ -143,6 +143,15 @@ public:
   }
 
   int loop() {
+    try {
+      return loop_steps();
+    } catch (const InstabilityError&) {
+      write_run_json(book_.wall_seconds, 0, "unstable"); // the last checkpoint stays as it was
+      throw;
+    }
+  }
+
+  int loop_steps() {
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
     stop_requested = 0;
@@ -264,7 +273,13 @@ private:
   }
 
   void checkpoint(double wall) {
-    for (std::ofstream* f : {&thermo_, &track_, &out_}) f->flush();
+    for (auto [f, name] :
+         {std::pair{&thermo_, "thermo.csv"}, {&track_, "track.csv"}, {&out_, "run.out"}}) {
+      f->flush();
+      if (f->is_open() && !*f)
+        throw std::runtime_error("cannot write " + (dir_ / name).string() +
+                                 " (disk full or a file size limit?); the last checkpoint is kept");
+    }
     book_.file_bytes.clear();
     for (const char* name : {"thermo.csv", "track.csv", "run.out"})
       if (fs::exists(dir_ / name)) book_.file_bytes[name] = fs::file_size(dir_ / name);

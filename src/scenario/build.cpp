@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <unistd.h>
 
 #include "analysis/observables.hpp"
 #include "materials/timestep.hpp"
@@ -50,6 +51,30 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
   return out;
 }
 
+// Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius, and
+// must not reach through an extra wall segment.
+void check_start_overlaps(const Scenario& s) {
+  const auto& list = s.particles.list;
+  for (std::size_t a = 0; a < list.size(); ++a) {
+    for (std::size_t b = a + 1; b < list.size(); ++b) {
+      const double overlap =
+          list[a].radius + list[b].radius - norm(list[a].position - list[b].position);
+      if (overlap > 0.01 * std::min(list[a].radius, list[b].radius) &&
+          (list[a].kind == "free" || list[b].kind == "free"))
+        throw ScenarioError("key 'particles.list': grains " + std::to_string(a) + " and " +
+                            std::to_string(b) + " overlap by " + std::to_string(overlap) +
+                            " m at the start; allowed: at most 1% of the smaller radius");
+    }
+    for (const SegmentSpec& seg : s.geometry.segments) {
+      const Segment w{seg.a, seg.b};
+      if (list[a].kind == "free" &&
+          norm(list[a].position - closest_point(w, list[a].position)) < 0.99 * list[a].radius)
+        throw ScenarioError("key 'particles.list': grain " + std::to_string(a) +
+                            " overlaps a wall segment at the start");
+    }
+  }
+}
+
 } // namespace
 
 double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
@@ -77,6 +102,19 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   w.materials = s.materials;
   w.gravity = s.simulation.gravity;
   RandomStream rng(s.simulation.seed, 1);
+
+  // refuse what the machine cannot hold before allocating it (about 700 bytes a particle with
+  // the neighbour list, contact history and the run's buffers; docs/performance.md)
+  {
+    const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
+    const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
+    const double need = 700.0 * static_cast<double>(s.particles.count + s.particles.list.size());
+    if (pages > 0 && page > 0 && need > 0.8 * pages * page)
+      throw ScenarioError("key 'particles.count': " + std::to_string(s.particles.count) +
+                          " grains need about " + std::to_string(need / 1e9) +
+                          " GB; this machine has " + std::to_string(pages * page / 1e9) + " GB");
+  }
+  check_start_overlaps(s);
 
   // grain sizes first: they set the wall particle radius, the timestep and the Hertz damping
   std::vector<double> radii(s.particles.count);
@@ -206,6 +244,13 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
       throw ScenarioError(msg.str());
     }
     c.timestep = *s.simulation.timestep;
+  }
+
+  // the stability guard's box: the container and as much again around it
+  if (out.bounds.hi.x > out.bounds.lo.x && out.bounds.hi.y > out.bounds.lo.y) {
+    const Vec2 size = out.bounds.hi - out.bounds.lo;
+    c.escape_lo = out.bounds.lo - size;
+    c.escape_hi = out.bounds.hi + size;
   }
 
   // sedimentation: let the grains fall and settle with the orifice closed, no drivers

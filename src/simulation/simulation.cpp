@@ -115,6 +115,26 @@ void Simulation::run(std::uint64_t steps, const std::function<void(const Simulat
 void Simulation::guard() const {
   const Particles& p = world_.particles;
   const bool finite = finite_;
+  const bool box =
+      config_.escape_hi.x > config_.escape_lo.x && config_.escape_hi.y > config_.escape_lo.y;
+  if (box && steps_ % 16 == 0) {
+    const Domain& d = world_.domain;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 r = p.position[i];
+      const bool out =
+          (!d.periodic_x && (r.x < config_.escape_lo.x || r.x > config_.escape_hi.x)) ||
+          (!d.periodic_y && (r.y < config_.escape_lo.y || r.y > config_.escape_hi.y));
+      if (out && p.is_free(i)) {
+        std::ostringstream msg;
+        msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
+            << " s): particle id " << p.id[i] << " left the domain at (" << r.x << ", " << r.y
+            << ") m, speed " << norm(p.velocity[i])
+            << " m/s. A grain shot out by an overlap too deep for the timestep: try a smaller "
+               "timestep (about the collision time / 50), or check for a gap in the walls.";
+        throw InstabilityError(msg.str());
+      }
+    }
+  }
   if (finite && max_overlap_seen_ <= config_.max_overlap_fraction) return;
 
   std::ostringstream msg;

@@ -24,6 +24,10 @@ struct SimulationConfig {
   std::size_t min_particles_per_thread = 500;
   /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
   double max_overlap_fraction = 0.5;
+  /// Stability guard: the run stops when a free particle leaves [escape_lo, escape_hi] (checked
+  /// every 16 steps; an empty box, the default, turns the check off). Periodic directions wrap.
+  Vec2 escape_lo{};
+  Vec2 escape_hi{};
 };
 
 /// One touching contact, as the force stage sees it. `wall` is the segment index for a

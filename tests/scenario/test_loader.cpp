@@ -119,3 +119,31 @@ TEST(ScenarioBuild, ParticleWallsHaveNoGapsAGrainCanPass) {
 
 } // namespace
 } // namespace talus
+
+namespace talus {
+namespace {
+
+TEST(ScenarioBuild, OverlappingGrainsAtTheStartAreRefused) {
+  const Scenario s = load_scenario("[[particles.list]]\nposition = [0.0, 0.0]\nradius = 0.001\n"
+                                   "[[particles.list]]\nposition = [0.0015, 0.0]\nradius = 0.001\n",
+                                   "t");
+  try {
+    build_scenario(s);
+    FAIL() << "accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("overlap"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ScenarioBuild, ImpossibleMemoryIsRefusedBeforeAllocating) {
+  const Scenario s = load_scenario("[particles]\ncount = 100000000\n", "t");
+  try {
+    build_scenario(s);
+    FAIL() << "accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("GB"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace talus

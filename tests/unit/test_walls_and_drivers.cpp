@@ -188,3 +188,28 @@ TEST(Stability, AnExplodingRunStopsWithADiagnosis) {
 
 } // namespace
 } // namespace talus
+
+namespace talus {
+namespace {
+
+TEST(Stability, AGrainLeavingTheDomainStopsTheRun) {
+  World w;
+  Material m;
+  m.normal_stiffness = 1e4;
+  w.materials = {m};
+  w.add_particle({.position = {0.0, 0.0}, .radius = 1e-3, .velocity = {100.0, 0.0}});
+  SimulationConfig c;
+  c.timestep = 1e-5;
+  c.escape_lo = {-0.1, -0.1};
+  c.escape_hi = {0.1, 0.1};
+  Simulation s(std::move(w), c);
+  try {
+    s.run(1000);
+    FAIL() << "no escape detected";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("left the domain"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace talus

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# A file size limit (standing in for a full disk) and an output folder that cannot be made give
+# clear errors, a non-zero status, and no corrupt checkpoint.
+set -u
+talus="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+
+# 1. files may not grow past 64 KiB: thermo.csv outgrows that
+( ulimit -f 64; "$talus" run collisions --quiet --out "$dir/full" \
+    --set output.thermo_interval=0.00005 --set output.checkpoint_interval=0.01 ) 2> "$dir/err.txt"
+status=$?
+[ "$status" -ne 0 ] || { echo "a full disk went unnoticed"; exit 1; }
+grep -q "cannot write" "$dir/err.txt" || { echo "unclear message:"; cat "$dir/err.txt"; exit 1; }
+if [ -f "$dir/full/checkpoint.bin" ]; then
+  "$talus" checkpoint "$dir/full" > /dev/null || { echo "the checkpoint left behind is corrupt"; exit 1; }
+fi
+echo "file size limit: status $status, message: $(head -c 200 "$dir/err.txt")"
+
+# 2. the output folder cannot be created (its parent is a file)
+touch "$dir/a_file"
+"$talus" run collisions --quiet --out "$dir/a_file/run" 2> "$dir/err2.txt"
+status=$?
+[ "$status" -ne 0 ] || { echo "an impossible output folder was accepted"; exit 1; }
+grep -q "a_file" "$dir/err2.txt" || { echo "the message does not name the folder:"; cat "$dir/err2.txt"; exit 1; }
+echo "unwritable folder: status $status, message: $(head -c 200 "$dir/err2.txt")"
