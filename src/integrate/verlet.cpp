@@ -36,7 +36,7 @@ bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift
   bool moved = !has_reference;
   // No branch on the kind: fixed and moved particles have inv_mass = 0 (no kick); fixed ones are
   // at rest (the Simulation makes sure) and drivers overwrite moved ones after this stage.
-#pragma omp parallel for simd schedule(static) num_threads(threads) reduction(|| : moved)
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec2 kick = half * p.inv_mass[i] * p.force[i];
     p.position[i] += dt * (p.velocity[i] + kick);
@@ -55,7 +55,7 @@ bool verlet_correct(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   double sum = 0.0; // 0 x v is 0 for a finite v and NaN otherwise: sum is finite iff all are
-#pragma omp parallel for simd schedule(static) num_threads(threads) reduction(+ : sum)
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : sum)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     // v(t + dt) = v(t) + dt/2 (a(t) + a(t + dt)): replace the predicted second half-kick
     p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);

@@ -54,8 +54,11 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file) {
              ") is missing or not a number; a line has 13 columns: x y angle vx vy omega mass "
              "radius type mu gamma_t Y A");
     if (v[6] <= 0 || v[7] <= 0) fail("particle line: mass and radius must be > 0");
+    // check the range before converting: a double beyond int's range cannot be cast (found by
+    // fuzz_thesis_in)
+    if (!(v[8] == 0.0 || v[8] == 1.0 || v[8] == 2.0 || v[8] == 3.0))
+      fail("particle line: column 9 (type) must be 0, 1, 2 or 3");
     const int type = static_cast<int>(v[8]);
-    if (type < 0 || type > 3 || type != v[8]) fail("particle line: type must be 0, 1, 2 or 3");
     f.particles.push_back(
         {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], type, v[9], v[10], v[11], v[12]});
   }
