@@ -276,9 +276,16 @@ private:
     for (auto [f, name] :
          {std::pair{&thermo_, "thermo.csv"}, {&track_, "track.csv"}, {&out_, "run.out"}}) {
       f->flush();
-      if (f->is_open() && !*f)
+      if (f->is_open() && !*f) {
+        // leave no half-written line: cut every output back to the last good checkpoint
+        for (std::ofstream* g : {&thermo_, &track_, &out_}) g->close();
+        std::error_code ignored;
+        for (const auto& [file, bytes] : book_.file_bytes)
+          fs::resize_file(dir_ / file, bytes, ignored);
         throw std::runtime_error("cannot write " + (dir_ / name).string() +
-                                 " (disk full or a file size limit?); the last checkpoint is kept");
+                                 " (disk full or a file size limit?); the outputs are cut back to "
+                                 "the last checkpoint, which is kept");
+      }
     }
     book_.file_bytes.clear();
     for (const char* name : {"thermo.csv", "track.csv", "run.out"})

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -97,6 +98,7 @@ void Simulation::step() {
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
   compute_forces();
+  if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
   finite_ = config_.integrator == Integrator::gear ? gear_correct(p, dt, threads_)
                                                    : verlet_correct(p, dt, threads_);
   ++steps_;
@@ -147,8 +149,30 @@ void Simulation::guard() const {
         break;
       }
   } else {
+    // name the deepest contact, its collision time and a timestep that resolves it
+    ContactView worst;
+    double ratio = -1.0;
+    for_each_contact([&](const ContactView& v) {
+      const double r =
+          v.geometry.overlap / std::min(p.radius[v.i], v.wall < 0 ? p.radius[v.j] : p.radius[v.i]);
+      if (r > ratio) ratio = r, worst = v;
+    });
     msg << "an overlap reached " << max_overlap_seen_ << " of the smaller radius (limit "
         << config_.max_overlap_fraction << ")";
+    if (ratio >= 0.0) {
+      const PairParameters& pp = *worst.parameters;
+      const ContactGeometry& g = worst.geometry;
+      const double k = config_.normal_law == NormalLaw::linear
+                           ? pp.normal_stiffness
+                           : 2.0 * pp.effective_young * std::sqrt(g.r_eff * g.overlap);
+      const double tc = std::numbers::pi * std::sqrt(g.m_eff / k);
+      msg << " between particle id " << p.id[worst.i] << " at (" << p.position[worst.i].x << ", "
+          << p.position[worst.i].y << ") m and "
+          << (worst.wall < 0 ? "particle id " + std::to_string(p.id[worst.j])
+                             : "wall segment " + std::to_string(worst.wall))
+          << "; their collision time is about " << tc << " s, so a timestep of about " << tc / 50.0
+          << " s (collision time / 50) would resolve it";
+    }
   }
   msg << ". The timestep is probably too large for the stiffest contact: try a smaller "
          "timestep (about the collision time / 50), softer materials or lower speeds.";

@@ -24,3 +24,12 @@ status=$?
 [ "$status" -ne 0 ] || { echo "an impossible output folder was accepted"; exit 1; }
 grep -q "a_file" "$dir/err2.txt" || { echo "the message does not name the folder:"; cat "$dir/err2.txt"; exit 1; }
 echo "unwritable folder: status $status, message: $(head -c 200 "$dir/err2.txt")"
+
+# 3. what was cut off is cut cleanly: every line of thermo.csv is whole (same column count)
+if [ -f "$dir/full/thermo.csv" ]; then
+  columns=$(head -1 "$dir/full/thermo.csv" | awk -F, '{print NF}')
+  bad=$(awk -F, -v n="$columns" 'NF != n' "$dir/full/thermo.csv" | wc -l)
+  [ "$bad" -eq 0 ] || { echo "thermo.csv has $bad broken lines after the write fault"; exit 1; }
+  [ -z "$(tail -c 1 "$dir/full/thermo.csv")" ] || { echo "thermo.csv ends mid-line"; exit 1; }
+  echo "thermo.csv cut back cleanly to $(wc -l < "$dir/full/thermo.csv") whole lines"
+fi

@@ -182,7 +182,12 @@ TEST(Stability, AnExplodingRunStopsWithADiagnosis) {
     s.run(1'000'000);
     FAIL() << "no instability detected";
   } catch (const InstabilityError& e) {
-    EXPECT_NE(std::string(e.what()).find("timestep"), std::string::npos);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("timestep"), std::string::npos) << what;
+    EXPECT_NE(what.find("particle id 0"), std::string::npos) << what;  // which
+    EXPECT_NE(what.find("wall segment 0"), std::string::npos) << what; // against what
+    EXPECT_NE(what.find("collision time is about"), std::string::npos) << what;
+    EXPECT_NE(what.find("would resolve it"), std::string::npos) << what; // suggested dt
   }
 }
 
