@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <unistd.h>
 
 #include "analysis/observables.hpp"
@@ -75,6 +76,44 @@ void check_start_overlaps(const Scenario& s) {
   }
 }
 
+// Walls given by hand (extra segments, listed wall particles) must not leave an accidental gap
+// a grain can slip through: an opening wider than the smallest grain's diameter but narrower
+// than the largest's is refused. Wider openings (a silo's top, an orifice) are taken as meant;
+// builders' walls have no gaps at all.
+void check_wall_gaps(const Scenario& s, double r_min, double r_max) {
+  const auto gap_error = [&](const std::string& what, double gap) {
+    throw ScenarioError(
+        what + " leave a gap of " + std::to_string(gap) + " m, which a grain of diameter " +
+        std::to_string(2.0 * r_min) +
+        " m can pass; join them, or leave an opening wider than the largest grain (" +
+        std::to_string(2.0 * r_max) + " m)");
+  };
+  const auto& seg = s.geometry.segments;
+  for (std::size_t a = 0; a < seg.size(); ++a)
+    for (std::size_t b = a + 1; b < seg.size(); ++b)
+      for (const Vec2 p : {seg[a].a, seg[a].b})
+        for (const Vec2 q : {seg[b].a, seg[b].b}) {
+          const double gap = norm(p - q);
+          if (gap > 1e-12 && gap >= 2.0 * r_min && gap < 2.0 * r_max)
+            gap_error("key 'geometry.segments': segments " + std::to_string(a) + " and " +
+                          std::to_string(b),
+                      gap);
+        }
+  const auto& list = s.particles.list;
+  for (std::size_t a = 0; a < list.size(); ++a) {
+    if (list[a].kind != "fixed") continue;
+    for (std::size_t b = a + 1; b < list.size(); ++b) {
+      if (list[b].kind != "fixed") continue;
+      const double gap =
+          norm(list[a].position - list[b].position) - list[a].radius - list[b].radius;
+      if (gap >= 2.0 * r_min && gap < 2.0 * r_max)
+        gap_error("key 'particles.list': wall particles " + std::to_string(a) + " and " +
+                      std::to_string(b),
+                  gap);
+    }
+  }
+}
+
 } // namespace
 
 double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
@@ -127,6 +166,13 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   if (n_grains == 0)
     throw ScenarioError("key 'particles.count': a scenario needs grains (count > 0 or a list)");
   const double r_mean = r_sum / static_cast<double>(n_grains);
+  // the sizes a grain can have (not only those drawn this time) decide what a gap lets through
+  double r_small = std::numeric_limits<double>::max(), r_large = 0.0;
+  if (s.particles.count > 0) std::tie(r_small, r_large) = radius_range(s.particles.size);
+  for (const ExplicitParticle& e : s.particles.list)
+    if (e.kind == "free")
+      r_small = std::min(r_small, e.radius), r_large = std::max(r_large, e.radius);
+  check_wall_gaps(s, r_small, r_large);
   resolve_hertz_damping(s, w.materials, r_mean);
 
   // container

@@ -147,3 +147,31 @@ TEST(ScenarioBuild, ImpossibleMemoryIsRefusedBeforeAllocating) {
 
 } // namespace
 } // namespace talus
+
+namespace talus {
+namespace {
+
+TEST(ScenarioBuild, AccidentalGapsInHandMadeWallsAreRefused) {
+  const std::string grains =
+      "[particles]\ncount = 4\nsize = { mean_radius = 0.002, spread = 0.0005 }\n"
+      "[packing]\nregion = [0.0, 0.01, 0.1, 0.1]\n";
+  // two floor segments 4 mm apart: grains of 3 to 5 mm diameter, the smaller ones pass
+  const std::string gap = grains + "[[geometry.segments]]\na = [0.0, 0.0]\nb = [0.05, 0.0]\n"
+                                   "[[geometry.segments]]\na = [0.054, 0.0]\nb = [0.1, 0.0]\n";
+  try {
+    build_scenario(load_scenario(gap, "t"));
+    FAIL() << "accepted a gap";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("gap of"), std::string::npos) << e.what();
+  }
+  // joined exactly, or an opening wider than any grain: accepted
+  const std::string joined = grains + "[[geometry.segments]]\na = [0.0, 0.0]\nb = [0.05, 0.0]\n"
+                                      "[[geometry.segments]]\na = [0.05, 0.0]\nb = [0.1, 0.0]\n";
+  EXPECT_NO_THROW(build_scenario(load_scenario(joined, "t")));
+  const std::string opening = grains + "[[geometry.segments]]\na = [0.0, 0.0]\nb = [0.04, 0.0]\n"
+                                       "[[geometry.segments]]\na = [0.06, 0.0]\nb = [0.1, 0.0]\n";
+  EXPECT_NO_THROW(build_scenario(load_scenario(opening, "t")));
+}
+
+} // namespace
+} // namespace talus
