@@ -9,6 +9,7 @@ packages=(
   libcairo2-dev pkg-config  # pictures
   libtomlplusplus-dev       # scenario files
   python3-vtk9              # tests: VTK reads the snapshots as ParaView does
+  ffmpeg                    # talus movie
 )
 
 missing=()

@@ -17,6 +17,8 @@ void add_resume_command(CLI::App& app);
 void add_scenarios_command(CLI::App& app);
 /// `talus convert IN OUT`: thesis .in <-> scenario .toml.
 void add_convert_command(CLI::App& app);
+/// `talus render DIR` and `talus movie DIR`: pictures and a movie of a run's snapshots.
+void add_picture_commands(CLI::App& app);
 /// `talus checkpoint DIR`: what the last checkpoint holds, with a hash of the state.
 void add_checkpoint_command(CLI::App& app);
 /// `talus bench dense2d`: the reference benchmark, optionally beside LAMMPS.

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   talus::cli::add_demo_command(app);
   talus::cli::add_bench_command(app);
   talus::cli::add_checkpoint_command(app);
+  talus::cli::add_picture_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,6 +9,8 @@
 #include <cairo.h>
 #include <fmt/core.h>
 
+#include "core/error.hpp"
+
 namespace talus {
 
 namespace {
@@ -32,86 +34,156 @@ Rgb ramp(double u) {
           stops[k].b + f * (stops[k + 1].b - stops[k].b)};
 }
 
+// Distinct colours for categories (kinds, materials).
+Rgb category(std::size_t k) {
+  static constexpr Rgb palette[8] = {
+      {0.122, 0.467, 0.706}, {1.000, 0.498, 0.055}, {0.173, 0.627, 0.173}, {0.839, 0.153, 0.157},
+      {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}, {0.890, 0.467, 0.761}, {0.498, 0.498, 0.498}};
+  return palette[k % 8];
+}
+
+bool continuous(SnapshotColour c) {
+  return c == SnapshotColour::speed || c == SnapshotColour::size || c == SnapshotColour::force;
+}
+
+double field(const Frame& f, std::size_t i, SnapshotColour c) {
+  switch (c) {
+  case SnapshotColour::speed:
+    return norm(f.velocity[i]);
+  case SnapshotColour::size:
+    return f.radius[i];
+  case SnapshotColour::force:
+    return norm(f.force[i]);
+  case SnapshotColour::kind:
+    return f.kind[i];
+  case SnapshotColour::material:
+    return f.material[i];
+  }
+  return 0.0;
+}
+
 } // namespace
 
-void write_snapshot_png(const Simulation& sim, const std::string& path, int width_px,
-                        SnapshotColour colour) {
-  const Particles& p = sim.world().particles;
+SnapshotColour parse_colour(std::string_view name) {
+  if (name == "speed") return SnapshotColour::speed;
+  if (name == "size") return SnapshotColour::size;
+  if (name == "force") return SnapshotColour::force;
+  if (name == "kind") return SnapshotColour::kind;
+  if (name == "material") return SnapshotColour::material;
+  throw InvalidArgument("unknown colouring '" + std::string(name) +
+                        "'; allowed: speed, size, force, kind, material");
+}
+
+Rect frame_bounds(const Frame& f) {
   Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
   Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    lo = {std::min(lo.x, p.position[i].x - p.radius[i]),
-          std::min(lo.y, p.position[i].y - p.radius[i])};
-    hi = {std::max(hi.x, p.position[i].x + p.radius[i]),
-          std::max(hi.y, p.position[i].y + p.radius[i])};
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    lo = {std::min(lo.x, f.position[i].x - f.radius[i]),
+          std::min(lo.y, f.position[i].y - f.radius[i])};
+    hi = {std::max(hi.x, f.position[i].x + f.radius[i]),
+          std::max(hi.y, f.position[i].y + f.radius[i])};
   }
-  for (const Segment& s : sim.world().walls)
-    for (const Vec2 e : {s.a, s.b})
-      lo = {std::min(lo.x, e.x), std::min(lo.y, e.y)},
+  for (const auto& [a, b] : f.walls)
+    for (const Vec2 e : {a, b}) {
+      lo = {std::min(lo.x, e.x), std::min(lo.y, e.y)};
       hi = {std::max(hi.x, e.x), std::max(hi.y, e.y)};
+    }
+  return {lo, hi};
+}
+
+void write_frame_png(const Frame& f, const std::string& path, const PictureOptions& o) {
+  const Rect box = o.bounds.value_or(frame_bounds(f));
+  const Vec2 lo = box.lo, hi = box.hi;
   if (!(hi.x > lo.x && hi.y > lo.y)) throw std::runtime_error("nothing to draw in " + path);
 
   const double margin = 0.03 * (hi.x - lo.x);
   const double bar_px = 70.0;
-  const double scale = (width_px - bar_px) / (hi.x - lo.x + 2.0 * margin);
-  const int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width_px, height_px);
+  const double scale = (o.width_px - bar_px) / (hi.x - lo.x + 2.0 * margin);
+  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
+  height_px += height_px % 2; // even sizes: what video encoders want
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width_px, height_px);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
   const auto X = [&](double x) { return (x - lo.x + margin) * scale; };
   const auto Y = [&](double y) { return height_px - 20.0 - (y - lo.y + margin) * scale; };
 
-  std::vector<double> value(p.size());
+  const std::size_t n = f.position.size();
   double vmin = std::numeric_limits<double>::max(), vmax = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    value[i] = colour == SnapshotColour::speed ? norm(p.velocity[i]) : p.radius[i];
-    if (p.is_free(i)) vmin = std::min(vmin, value[i]), vmax = std::max(vmax, value[i]);
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (f.kind[i] == 0)
+      vmin = std::min(vmin, field(f, i, o.colour)), vmax = std::max(vmax, field(f, i, o.colour));
   if (vmin > vmax) vmin = vmax = 0.0;
+  if (o.range) std::tie(vmin, vmax) = *o.range;
   const double span = vmax > vmin ? vmax - vmin : 1.0;
 
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    cairo_arc(cr, X(p.position[i].x), Y(p.position[i].y), p.radius[i] * scale, 0.0,
+  for (std::size_t i = 0; i < n; ++i) {
+    cairo_arc(cr, X(f.position[i].x), Y(f.position[i].y), f.radius[i] * scale, 0.0,
               2.0 * std::numbers::pi);
-    if (p.is_free(i)) {
-      const Rgb c = ramp((value[i] - vmin) / span);
-      cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    } else {
-      cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-    }
+    Rgb c{0.35, 0.35, 0.35}; // wall particles
+    if (o.colour == SnapshotColour::kind)
+      c = category(f.kind[i]);
+    else if (o.colour == SnapshotColour::material)
+      c = f.kind[i] == 0 ? category(f.material[i]) : c;
+    else if (f.kind[i] == 0)
+      c = ramp((field(f, i, o.colour) - vmin) / span);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_fill(cr);
   }
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   cairo_set_line_width(cr, 3.0);
-  for (const Segment& s : sim.world().walls) {
-    cairo_move_to(cr, X(s.a.x), Y(s.a.y));
-    cairo_line_to(cr, X(s.b.x), Y(s.b.y));
+  for (const auto& [a, b] : f.walls) {
+    cairo_move_to(cr, X(a.x), Y(a.y));
+    cairo_line_to(cr, X(b.x), Y(b.y));
     cairo_stroke(cr);
   }
 
-  // colour bar with its range and unit
-  const double bx = width_px - bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
-  for (int k = 0; k < 100; ++k) {
-    const Rgb c = ramp(1.0 - k / 99.0);
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
-    cairo_fill(cr);
-  }
-  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 12.0);
-  const bool speed = colour == SnapshotColour::speed;
-  const double unit = speed ? 1.0 : 1e3;
-  const std::string top = fmt::format("{:.3g}", vmax * unit),
-                    bottom = fmt::format("{:.3g}", vmin * unit);
-  cairo_move_to(cr, bx - 5.0, by - 8.0);
-  cairo_show_text(cr, top.c_str());
-  cairo_move_to(cr, bx - 5.0, by + bh + 16.0);
-  cairo_show_text(cr, bottom.c_str());
-  cairo_move_to(cr, bx - 10.0, by + bh + 32.0);
-  cairo_show_text(cr, speed ? "|v| m/s" : "R mm");
-  const std::string stamp = fmt::format("t = {:.4f} s   N = {}", sim.time(), p.size());
+  const double bx = o.width_px - bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
+  if (continuous(o.colour)) { // colour bar with its range and unit
+    for (int k = 0; k < 100; ++k) {
+      const Rgb c = ramp(1.0 - k / 99.0);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
+      cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    const double unit = o.colour == SnapshotColour::size ? 1e3 : 1.0;
+    const char* label = o.colour == SnapshotColour::speed  ? "|v| m/s"
+                        : o.colour == SnapshotColour::size ? "R mm"
+                                                           : "|F| N";
+    const std::string top = fmt::format("{:.3g}", vmax * unit),
+                      bottom = fmt::format("{:.3g}", vmin * unit);
+    cairo_move_to(cr, bx - 5.0, by - 8.0);
+    cairo_show_text(cr, top.c_str());
+    cairo_move_to(cr, bx - 5.0, by + bh + 16.0);
+    cairo_show_text(cr, bottom.c_str());
+    cairo_move_to(cr, bx - 10.0, by + bh + 32.0);
+    cairo_show_text(cr, label);
+  } else { // a legend of the categories present
+    std::vector<std::size_t> present;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = o.colour == SnapshotColour::kind ? f.kind[i] : f.material[i];
+      if (std::find(present.begin(), present.end(), k) == present.end()) present.push_back(k);
+    }
+    std::sort(present.begin(), present.end());
+    static constexpr const char* kinds[3] = {"free", "fixed", "moved"};
+    for (std::size_t m = 0; m < present.size() && m < 20; ++m) {
+      const Rgb c = category(present[m]);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_rectangle(cr, bx - 10.0, by + 20.0 * static_cast<double>(m), 14.0, 14.0);
+      cairo_fill(cr);
+      cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+      const std::string name = o.colour == SnapshotColour::kind && present[m] < 3
+                                   ? kinds[present[m]]
+                                   : fmt::format("{}", present[m]);
+      cairo_move_to(cr, bx + 8.0, by + 20.0 * static_cast<double>(m) + 12.0);
+      cairo_show_text(cr, name.c_str());
+    }
+  }
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  const std::string stamp = fmt::format("t = {:.4f} s   N = {}", f.time, n);
   cairo_move_to(cr, 10.0, 16.0);
   cairo_show_text(cr, stamp.c_str());
 

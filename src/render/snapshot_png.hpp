@@ -1,16 +1,37 @@
 #pragma once
-// A picture of one moment of a run: grains coloured by speed or size, walls drawn as lines.
+// Pictures of one moment of a run: grains coloured by a field with a colour bar, walls as lines.
+#include <optional>
 #include <string>
+#include <string_view>
 
-#include "simulation/simulation.hpp"
+#include "render/frame.hpp"
+#include "scenario/scenario.hpp"
 
 namespace talus {
 
-enum class SnapshotColour { size, speed };
+enum class SnapshotColour { speed, size, force, kind, material };
 
-/// Draws the current state into a PNG `width_px` wide (Cairo), with a colour bar. Throws
-/// std::runtime_error naming the file if it cannot be written.
-void write_snapshot_png(const Simulation& sim, const std::string& path, int width_px = 1200,
-                        SnapshotColour colour = SnapshotColour::speed);
+/// Parses "speed", "size", "force", "kind" or "material"; throws InvalidArgument otherwise.
+SnapshotColour parse_colour(std::string_view name);
+
+struct PictureOptions {
+  int width_px = 1200;
+  SnapshotColour colour = SnapshotColour::speed;
+  std::optional<Rect> bounds; ///< the region drawn; default: everything in the frame
+  std::optional<std::pair<double, double>> range; ///< colour scale; default: the frame's own
+};
+
+/// Draws a frame into a PNG (Cairo). Continuous fields get a colour bar with their range and
+/// unit; kind and material get one colour each. Throws std::runtime_error naming the file.
+void write_frame_png(const Frame& frame, const std::string& path, const PictureOptions& o = {});
+
+/// The extent of a frame's grains and walls.
+Rect frame_bounds(const Frame& frame);
+
+/// The current state of a simulation.
+inline void write_snapshot_png(const Simulation& sim, const std::string& path, int width_px = 1200,
+                               SnapshotColour colour = SnapshotColour::speed) {
+  write_frame_png(frame_of(sim), path, {width_px, colour, {}, {}});
+}
 
 } // namespace talus

@@ -1,0 +1,26 @@
+#pragma once
+// One moment of a run as plain arrays: what pictures are drawn from, whether it comes from a
+// running Simulation or from a snapshot file read back (io/vtp_reader.hpp).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+struct Frame {
+  double time = 0.0;
+  std::vector<Vec2> position;
+  std::vector<double> radius;
+  std::vector<Vec2> velocity;
+  std::vector<Vec2> force;
+  std::vector<std::uint8_t> kind; ///< 0 free, 1 fixed, 2 moved
+  std::vector<std::uint16_t> material;
+  std::vector<std::pair<Vec2, Vec2>> walls;
+};
+
+Frame frame_of(const Simulation& sim);
+
+} // namespace talus
