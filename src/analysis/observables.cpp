@@ -60,6 +60,33 @@ double coordination_number(const Simulation& sim) {
   return n ? contacts / static_cast<double>(n) : 0.0;
 }
 
+std::vector<ContactRecord> contact_forces(const Simulation& sim) {
+  std::vector<ContactRecord> out;
+  const Particles& p = sim.world().particles;
+  const SimulationConfig& c = sim.config();
+  with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
+    sim.for_each_contact([&](const ContactView& v) {
+      double history = v.history; // a copy: measuring must not advance the spring
+      const ContactForce f = contact_force<N, T>(*v.parameters, v.geometry, history, 0.0);
+      ContactRecord r;
+      r.i = v.i;
+      r.from = p.position[v.i];
+      const ContactGeometry& g = v.geometry;
+      if (v.wall < 0) { // the centres are a_i + a_j apart along n
+        r.j = v.j;
+        r.to = r.from - (g.arm_i + g.arm_j) * g.normal;
+      } else { // the wall's nearest point is R - xi = a_i - xi/2 from the centre
+        r.j = -1 - v.wall;
+        r.to = r.from - (g.arm_i - 0.5 * g.overlap) * g.normal;
+      }
+      r.normal_force = f.normal_force;
+      r.tangential_force = dot(f.force, v.geometry.tangent());
+      out.push_back(r);
+    });
+  });
+  return out;
+}
+
 Vec2 force_on_particles(const Simulation& sim, const std::vector<std::uint32_t>& indices) {
   Vec2 f;
   for (const auto i : indices) f += sim.world().particles.force[i];

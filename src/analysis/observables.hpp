@@ -31,6 +31,19 @@ double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi);
 /// Total force the grains put on the given wall particles (fixed or moved), N.
 Vec2 force_on_particles(const Simulation& sim, const std::vector<std::uint32_t>& indices);
 
+/// One touching contact with its forces, for force chains and force distributions.
+struct ContactRecord {
+  std::uint32_t i = 0;
+  std::int64_t j = -1;       ///< the other particle, or -1 - segment index for a wall
+  Vec2 from;                 ///< centre of i
+  Vec2 to;                   ///< centre of j (its periodic image), or the contact point on the wall
+  double normal_force = 0.0; ///< N
+  double tangential_force = 0.0; ///< N, signed along t
+};
+
+/// Every touching contact with its normal and tangential force (the law of the run).
+std::vector<ContactRecord> contact_forces(const Simulation& sim);
+
 /// Area of the intersection of the disk (centre c, radius r) with the rectangle [lo, hi].
 double disk_rectangle_area(Vec2 c, double r, Vec2 lo, Vec2 hi);
 

@@ -20,6 +20,7 @@ struct Snapshot {
   double time;
   fs::path particles;
   fs::path walls;
+  fs::path contacts;
 };
 
 std::vector<Snapshot> snapshots_of(const fs::path& dir) {
@@ -30,24 +31,27 @@ std::vector<Snapshot> snapshots_of(const fs::path& dir) {
                           "or a run with output.snapshot_interval = 0");
   std::vector<Snapshot> out;
   for (const auto& [t, file] : read_pvd(pvd.string())) {
-    std::string walls = file;
-    if (const auto k = walls.find("particles_"); k != std::string::npos)
+    std::string walls = file, contacts = file;
+    if (const auto k = file.find("particles_"); k != std::string::npos) {
       walls.replace(k, 10, "walls_");
-    out.push_back({t, dir / file, dir / walls});
+      contacts.replace(k, 10, "contacts_");
+    }
+    out.push_back({t, dir / file, dir / walls, dir / contacts});
   }
   if (out.empty()) throw InvalidArgument(pvd.string() + " lists no snapshots");
   return out;
 }
 
 Frame load(const Snapshot& s) {
-  return read_vtp_frame(s.particles.string(), s.walls.string(), s.time);
+  return read_vtp_frame(s.particles.string(), s.walls.string(), s.time, s.contacts.string());
 }
 
 // One scale for a whole series: the union of the frames' extents, the range of the colour field.
 PictureOptions series_options(const std::vector<Snapshot>& shots,
                               const std::vector<std::size_t>& picks, int width,
-                              SnapshotColour colour) {
-  PictureOptions o{width, colour, {}, {}};
+                              SnapshotColour colour, bool chains) {
+  PictureOptions o{width, colour, {}, {}, chains, {}};
+  double f_max = 0.0;
   Rect box = frame_bounds(load(shots[picks.front()]));
   double lo = 1e300, hi = 0.0;
   for (const std::size_t k : picks) {
@@ -62,8 +66,10 @@ PictureOptions series_options(const std::vector<Snapshot>& shots,
                                                          : f.radius[i];
       lo = std::min(lo, v), hi = std::max(hi, v);
     }
+    for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
   }
   o.bounds = box;
+  if (chains && f_max > 0.0) o.chain_scale = f_max;
   if (hi > lo) o.range = std::pair{lo, hi};
   return o;
 }
@@ -96,6 +102,7 @@ void add_picture_commands(CLI::App& app) {
     std::string dir, colour = "speed", frames = "last", out;
     int width = 1200;
     double fps = 10.0;
+    bool chains = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* render = app.add_subcommand("render", "PNG pictures of a run's snapshots");
@@ -108,15 +115,19 @@ void add_picture_commands(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(200, 8000));
   render->add_option("--out", o->out, "folder for the pictures (default: DIR/pictures)");
+  render->add_flag("--chains", o->chains,
+                   "force chains: contacts as lines, width and colour by force");
   render->callback([o] {
     const fs::path dir(o->dir);
     const auto shots = snapshots_of(dir);
     const auto picks = pick_frames(o->frames, shots.size());
-    const PictureOptions opts = series_options(shots, picks, o->width, parse_colour(o->colour));
+    const PictureOptions opts =
+        series_options(shots, picks, o->width, parse_colour(o->colour), o->chains);
     const fs::path out = o->out.empty() ? dir / "pictures" : fs::path(o->out);
     fs::create_directories(out);
     for (const std::size_t k : picks) {
-      const fs::path png = out / fmt::format("{}_{:06d}.png", o->colour, k);
+      const fs::path png =
+          out / fmt::format("{}{}_{:06d}.png", o->colour, o->chains ? "_chains" : "", k);
       write_frame_png(load(shots[k]), png.string(), opts);
     }
     fmt::print("wrote {} picture(s) to {}\n", picks.size(), out.string());
@@ -136,7 +147,8 @@ void add_picture_commands(CLI::App& app) {
     const fs::path dir(o->dir);
     const auto shots = snapshots_of(dir);
     const auto picks = pick_frames("all", shots.size());
-    const PictureOptions opts = series_options(shots, picks, o->width, parse_colour(o->colour));
+    const PictureOptions opts =
+        series_options(shots, picks, o->width, parse_colour(o->colour), o->chains);
     const fs::path frames = dir / "movie_frames";
     fs::create_directories(frames);
     for (const std::size_t k : picks)

@@ -240,21 +240,25 @@ private:
     if (!sim_.world().walls.empty())
       write_file_atomically((dir_ / "snapshots" / fmt::format("walls_{:06d}.vtp", n)).string(),
                             vtp_walls(sim_));
+    write_file_atomically((dir_ / "snapshots" / fmt::format("contacts_{:06d}.vtp", n)).string(),
+                          vtp_contacts(sim_));
     write_collections();
   }
 
   void write_collections() {
     // times of snapshot k: k * interval (snapshot 0 at t = 0)
-    std::vector<std::pair<double, std::string>> particles, walls;
+    std::vector<std::pair<double, std::string>> particles, walls, contacts;
     const double dt = sim_.config().timestep;
     for (std::uint64_t k = 0; k < book_.snapshots; ++k) {
       const double t = static_cast<double>(k * snapshot_every_) * dt;
       particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
       walls.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
+      contacts.emplace_back(t, fmt::format("snapshots/contacts_{:06d}.vtp", k));
     }
     write_file_atomically((dir_ / "particles.pvd").string(), pvd_collection(particles));
     if (!sim_.world().walls.empty())
       write_file_atomically((dir_ / "walls.pvd").string(), pvd_collection(walls));
+    write_file_atomically((dir_ / "contacts.pvd").string(), pvd_collection(contacts));
   }
 
   // The thesis' freeze (sec. 5.2): when the grains have come to rest, every free grain's height

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "analysis/observables.hpp"
+
 namespace talus {
 
 namespace {
@@ -70,6 +72,34 @@ std::string vtp_walls(const Simulation& sim) {
   out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
          "format=\"ascii\">\n";
   for (std::size_t s = 0; s < w.size(); ++s) out += fmt::format("{}\n", 2 * (s + 1));
+  out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  return out;
+}
+
+std::string vtp_contacts(const Simulation& sim) {
+  const std::vector<ContactRecord> c = contact_forces(sim);
+  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
+                    "byte_order=\"LittleEndian\">\n  <PolyData>\n";
+  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * c.size(),
+                     c.size());
+  out += "      <CellData Scalars=\"normal_force\">\n";
+  array(out, "normal_force", 1, c.size(),
+        [&](std::size_t k) { return fmt::format("{:.9g}", c[k].normal_force); });
+  array(out, "tangential_force", 1, c.size(),
+        [&](std::size_t k) { return fmt::format("{:.9g}", c[k].tangential_force); });
+  array(out, "particle", 1, c.size(), [&](std::size_t k) { return fmt::format("{}", c[k].i); });
+  array(out, "partner", 1, c.size(), [&](std::size_t k) { return fmt::format("{}", c[k].j); });
+  out += "      </CellData>\n      <Points>\n";
+  array(out, "position", 3, 2 * c.size(), [&](std::size_t k) {
+    const Vec2 v = k % 2 ? c[k / 2].to : c[k / 2].from;
+    return fmt::format("{:.12g} {:.12g} 0", v.x, v.y);
+  });
+  out += "      </Points>\n      <Lines>\n"
+         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t k = 0; k < 2 * c.size(); ++k) out += fmt::format("{}\n", k);
+  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
+         "format=\"ascii\">\n";
+  for (std::size_t k = 0; k < c.size(); ++k) out += fmt::format("{}\n", 2 * (k + 1));
   out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   return out;
 }

@@ -13,6 +13,9 @@ namespace talus {
 std::string vtp_particles(const Simulation& sim);
 /// The segment walls as lines, with the force the grains put on each.
 std::string vtp_walls(const Simulation& sim);
+/// The contacts as lines between the centres (to the contact point for walls), with cell arrays
+/// normal_force and tangential_force (N): force chains in ParaView.
+std::string vtp_contacts(const Simulation& sim);
 /// A .pvd collection: (time, file name relative to the .pvd) in order.
 std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries);
 

@@ -56,7 +56,8 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::string& path) {
   return out;
 }
 
-Frame read_vtp_frame(const std::string& particles, const std::string& walls, double time) {
+Frame read_vtp_frame(const std::string& particles, const std::string& walls, double time,
+                     const std::string& contacts) {
   const std::string xml = read_file(particles);
   Frame f;
   f.time = time;
@@ -82,6 +83,16 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
     const auto w = data_array(read_file(walls), "position", walls);
     for (std::size_t k = 0; k + 6 <= w.size(); k += 6) // a, b as (x, y, 0) each
       f.walls.emplace_back(Vec2{w[k], w[k + 1]}, Vec2{w[k + 3], w[k + 4]});
+  }
+  if (!contacts.empty() && std::filesystem::exists(contacts)) {
+    const std::string c = read_file(contacts);
+    const auto points = data_array(c, "position", contacts);
+    const auto normal = data_array(c, "normal_force", contacts);
+    if (points.size() != 6 * normal.size())
+      throw std::runtime_error(contacts + ": arrays of different lengths");
+    for (std::size_t k = 0; k < normal.size(); ++k)
+      f.chains.push_back(
+          {{points[6 * k], points[6 * k + 1]}, {points[6 * k + 3], points[6 * k + 4]}, normal[k]});
   }
   return f;
 }

@@ -1,5 +1,7 @@
 #include "render/frame.hpp"
 
+#include "analysis/observables.hpp"
+
 namespace talus {
 
 Frame frame_of(const Simulation& sim) {
@@ -14,6 +16,8 @@ Frame frame_of(const Simulation& sim) {
   for (const Kind k : p.kind) f.kind.push_back(static_cast<std::uint8_t>(k));
   f.material = p.material;
   for (const Segment& s : sim.world().walls) f.walls.emplace_back(s.a, s.b);
+  for (const ContactRecord& c : contact_forces(sim))
+    f.chains.push_back({c.from, c.to, c.normal_force});
   return f;
 }
 

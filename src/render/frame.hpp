@@ -19,8 +19,16 @@ struct Frame {
   std::vector<std::uint8_t> kind; ///< 0 free, 1 fixed, 2 moved
   std::vector<std::uint16_t> material;
   std::vector<std::pair<Vec2, Vec2>> walls;
+  /// Contacts: centre to centre (or to the wall), with the normal force in N.
+  struct Chain {
+    Vec2 from;
+    Vec2 to;
+    double force;
+  };
+  std::vector<Chain> chains;
 };
 
+/// The state of a simulation, contacts (with their forces) included.
 Frame frame_of(const Simulation& sim);
 
 } // namespace talus

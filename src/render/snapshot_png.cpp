@@ -127,8 +127,26 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
       c = f.kind[i] == 0 ? category(f.material[i]) : c;
     else if (f.kind[i] == 0)
       c = ramp((field(f, i, o.colour) - vmin) / span);
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    if (o.chains)
+      cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.25); // faded under the chains
+    else
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_fill(cr);
+  }
+  if (o.chains) { // thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force
+    double f_max = 0.0;
+    for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
+    if (o.chain_scale) f_max = *o.chain_scale;
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    for (const auto& ch : f.chains) {
+      if (f_max <= 0.0 || ch.force <= 0.0) continue;
+      const double u = std::min(1.0, ch.force / f_max);
+      cairo_set_source_rgb(cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
+      cairo_set_line_width(cr, 0.5 + 5.5 * u);
+      cairo_move_to(cr, X(ch.from.x), Y(ch.from.y));
+      cairo_line_to(cr, X(ch.to.x), Y(ch.to.y));
+      cairo_stroke(cr);
+    }
   }
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   cairo_set_line_width(cr, 3.0);

@@ -19,6 +19,8 @@ struct PictureOptions {
   SnapshotColour colour = SnapshotColour::speed;
   std::optional<Rect> bounds; ///< the region drawn; default: everything in the frame
   std::optional<std::pair<double, double>> range; ///< colour scale; default: the frame's own
+  bool chains = false;                            ///< force chains over faded grains
+  std::optional<double> chain_scale; ///< force drawn widest, N; default: the frame's largest
 };
 
 /// Draws a frame into a PNG (Cairo). Continuous fields get a colour bar with their range and
@@ -31,7 +33,7 @@ Rect frame_bounds(const Frame& frame);
 /// The current state of a simulation.
 inline void write_snapshot_png(const Simulation& sim, const std::string& path, int width_px = 1200,
                                SnapshotColour colour = SnapshotColour::speed) {
-  write_frame_png(frame_of(sim), path, {width_px, colour, {}, {}});
+  write_frame_png(frame_of(sim), path, {width_px, colour, {}, {}, false, {}});
 }
 
 } // namespace talus

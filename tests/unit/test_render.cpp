@@ -1,6 +1,7 @@
 // The snapshot picture is looked at, not only written: size, and a grain drawn where it is.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cairo.h>
 #include <cstdint>
 #include <filesystem>
@@ -54,6 +55,49 @@ TEST(SnapshotPng, UnwritablePathIsAClearError) {
   c.timestep = 1e-5;
   Simulation s(std::move(w), c);
   EXPECT_THROW(write_snapshot_png(s, "/nonexistent-folder/x.png"), std::runtime_error);
+}
+
+} // namespace
+} // namespace talus
+
+namespace talus {
+namespace {
+
+TEST(SnapshotPng, ForceChainIsDrawnDarkerThanTheFadedGrains) {
+  Frame f;
+  f.position = {{0.0, 0.0}, {0.02, 0.0}};
+  f.radius = {0.011, 0.011};
+  f.velocity = {{0.0, 0.0}, {0.0, 0.0}};
+  f.force = f.velocity;
+  f.kind = {0, 0};
+  f.material = {0, 0};
+  f.chains.push_back({{0.0, 0.0}, {0.02, 0.0}, 5.0});
+  const auto path = (std::filesystem::temp_directory_path() / "talus_chain_test.png").string();
+  PictureOptions o;
+  o.width_px = 600;
+  o.chains = true;
+  write_frame_png(f, path, o);
+  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+  const int height = cairo_image_surface_get_height(img),
+            stride = cairo_image_surface_get_stride(img);
+  const auto* data = cairo_image_surface_get_data(img);
+  const auto rgb = [&](int x, int y) {
+    const std::uint32_t v = *reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x);
+    return std::array<int, 3>{int((v >> 16) & 255), int((v >> 8) & 255), int(v & 255)};
+  };
+  // the chain runs along y = 0 between the centres: the middle of the picture's drawing
+  const Rect b = frame_bounds(f);
+  const double margin = 0.03 * (b.hi.x - b.lo.x),
+               scale = (600.0 - 70.0) / (b.hi.x - b.lo.x + 2 * margin);
+  const int cx = static_cast<int>((0.01 - b.lo.x + margin) * scale);
+  const int cy = static_cast<int>(height - 20.0 - (0.0 - b.lo.y + margin) * scale);
+  const auto chain = rgb(cx, cy);
+  EXPECT_GT(chain[0], 2 * chain[1]) << "the chain pixel is not red"; // red dominates
+  const auto grain = rgb(cx, static_cast<int>(cy - 0.008 * scale));  // inside a grain
+  EXPECT_GT(grain[1], chain[1] + 60) << "the faded grain is not lighter than the chain";
+  cairo_surface_destroy(img);
+  std::filesystem::remove(path);
 }
 
 } // namespace
