@@ -10,6 +10,7 @@ packages=(
   libtomlplusplus-dev       # scenario files
   python3-vtk9              # tests: VTK reads the snapshots as ParaView does
   ffmpeg                    # talus movie
+  python3-matplotlib        # talus analyze: charts
 )
 
 missing=()

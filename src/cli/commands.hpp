@@ -19,6 +19,8 @@ void add_scenarios_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 /// `talus render DIR` and `talus movie DIR`: pictures and a movie of a run's snapshots.
 void add_picture_commands(CLI::App& app);
+/// `talus analyze DIR [WHAT]`: analyses with CSV and charts.
+void add_analyze_command(CLI::App& app);
 /// `talus checkpoint DIR`: what the last checkpoint holds, with a hash of the state.
 void add_checkpoint_command(CLI::App& app);
 /// `talus bench dense2d`: the reference benchmark, optionally beside LAMMPS.

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   talus::cli::add_bench_command(app);
   talus::cli::add_checkpoint_command(app);
   talus::cli::add_picture_commands(app);
+  talus::cli::add_analyze_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

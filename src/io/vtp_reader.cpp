@@ -56,6 +56,10 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::string& path) {
   return out;
 }
 
+std::vector<double> read_contact_normal_forces(const std::string& contacts) {
+  return data_array(read_file(contacts), "normal_force", contacts);
+}
+
 Frame read_vtp_frame(const std::string& particles, const std::string& walls, double time,
                      const std::string& contacts) {
   const std::string xml = read_file(particles);

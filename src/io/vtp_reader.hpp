@@ -14,6 +14,9 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::string& path);
 
 /// One frame from a particles .vtp file and, if not empty, the matching walls .vtp file.
 /// Throws std::runtime_error naming the file and the array that is missing or malformed.
+/// The normal forces (N) of a contacts .vtp file.
+std::vector<double> read_contact_normal_forces(const std::string& contacts);
+
 /// `contacts`, if not empty and present, adds the force chains.
 Frame read_vtp_frame(const std::string& particles, const std::string& walls, double time,
                      const std::string& contacts = {});

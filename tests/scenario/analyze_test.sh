@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# talus analyze on a short run: the CSV and JSON outputs hold their documented columns and a
+# fitted tail; the charts exist when matplotlib is installed.
+set -u
+talus="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+"$talus" run drum --quiet --out "$dir/run" --set simulation.duration=0.3 \
+  --set output.snapshot_interval=0.05 --set packing.settle_max_time=0.3 || exit 1
+"$talus" analyze "$dir/run" all > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+cat "$dir/out.txt"
+head -1 "$dir/run/analysis/forces.csv" | grep -q "^f_over_mean,probability_density,count$" || exit 1
+grep -q '"beta"' "$dir/run/analysis/forces.json" || exit 1
+grep -q "carry less than the mean force" "$dir/out.txt" || exit 1
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  [ -s "$dir/run/analysis/thermo.png" ] && [ -s "$dir/run/analysis/forces.png" ] || { echo "charts missing"; exit 1; }
+fi
+"$talus" analyze "$dir/run" nonsense 2> /dev/null && { echo "a bad analysis name was accepted"; exit 1; }
+exit 0
