@@ -41,12 +41,20 @@ TEST_P(BuiltinScenario, BuildsAndRunsShortened) {
   std::vector<std::string> set = {"simulation.duration=0.004", "output.snapshot_interval=0.002",
                                   "packing.settle_max_time=0.02"};
   if (name != "collisions") set.push_back("particles.count=120");
+  if (name == "collisions") set.push_back("output.thesis_out=true");
   const Scenario s = builtin(name, set);
   const fs::path dir = fresh_dir(name);
   ASSERT_EQ(run(s, dir), cli::exit_completed);
   for (const char* f : {"scenario.toml", "thermo.csv", "run.json", "particles.pvd",
                         "checkpoint.bin", "snapshots/particles_000000.vtp"})
     EXPECT_TRUE(fs::exists(dir / f)) << name << ": " << f;
+  if (name == "collisions") { // the thesis' .out format: its 5-line header, then 13 columns
+    const std::string out = read_file((dir / "run.out").string());
+    EXPECT_EQ(out.substr(0, out.find('\n')), "4");
+    const ThesisFile back = read_thesis_in(out, "run.out"); // the first block reads as an .in
+    EXPECT_EQ(back.particles.size(), 4U);
+    EXPECT_DOUBLE_EQ(back.particles[0].vx, 0.01);
+  }
   // the resolved scenario reruns: it loads back to the same scenario
   const Scenario again = load_scenario_file((dir / "scenario.toml").string());
   EXPECT_EQ(to_toml(again), to_toml(s));
