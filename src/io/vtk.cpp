@@ -52,56 +52,62 @@ std::string vtp_particles(const Simulation& sim) {
   return out;
 }
 
-std::string vtp_walls(const Simulation& sim) {
-  const Segments& w = sim.world().walls;
+namespace {
+
+// A PolyData of n straight lines: `cells` writes the CellData arrays, `end(k, second)` gives the
+// first or second end point of line k.
+template <class Cells, class End>
+std::string line_polydata(std::size_t n, const char* scalars, Cells cells, End end) {
   std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
                     "byte_order=\"LittleEndian\">\n  <PolyData>\n";
-  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * w.size(),
-                     w.size());
-  out += "      <CellData>\n";
-  array(out, "force", 3, w.size(),
-        [&](std::size_t s) { return fmt::format("{:.9g} {:.9g} 0", w[s].force.x, w[s].force.y); });
+  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * n, n);
+  out +=
+      *scalars ? fmt::format("      <CellData Scalars=\"{}\">\n", scalars) : "      <CellData>\n";
+  cells(out);
   out += "      </CellData>\n      <Points>\n";
-  array(out, "position", 3, 2 * w.size(), [&](std::size_t k) {
-    const Vec2 v = k % 2 ? w[k / 2].b : w[k / 2].a;
+  array(out, "position", 3, 2 * n, [&](std::size_t k) {
+    const Vec2 v = end(k / 2, k % 2 == 1);
     return fmt::format("{:.12g} {:.12g} 0", v.x, v.y);
   });
   out += "      </Points>\n      <Lines>\n"
          "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < 2 * w.size(); ++k) out += fmt::format("{}\n", k);
+  for (std::size_t k = 0; k < 2 * n; ++k) out += fmt::format("{}\n", k);
   out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
          "format=\"ascii\">\n";
-  for (std::size_t s = 0; s < w.size(); ++s) out += fmt::format("{}\n", 2 * (s + 1));
+  for (std::size_t k = 0; k < n; ++k) out += fmt::format("{}\n", 2 * (k + 1));
   out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   return out;
 }
 
+} // namespace
+
+std::string vtp_walls(const Simulation& sim) {
+  const Segments& w = sim.world().walls;
+  return line_polydata(
+      w.size(), "",
+      [&](std::string& out) {
+        array(out, "force", 3, w.size(), [&](std::size_t s) {
+          return fmt::format("{:.9g} {:.9g} 0", w[s].force.x, w[s].force.y);
+        });
+      },
+      [&](std::size_t s, bool second) { return second ? w[s].b : w[s].a; });
+}
+
 std::string vtp_contacts(const Simulation& sim) {
   const std::vector<ContactRecord> c = contact_forces(sim);
-  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
-                    "byte_order=\"LittleEndian\">\n  <PolyData>\n";
-  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * c.size(),
-                     c.size());
-  out += "      <CellData Scalars=\"normal_force\">\n";
-  array(out, "normal_force", 1, c.size(),
-        [&](std::size_t k) { return fmt::format("{:.9g}", c[k].normal_force); });
-  array(out, "tangential_force", 1, c.size(),
-        [&](std::size_t k) { return fmt::format("{:.9g}", c[k].tangential_force); });
-  array(out, "particle", 1, c.size(), [&](std::size_t k) { return fmt::format("{}", c[k].i); });
-  array(out, "partner", 1, c.size(), [&](std::size_t k) { return fmt::format("{}", c[k].j); });
-  out += "      </CellData>\n      <Points>\n";
-  array(out, "position", 3, 2 * c.size(), [&](std::size_t k) {
-    const Vec2 v = k % 2 ? c[k / 2].to : c[k / 2].from;
-    return fmt::format("{:.12g} {:.12g} 0", v.x, v.y);
-  });
-  out += "      </Points>\n      <Lines>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < 2 * c.size(); ++k) out += fmt::format("{}\n", k);
-  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  for (std::size_t k = 0; k < c.size(); ++k) out += fmt::format("{}\n", 2 * (k + 1));
-  out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return out;
+  return line_polydata(
+      c.size(), "normal_force",
+      [&](std::string& out) {
+        array(out, "normal_force", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].normal_force); });
+        array(out, "tangential_force", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].tangential_force); });
+        array(out, "particle", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{}", c[k].i); });
+        array(out, "partner", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{}", c[k].j); });
+      },
+      [&](std::size_t k, bool second) { return second ? c[k].to : c[k].from; });
 }
 
 std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries) {

@@ -30,3 +30,18 @@ for _, name in files:
         assert point_data.GetArray(array) is not None, (name, array)
     assert point_data.GetArray("velocity").GetNumberOfComponents() == 3
 print(f"read {len(files)} snapshots of {particles} particles with VTK {vtk.vtkVersion.GetVTKVersion()}")
+
+# the walls and the contacts (force chains) open too, with their cell arrays
+for collection, arrays in [("walls.pvd", ["force"]),
+                           ("contacts.pvd", ["normal_force", "tangential_force", "particle", "partner"])]:
+    if not (run / collection).exists():
+        continue
+    for d in ET.parse(run / collection).getroot().find("Collection"):
+        reader = vtk.vtkXMLPolyDataReader()
+        reader.SetFileName(str(run / d.get("file")))
+        reader.Update()
+        data = reader.GetOutput()
+        assert data.GetNumberOfPoints() == 2 * data.GetNumberOfLines(), d.get("file")
+        for array in arrays:
+            assert data.GetCellData().GetArray(array) is not None, (d.get("file"), array)
+print("walls and contacts read too")
