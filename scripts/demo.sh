@@ -9,4 +9,6 @@ scripts/install-deps.sh
 scripts/build.sh
 out="runs/drum-$(date +%Y%m%d-%H%M%S)"
 build/src/talus run drum --out "$out" "$@"
-echo "pictures and numbers: $out/final.png, $out/thermo.csv, $out/particles.pvd (ParaView)"
+build/src/talus analyze "$out" thermo
+echo "pictures and numbers: $out/final.png, $out/analysis/thermo.png, $out/thermo.csv," \
+     "$out/particles.pvd (ParaView)"
