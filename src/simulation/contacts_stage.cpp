@@ -166,13 +166,23 @@ void gather(Particles& p, const NeighbourList& list, const std::vector<PairForce
   }
 }
 
-// The one-thread path: gravity, then pairs scattered in entry order, then wall contacts.
-void add_walls(Particles& p, const NeighbourList& list, const std::vector<PairForce>& wf) {
+// The one-thread path: wall contacts to the grains, and their reaction to the walls, in one pass.
+void add_walls(Particles& p, const NeighbourList& list, const std::vector<PairForce>& wf,
+               Segments& walls) {
   for (std::size_t k = 0; k < p.size(); ++k)
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
+      walls[list.wall_segment[e]].force -= wf[e].force;
     }
+}
+
+// With threads the grains gathered their wall contacts; the walls sum theirs here, in order.
+void sum_wall_forces(const Particles& p, const NeighbourList& list,
+                     const std::vector<PairForce>& wf, Segments& walls) {
+  for (std::size_t k = 0; k < p.size(); ++k)
+    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
+      walls[list.wall_segment[e]].force -= wf[e].force;
 }
 
 } // namespace
@@ -246,14 +256,13 @@ void Simulation::compute_forces() {
             wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_);
         return std::max(a, b);
       });
-  if (serial)
-    add_walls(p, list_, wall_force_);
-  else
-    gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
   for (Segment& s : world_.walls) s.force = {};
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::uint32_t e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e)
-      world_.walls[list_.wall_segment[e]].force -= wall_force_[e].force;
+  if (serial) {
+    add_walls(p, list_, wall_force_, world_.walls);
+  } else {
+    gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
+    sum_wall_forces(p, list_, wall_force_, world_.walls);
+  }
 }
 
 } // namespace talus
