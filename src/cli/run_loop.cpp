@@ -12,6 +12,7 @@
 #include <fmt/core.h>
 
 #include "analysis/observables.hpp"
+#include "cli/pictures.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "io/vtk.hpp"
@@ -127,6 +128,7 @@ public:
     thermo_.open(dir_ / "thermo.csv", mode);
     if (!book_.tracked.empty()) track_.open(dir_ / "track.csv", mode);
     if (s_.output.thesis_out) out_.open(dir_ / "run.out", mode);
+    if (s_.frost.model != "none") frost_.open(dir_ / "frost.csv", mode);
     if (!thermo_) throw std::runtime_error("cannot write " + (dir_ / "thermo.csv").string());
     if (!fresh) return;
     std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
@@ -135,6 +137,7 @@ public:
     for (const auto& [name, _] : book_.groups) head += ",force_" + name + "_x,force_" + name + "_y";
     thermo_ << head << "\n";
     if (track_.is_open()) track_ << "time,id,x,y,angle,vx,vy,omega\n";
+    if (frost_.is_open()) frost_ << "cycle,time,event\n";
     if (out_.is_open()) out_ << thesis_out_header(sim_, s_.simulation.duration);
     record_thermo();
     record_track();
@@ -199,6 +202,7 @@ public:
     if (ended != "stop_at" && s_.output.picture) {
       write_snapshot_png(sim_, (dir_ / "final.png").string(), 1200, SnapshotColour::speed);
     }
+    if (ended != "stop_at") scenario_pictures();
     write_run_json(wall_now(), sim_.step_count() - first_step, ended);
     if (!o_.quiet)
       fmt::print("{} at t = {:.6g} s after {} steps; run folder {}\n",
@@ -208,6 +212,23 @@ public:
   }
 
 private:
+  // The pictures and the movie the scenario asks for (output.pictures, output.movie).
+  void scenario_pictures() {
+    for (const std::string& p : s_.output.pictures) {
+      const PictureRequest r = parse_picture_request(p);
+      render_run(dir_, r, "last", 1200, dir_ / "pictures");
+      if (!o_.quiet)
+        fmt::print(
+            "picture: {}\n",
+            (dir_ / "pictures" / fmt::format("{}_{:06d}.png", picture_stem(r), book_.snapshots - 1))
+                .string());
+    }
+    if (s_.output.movie) {
+      const std::size_t n = make_movie(dir_, {s_.output.movie_color, false, false}, 10.0, 1200);
+      if (!o_.quiet) fmt::print("movie: {} ({} frames)\n", (dir_ / "movie.mp4").string(), n);
+    }
+  }
+
   void record_thermo() {
     const Energies e = energies(sim_);
     const Vec2 p = linear_momentum(sim_);
@@ -272,17 +293,20 @@ private:
       if (p.is_free(i)) p.position[i].y = floor + (p.position[i].y - floor) * s_.frost.heave_factor;
     ++book_.freezes;
     book_.last_freeze = sim_.time();
+    frost_ << fmt::format("{},{:.9g},freeze\n", book_.freezes, sim_.time());
     if (!o_.quiet && !tty_) fmt::print("freeze {} at t = {:.6g} s\n", book_.freezes, sim_.time());
     return true;
   }
 
   void checkpoint(double wall) {
-    for (auto [f, name] :
-         {std::pair{&thermo_, "thermo.csv"}, {&track_, "track.csv"}, {&out_, "run.out"}}) {
+    for (auto [f, name] : {std::pair{&thermo_, "thermo.csv"},
+                           {&track_, "track.csv"},
+                           {&out_, "run.out"},
+                           {&frost_, "frost.csv"}}) {
       f->flush();
       if (f->is_open() && !*f) {
         // leave no half-written line: cut every output back to the last good checkpoint
-        for (std::ofstream* g : {&thermo_, &track_, &out_}) g->close();
+        for (std::ofstream* g : {&thermo_, &track_, &out_, &frost_}) g->close();
         std::error_code ignored;
         for (const auto& [file, bytes] : book_.file_bytes)
           fs::resize_file(dir_ / file, bytes, ignored);
@@ -292,7 +316,7 @@ private:
       }
     }
     book_.file_bytes.clear();
-    for (const char* name : {"thermo.csv", "track.csv", "run.out"})
+    for (const char* name : {"thermo.csv", "track.csv", "run.out", "frost.csv"})
       if (fs::exists(dir_ / name)) book_.file_bytes[name] = fs::file_size(dir_ / name);
     book_.wall_seconds = wall;
     Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
@@ -357,7 +381,7 @@ private:
   RunOptions o_;
   std::uint64_t total_ = 0, stop_ = 0;
   std::uint64_t thermo_every_ = 1, snapshot_every_ = 0, track_every_ = 1, checkpoint_every_ = 0;
-  std::ofstream thermo_, track_, out_;
+  std::ofstream thermo_, track_, out_, frost_;
   bool tty_ = false, printed_ = false;
   double next_report_ = 0.1;
   double weight_scale_ = 0.0, last_kinetic_ = 0.0;

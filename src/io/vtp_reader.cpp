@@ -71,11 +71,13 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
   const auto force = data_array(xml, "force", particles);
   const auto kind = data_array(xml, "kind", particles);
   const auto material = data_array(xml, "material", particles);
+  const auto ids = data_array(xml, "id", particles);
   const std::size_t n = radius.size();
   if (pos.size() != 3 * n || vel.size() != 3 * n || force.size() != 3 * n || kind.size() != n ||
-      material.size() != n)
+      material.size() != n || ids.size() != n)
     throw std::runtime_error(particles + ": arrays of different lengths");
   for (std::size_t i = 0; i < n; ++i) {
+    f.id.push_back(static_cast<std::uint32_t>(ids[i]));
     f.position.push_back({pos[3 * i], pos[3 * i + 1]});
     f.radius.push_back(radius[i]);
     f.velocity.push_back({vel[3 * i], vel[3 * i + 1]});

@@ -8,6 +8,7 @@ Frame frame_of(const Simulation& sim) {
   const Particles& p = sim.world().particles;
   Frame f;
   f.time = sim.time();
+  f.id.assign(p.id.begin(), p.id.end());
   f.position = p.position;
   f.radius = p.radius;
   f.velocity = p.velocity;

@@ -12,6 +12,7 @@ namespace talus {
 
 struct Frame {
   double time = 0.0;
+  std::vector<std::uint32_t> id; ///< the particles' ids (stable over a run)
   std::vector<Vec2> position;
   std::vector<double> radius;
   std::vector<Vec2> velocity;

@@ -127,8 +127,8 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
       c = f.kind[i] == 0 ? category(f.material[i]) : c;
     else if (f.kind[i] == 0)
       c = ramp((field(f, i, o.colour) - vmin) / span);
-    if (o.chains)
-      cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.25); // faded under the chains
+    if (o.chains || !o.tracks.empty())
+      cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.25); // faded under the chains or tracks
     else
       cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_fill(cr);
@@ -154,6 +154,24 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
     cairo_move_to(cr, X(a.x), Y(a.y));
     cairo_line_to(cr, X(b.x), Y(b.y));
     cairo_stroke(cr);
+  }
+
+  // trajectories: a line each in a strong colour, a dot where the particle is now
+  static constexpr Rgb track_colours[6] = {{0.85, 0.1, 0.1}, {0.1, 0.3, 0.9}, {0.0, 0.6, 0.2},
+                                           {0.9, 0.5, 0.0},  {0.6, 0.1, 0.7}, {0.0, 0.6, 0.7}};
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (std::size_t k = 0; k < o.tracks.size(); ++k) {
+    const auto& points = o.tracks[k].points;
+    if (points.empty()) continue;
+    const Rgb c = track_colours[k % 6];
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_line_width(cr, 2.5);
+    cairo_move_to(cr, X(points.front().x), Y(points.front().y));
+    for (const Vec2& q : points) cairo_line_to(cr, X(q.x), Y(q.y));
+    cairo_stroke(cr);
+    cairo_arc(cr, X(points.back().x), Y(points.back().y), 5.0, 0.0, 2.0 * std::numbers::pi);
+    cairo_fill(cr);
   }
 
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "render/frame.hpp"
 #include "scenario/scenario.hpp"
@@ -14,6 +15,12 @@ enum class SnapshotColour { speed, size, force, kind, material };
 /// Parses "speed", "size", "force", "kind" or "material"; throws InvalidArgument otherwise.
 SnapshotColour parse_colour(std::string_view name);
 
+/// A tracked particle's path, drawn over the picture (thesis figs. 4.3-4.5, 4.11, 5.13).
+struct TrackLine {
+  std::uint32_t id;
+  std::vector<Vec2> points; ///< m, in time order
+};
+
 struct PictureOptions {
   int width_px = 1200;
   SnapshotColour colour = SnapshotColour::speed;
@@ -21,6 +28,7 @@ struct PictureOptions {
   std::optional<std::pair<double, double>> range; ///< colour scale; default: the frame's own
   bool chains = false;                            ///< force chains over faded grains
   std::optional<double> chain_scale; ///< force drawn widest, N; default: the frame's largest
+  std::vector<TrackLine> tracks;     ///< trajectories over faded grains, one colour each
 };
 
 /// Draws a frame into a PNG (Cairo). Continuous fields get a colour bar with their range and
@@ -33,7 +41,7 @@ Rect frame_bounds(const Frame& frame);
 /// The current state of a simulation.
 inline void write_snapshot_png(const Simulation& sim, const std::string& path, int width_px = 1200,
                                SnapshotColour colour = SnapshotColour::speed) {
-  write_frame_png(frame_of(sim), path, {width_px, colour, {}, {}, false, {}});
+  write_frame_png(frame_of(sim), path, {width_px, colour, {}, {}, false, {}, {}});
 }
 
 } // namespace talus

@@ -4,6 +4,8 @@
 #include <limits>
 #include <sstream>
 
+#include "scenario/picture_request.hpp"
+
 namespace talus {
 
 namespace {
@@ -225,6 +227,15 @@ void read_output(TableReader& r, OutputSection& o) {
       r.number("track_interval", o.track_interval, 0.0, inf, ">= 0 s (0: every step)");
   o.thesis_out = r.boolean("thesis_out", o.thesis_out);
   o.picture = r.boolean("picture", o.picture);
+  o.pictures = r.texts("pictures");
+  for (const std::string& p : o.pictures)
+    if (const std::string problem = picture_request_problem(p); !problem.empty())
+      r.fail("pictures", "'" + p + "': " + problem);
+  o.movie = r.boolean("movie", o.movie);
+  o.movie_color =
+      r.choice("movie_color", o.movie_color, {"speed", "size", "force", "kind", "material"});
+  if ((!o.pictures.empty() || o.movie) && o.snapshot_interval <= 0.0)
+    r.fail(o.movie ? "movie" : "pictures", "needs snapshots: set output.snapshot_interval > 0");
 }
 
 void read_frost(TableReader& r, FrostSection& f) {
@@ -325,6 +336,12 @@ Scenario load_scenario(std::string_view text, const std::string& file,
     for (std::size_t n = m + 1; n < s.materials.size(); ++n)
       if (s.materials[m].name == s.materials[n].name)
         throw ScenarioError(file + ": two materials are named '" + s.materials[m].name + "'");
+  const bool tracking = !s.track.ids.empty() || s.track.select != "none";
+  for (const std::string& p : s.output.pictures)
+    if (parse_picture_request(p).tracks && !tracking)
+      throw ScenarioError(file + ": key 'output.pictures': '" + p +
+                          "' draws tracks, but [track] selects no particles; set track.ids or "
+                          "track.select (largest, smallest, nearest)");
   return s;
 }
 

@@ -130,12 +130,17 @@ std::string to_toml(const Scenario& s) {
                                    {"count", static_cast<std::int64_t>(s.track.count)}});
 
   const OutputSection& o = s.output;
+  toml::array pictures;
+  for (const auto& name : o.pictures) pictures.push_back(name);
   root.insert("output", toml::table{{"thermo_interval", o.thermo_interval},
                                     {"snapshot_interval", o.snapshot_interval},
                                     {"checkpoint_interval", o.checkpoint_interval},
                                     {"track_interval", o.track_interval},
                                     {"thesis_out", o.thesis_out},
-                                    {"picture", o.picture}});
+                                    {"picture", o.picture},
+                                    {"pictures", pictures},
+                                    {"movie", o.movie},
+                                    {"movie_color", o.movie_color}});
   const FrostSection& f = s.frost;
   root.insert("frost", toml::table{{"model", f.model},
                                    {"heave_factor", f.heave_factor},

@@ -118,6 +118,11 @@ struct OutputSection {
   double track_interval = 0.001;    ///< s
   bool thesis_out = false;          ///< also write the thesis' .out snapshots
   bool picture = true;              ///< final.png at the end
+  /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
+  /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).
+  std::vector<std::string> pictures;
+  bool movie = false;                ///< movie.mp4 of all snapshots at the end (needs ffmpeg)
+  std::string movie_color = "speed"; ///< the movie's colour field
 };
 
 /// The thesis' freeze-thaw rule (sec. 5.2): whenever the kinetic energy falls below a threshold

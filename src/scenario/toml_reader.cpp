@@ -140,6 +140,20 @@ std::string TableReader::choice(std::string_view key, std::string fallback,
   fail(key, "'" + v + "' is not one of the allowed values: " + list);
 }
 
+std::vector<std::string> TableReader::texts(std::string_view key) {
+  const toml::node* n = get(key);
+  std::vector<std::string> out;
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of strings, e.g. [\"speed\", \"force+chains\"]");
+  for (const toml::node& e : *a) {
+    const auto v = e.value_exact<std::string>();
+    if (!v) fail(key, "expected an array of strings in quotes");
+    out.push_back(*v);
+  }
+  return out;
+}
+
 Vec2 TableReader::vec2(std::string_view key, Vec2 fallback) {
   const toml::node* n = get(key);
   if (!n) return fallback;

@@ -41,6 +41,8 @@ public:
   std::string choice(std::string_view key, std::string fallback,
                      std::initializer_list<std::string_view> allowed);
   Vec2 vec2(std::string_view key, Vec2 fallback);
+  /// An array of strings (empty if absent).
+  std::vector<std::string> texts(std::string_view key);
   std::vector<double> numbers(std::string_view key, double min, double max, const char* allowed);
   std::optional<std::vector<double>> optional_numbers(std::string_view key);
   /// The sub-table at key, or nullptr.

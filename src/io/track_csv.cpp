@@ -1,0 +1,30 @@
+#include "io/track_csv.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace talus {
+
+std::map<std::uint32_t, std::vector<TrackPoint>> read_tracks(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("time,id,x,y", 0) != 0)
+    throw std::runtime_error(path + ": not a talus track file (header '" + line + "')");
+  std::map<std::uint32_t, std::vector<TrackPoint>> tracks;
+  for (std::size_t number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    std::istringstream row(line);
+    double v[8];
+    char comma = ',';
+    bool ok = static_cast<bool>(row >> v[0]);
+    for (int k = 1; k < 8 && ok; ++k) ok = static_cast<bool>(row >> comma >> v[k]) && comma == ',';
+    if (!ok) throw std::runtime_error(path + ":" + std::to_string(number) + ": malformed row");
+    tracks[static_cast<std::uint32_t>(v[1])].push_back({v[0], {v[2], v[3]}, {v[5], v[6]}});
+  }
+  return tracks;
+}
+
+} // namespace talus
