@@ -33,7 +33,8 @@ std::string describe(std::string_view toml_text) {
 
 // A scenario from a .toml path, a thesis .in path or a built-in name.
 Scenario resolve(const std::string& what, const std::vector<std::string>& overrides) {
-  if (fs::exists(what)) {
+  // a folder (say, the run folder of a built-in scenario, named after it) is never a scenario
+  if (fs::is_regular_file(what)) {
     if (fs::path(what).extension() == ".in") {
       const ThesisFile f = read_thesis_in(read_file(what), what);
       const Scenario s = scenario_from_thesis(f, fs::path(what).stem().string());
@@ -50,6 +51,9 @@ Scenario resolve(const std::string& what, const std::vector<std::string>& overri
     if (const auto d = edit_distance(what, b.name); d < best_d) best_d = d, best = b.name;
   }
   std::string msg = "'" + what + "' is neither a file nor a built-in scenario";
+  if (fs::is_directory(what))
+    msg = "'" + what + "' is a folder, not a scenario file (a run folder continues with talus " +
+          "resume; its scenario is " + (fs::path(what) / "scenario.toml").string() + ")";
   if (best_d <= 3) msg += "; did you mean '" + best + "'?";
   throw InvalidArgument(msg + " (built-in: " + names + ")");
 }

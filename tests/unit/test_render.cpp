@@ -45,6 +45,43 @@ TEST(SnapshotPng, DrawsTheGrainWhereItIsAndTheBackgroundWhite) {
   std::filesystem::remove(path);
 }
 
+TEST(SnapshotPng, DrawsATrackWhereTheParticleWent) {
+  // a grain at the right end of a horizontal path across empty space; the path is drawn red
+  Frame f;
+  f.id = {0, 1};
+  f.position = {{0.09, 0.05}, {0.01, 0.09}};
+  f.radius = {0.005, 0.005};
+  f.velocity = {{}, {}};
+  f.force = {{}, {}};
+  f.kind = {0, 0};
+  f.material = {0, 0};
+  f.walls = {{{0.0, 0.0}, {0.1, 0.0}}};
+  PictureOptions o;
+  o.width_px = 600;
+  o.bounds = Rect{{0.0, 0.0}, {0.1, 0.1}};
+  o.tracks = {{0, {{0.01, 0.05}, {0.05, 0.05}, {0.09, 0.05}}}};
+  const auto path = (std::filesystem::temp_directory_path() / "talus_track_test.png").string();
+  write_frame_png(f, path, o);
+  cairo_surface_t* img = cairo_image_surface_create_from_png(path.c_str());
+  ASSERT_EQ(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+  const int height = cairo_image_surface_get_height(img);
+  const auto* data = cairo_image_surface_get_data(img);
+  const int stride = cairo_image_surface_get_stride(img);
+  const auto pixel = [&](double x, double y) {
+    const double scale = (600.0 - 70.0) / (0.1 + 2.0 * 0.003);
+    const int px = static_cast<int>((x + 0.003) * scale);
+    const int py = static_cast<int>(height - 20.0 - (y + 0.003) * scale);
+    return *reinterpret_cast<const std::uint32_t*>(data + py * stride + 4 * px) & 0xFFFFFFu;
+  };
+  const std::uint32_t on_path = pixel(0.03, 0.05);
+  const unsigned red = (on_path >> 16) & 0xFFu, green = (on_path >> 8) & 0xFFu;
+  EXPECT_GT(red, 180u) << "the track is not drawn red where the particle went";
+  EXPECT_LT(green, 80u);
+  EXPECT_EQ(pixel(0.03, 0.02), 0xFFFFFFu) << "off the path stays white";
+  cairo_surface_destroy(img);
+  std::filesystem::remove(path);
+}
+
 TEST(SnapshotPng, UnwritablePathIsAClearError) {
   World w;
   Material m;

@@ -1,0 +1,148 @@
+# The charts of `talus analyze`, drawn with matplotlib (Debian's python3-matplotlib, Agg backend:
+# no display needed). Compiled into talus; run as: python3 plots.py KIND CSV PNG [JSON].
+import csv
+import json
+import math
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+kind, source, target = sys.argv[1], sys.argv[2], sys.argv[3]
+extra = json.load(open(sys.argv[4])) if len(sys.argv) > 4 else {}
+rows = list(csv.DictReader(open(source)))
+
+
+def col(key, rs=None):
+    return [float(r[key]) for r in (rows if rs is None else rs)]
+
+
+def by_id(rs):
+    out = {}
+    for r in rs:
+        out.setdefault(r["id"], []).append(r)
+    return out
+
+
+if kind == "thermo":
+    t = col("time")
+    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for key, label in [("kinetic_translational", "kinetic, translation"),
+                       ("kinetic_rotational", "kinetic, rotation"), ("elastic", "elastic"),
+                       ("total", "total")]:
+        a.plot(t, col(key), label=label)
+    a.set_ylabel("energy [J]")
+    a.set_yscale("symlog", linthresh=1e-9)
+    a.legend(fontsize=8)
+    b.plot(t, col("coordination"), label="coordination number Z")
+    b.plot(t, col("packing_fraction"), label="packing fraction")
+    b.set_xlabel("time [s]")
+    b.set_ylabel("Z, packing fraction [-]")
+    b.legend(fontsize=8)
+elif kind == "forces":
+    used = [r for r in rows if int(r["count"]) > 0]
+    fig, a = plt.subplots(figsize=(7, 5))
+    a.semilogy(col("f_over_mean", used), col("probability_density", used), "o", ms=4,
+               label=f"{extra['contacts']} contacts")
+    if extra["fit_bins"] >= 3:
+        xs = [extra["fit_from"], extra["fit_to"]]
+        c = extra["intercept"]
+        a.semilogy(xs, [math.exp(c - extra["beta"] * v) for v in xs], "-",
+                   label=f"exp(-beta f/<f>), beta = {extra['beta']:.2f} +- "
+                         f"{extra['beta_error']:.2f}")
+    a.set_xlabel("f / <f> [-]")
+    a.set_ylabel("P(f / <f>) [-]")
+    a.legend()
+elif kind == "profiles":
+    used = [r for r in rows if int(r["samples"]) > 0]
+    x = col("x", used)
+    fig, a = plt.subplots(figsize=(8, 5))
+    a.plot(x, col("speed", used), "o-", label="|v|")
+    a.plot(x, col("vx", used), "s-", label="v_x")
+    a.plot(x, col("vy", used), "^-", label="v_y")
+    a.axhline(0.0, color="grey", lw=0.5)
+    a.set_xlabel("x [m]")
+    a.set_ylabel("mean velocity [m/s]")
+    a.set_title(f"band {extra['band'][0]:.3g} m <= y < {extra['band'][1]:.3g} m, "
+                f"{extra['snapshots']} snapshots")
+    a.legend()
+elif kind == "discharge":
+    t, n = col("time"), col("grains_below")
+    fig, a = plt.subplots(figsize=(8, 5))
+    a.plot(t, n, "o", ms=3, label="grains below the orifice")
+    if extra.get("rate", 0) > 0:
+        t0, t1 = extra["flow_from"], extra["flow_to"]
+        mid_t = 0.5 * (t0 + t1)
+        mid_n = sum(v for s, v in zip(t, n) if t0 <= s <= t1) / max(
+            1, len([s for s in t if t0 <= s <= t1]))
+        a.plot([t0, t1], [mid_n + extra["rate"] * (t0 - mid_t), mid_n + extra["rate"] * (t1 - mid_t)],
+               "-", label=f"fit: {extra['rate']:.1f} grains/s")
+    a.set_xlabel("time [s]")
+    a.set_ylabel("grains [-]")
+    a.legend()
+elif kind == "speed_map":
+    import numpy as np
+    nx, ny = extra["nx"], extra["ny"]
+    v = np.full((ny, nx), np.nan)
+    for r in rows:
+        if int(r["samples"]) > 0:
+            v[int(r["row"]), int(r["column"])] = float(r["mean_speed"])
+    lo, hi, cell = extra["region"][:2], extra["region"][2:], extra["cell"]
+    fig, a = plt.subplots(figsize=(7, 7 * min(2.0, max(0.4, ny / nx))))
+    m = a.imshow(v, origin="lower", cmap="viridis", interpolation="nearest",
+                 extent=[lo[0], lo[0] + nx * cell, lo[1], lo[1] + ny * cell])
+    fig.colorbar(m, ax=a, label="mean |v| [m/s]")
+    a.set_xlabel("x [m]")
+    a.set_ylabel("y [m]")
+    a.set_title(f"mean speed over {extra['snapshots']} snapshots")
+elif kind == "tracks":
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
+    for pid, rs in by_id(rows).items():
+        t = col("time", rs)
+        for a, key in zip(axes.flat, ["x", "y", "vx", "vy"]):
+            a.plot(t, col(key, rs), label=f"id {pid}")
+    for a, label in zip(axes.flat, ["x [m]", "y [m]", "v_x [m/s]", "v_y [m/s]"]):
+        a.set_ylabel(label)
+    axes[1][0].set_xlabel("time [s]")
+    axes[1][1].set_xlabel("time [s]")
+    axes[0][0].legend(fontsize=7)
+elif kind == "segregation":
+    t = col("time")
+    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for k in range(extra["largest"]):
+        a.plot(t, col(f"largest_{k}_height"), label=f"largest grain #{k + 1}")
+    a.plot(t, col("bed_height"), "k--", label="bed height")
+    a.set_ylabel("height above the bed's bottom [m]")
+    a.legend(fontsize=8)
+    b.plot(t, col("index"), label="segregation index")
+    b.axhline(0.0, color="grey", lw=0.5)
+    b.set_xlabel("time [s]")
+    b.set_ylabel("(<h_large> - <h_small>) / H [-]")
+    b.legend(fontsize=8)
+elif kind == "convection":
+    used = [r for r in rows if int(r["samples"]) > 0]
+    fig, a = plt.subplots(figsize=(8, 4.5))
+    a.bar(col("x", used), col("drift", used), width=0.8 * extra["bin_width"])
+    a.axhline(0.0, color="grey", lw=0.5)
+    a.set_xlabel("x [m]")
+    a.set_ylabel("mean vertical drift of small grains [m/s]")
+elif kind == "frost":
+    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for pid, rs in by_id(rows).items():
+        style = "o-" if rs[0]["role"] == "stone" else ".:"
+        label = (f"stone {pid}, R = {1e3 * float(rs[0]['radius']):.2f} mm"
+                 if rs[0]["role"] == "stone" else None)
+        a.plot(col("cycle", rs), col("height", rs), style, label=label)
+    a.set_ylabel("height above the bed's bottom [m]")
+    a.legend(fontsize=8, title="dotted: tracer fines")
+    cycles = sorted({int(r["cycle"]) for r in rows})
+    b.plot(extra["cycles"], extra["sorting_index"], "o-", label="sorting index")
+    b.set_xlabel("freeze-thaw cycle [-]")
+    b.set_ylabel("(<h_stone> - <h_fine>) / H [-]")
+    b.legend(fontsize=8)
+else:
+    sys.exit(f"unknown chart {kind}")
+fig.tight_layout()
+fig.savefig(target, dpi=110)

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every command on the run folder of every built-in scenario (short versions): talus render with
+# chains and tracks, talus movie, talus analyze with its report. New built-ins are picked up from
+# `talus scenarios`; one without a short version here fails the test, so none is left out.
+set -u
+talus="$1"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+fail() { echo "FAIL ($name): $*"; exit 1; }
+for name in $("$talus" scenarios | awk '{print $1}'); do
+  common=(--quiet --out "$dir/$name" --set output.snapshot_interval=0.02 --set output.checkpoint_interval=0)
+  case "$name" in
+    collisions) short=(--set simulation.duration=0.06) ;;
+    drum) short=(--set particles.count=80 --set simulation.duration=0.1 --set packing.settle_max_time=0.1) ;;
+    force_network) short=(--set particles.count=80 --set simulation.duration=0.1) ;;
+    frost_heave) short=(--set particles.count=300 --set simulation.duration=0.08 --set packing.settle_max_time=0.05
+                        --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e3
+                        --set frost.heave_factor=1.02) ;;
+    hourglass) short=(--set particles.count=150 --set simulation.duration=0.1 --set packing.settle_max_time=0.2) ;;
+    silo_shake) short=(--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1) ;;
+    *) fail "no short version in $0" ;;
+  esac
+  "$talus" run "$name" "${common[@]}" "${short[@]}" || fail "run"
+  run="$dir/$name"
+  layers=(--chains)
+  [ -f "$run/track.csv" ] && layers+=(--tracks)
+  "$talus" render "$run" --color force "${layers[@]}" --width 400 > /dev/null || fail "render ${layers[*]}"
+  [ -n "$(ls "$run/pictures")" ] || fail "no picture"
+  if command -v ffmpeg > /dev/null; then
+    "$talus" movie "$run" --width 400 > /dev/null || fail "movie"
+    [ -s "$run/movie.mp4" ] || fail "no movie"
+  fi
+  "$talus" analyze "$run" > "$dir/$name.txt" || { cat "$dir/$name.txt"; fail "analyze"; }
+  grep -q "skipped" "$dir/$name.txt" && grep "skipped" "$dir/$name.txt"
+  [ -s "$run/analysis/report.html" ] || fail "no report.html"
+  [ -s "$run/analysis/profiles.csv" ] || fail "no profiles.csv"
+  [ -f "$run/track.csv" ] && { [ -s "$run/analysis/tracks.csv" ] || fail "no tracks.csv"; }
+  case "$name" in
+    hourglass) [ -s "$run/analysis/discharge.csv" ] || fail "no discharge.csv" ;;
+    silo_shake) [ -s "$run/analysis/segregation.csv" ] || fail "no segregation.csv" ;;
+    frost_heave) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
+                 [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;
+  esac
+  if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+    grep -q "data:image/png;base64" "$run/analysis/report.html" || fail "report without charts"
+  fi
+  echo "$name: render, movie, analyze and report.html"
+done
