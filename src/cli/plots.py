@@ -86,8 +86,10 @@ elif kind == "speed_map":
     import numpy as np
     nx, ny = extra["nx"], extra["ny"]
     v = np.full((ny, nx), np.nan)
+    counts = sorted(int(r["samples"]) for r in rows if int(r["samples"]) > 0)
+    least = max(3, 0.05 * counts[len(counts) // 2]) if counts else 1  # rarely visited: blank
     for r in rows:
-        if int(r["samples"]) > 0:
+        if int(r["samples"]) >= least:
             v[int(r["row"]), int(r["column"])] = float(r["mean_speed"])
     lo, hi, cell = extra["region"][:2], extra["region"][2:], extra["cell"]
     fig, a = plt.subplots(figsize=(7, 7 * min(2.0, max(0.4, ny / nx))))
@@ -96,7 +98,7 @@ elif kind == "speed_map":
     fig.colorbar(m, ax=a, label="mean |v| [m/s]")
     a.set_xlabel("x [m]")
     a.set_ylabel("y [m]")
-    a.set_title(f"mean speed over {extra['snapshots']} snapshots")
+    a.set_title(f"mean speed over {extra['snapshots']} snapshots (blank: rarely visited)")
 elif kind == "tracks":
     fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
     for pid, rs in by_id(rows).items():
