@@ -8,7 +8,7 @@ trap 'rm -rf "$dir"' EXIT
 "$talus" run drum --quiet --out "$dir/run" --set particles.count=60 --set simulation.duration=0.2 \
   --set output.snapshot_interval=0.05 --set packing.settle_max_time=0.05 || exit 1
 "$talus" render "$dir/run" --color size --frames all --width 640 || exit 1
-n=$(ls "$dir/run/pictures" | wc -l)
+n=$(ls "$dir/run/pictures"/size_*.png | wc -l)
 [ "$n" -eq 5 ] || { echo "expected 5 pictures, got $n"; exit 1; }
 "$talus" render "$dir/run" --frames 99 2> "$dir/err.txt" && { echo "a missing frame was accepted"; exit 1; }
 grep -q "snapshots 0 to 4" "$dir/err.txt" || { echo "unclear error: $(cat "$dir/err.txt")"; exit 1; }
