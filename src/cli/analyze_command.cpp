@@ -42,8 +42,11 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     attempt("forces", [&] { return analyze_forces(run, o); });
     attempt("profiles", [&] { return analyze_profiles(run, o); });
     const Scenario& s = run.scenario();
-    if (s.simulation.gravity != Vec2{0.0, 0.0} && s.frost.model == "none")
-      attempt("segregation", [&] { return analyze_segregation(run, o); });
+    // segregation: grains of mixed sizes driven by shaking or turning
+    bool driven = false;
+    for (const DriverSection& d : s.drivers) driven = driven || d.type == "vibrate";
+    driven = driven || s.geometry.builder == "drum";
+    if (driven) attempt("segregation", [&] { return analyze_segregation(run, o); });
     if (fs::exists(run.dir() / "frost.csv")) attempt("frost", [&] { return analyze_frost(run); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });

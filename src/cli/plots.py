@@ -93,7 +93,12 @@ elif kind == "speed_map":
             v[int(r["row"]), int(r["column"])] = float(r["mean_speed"])
     lo, hi, cell = extra["region"][:2], extra["region"][2:], extra["cell"]
     fig, a = plt.subplots(figsize=(7, 7 * min(2.0, max(0.4, ny / nx))))
-    m = a.imshow(v, origin="lower", cmap="viridis", interpolation="nearest",
+    # a logarithmic scale: slow creep and stagnant zones stay visible beside free fall
+    from matplotlib.colors import LogNorm
+    top = np.nanmax(v) if np.isfinite(v).any() else 1.0
+    top = top if top > 0 else 1.0
+    m = a.imshow(np.clip(v, top * 1e-3, None), origin="lower", cmap="viridis",
+                 interpolation="nearest", norm=LogNorm(vmin=top * 1e-3, vmax=top),
                  extent=[lo[0], lo[0] + nx * cell, lo[1], lo[1] + ny * cell])
     fig.colorbar(m, ax=a, label="mean |v| [m/s]")
     a.set_xlabel("x [m]")
