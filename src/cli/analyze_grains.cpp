@@ -37,9 +37,10 @@ std::vector<double> freeze_times(const fs::path& file) {
     std::istringstream row(line);
     double cycle = 0, t = 0;
     char comma = 0;
-    if (!(row >> cycle >> comma >> t))
+    std::string event;
+    if (!(row >> cycle >> comma >> t >> comma >> event))
       throw InvalidArgument(fmt::format("{}:{}: malformed row", file.string(), n));
-    out.push_back(t);
+    if (event == "freeze" || event == "end") out.push_back(t); // the bed at rest
   }
   return out;
 }
@@ -133,17 +134,23 @@ Section analyze_frost(RunData& run) {
                          csv_number(c.fine_height[k][f]));
   }
   write_file_atomically((out / "frost.csv").string(), csv);
-  std::string cycles = "[", index = "[", rise = "[";
-  for (std::size_t k = 0; k < c.time.size(); ++k)
-    cycles += fmt::format("{}{}", k ? ", " : "", k),
-        index += fmt::format("{}{}", k ? ", " : "", number(c.sorting_index[k]));
+  std::string cycles = "[", index = "[", cover = "[", rise = "[";
+  for (std::size_t k = 0; k < c.time.size(); ++k) {
+    const char* sep = k ? ", " : "";
+    cycles += fmt::format("{}{}", sep, k);
+    index += fmt::format("{}{}", sep, number(c.sorting_index[k]));
+    cover += fmt::format("{}{}", sep, number(c.surface_cover[k]));
+  }
   for (std::size_t s = 0; s < c.stones.size(); ++s)
-    rise += fmt::format("{}{{\"id\": {}, \"radius\": {}, \"rise_per_cycle\": {}}}", s ? ", " : "",
-                        c.stones[s], number(c.stone_size[s]), number(c.rise_per_cycle[s]));
-  write_file_atomically((out / "frost.json").string(),
-                        fmt::format("{{\"freezes\": {}, \"stone_radius\": {}, \"cycles\": {}], "
-                                    "\"sorting_index\": {}], \"stones\": {}]}}\n",
-                                    freezes.size(), number(c.stone_radius), cycles, index, rise));
+    rise += fmt::format("{}{{\"id\": {}, \"radius\": {}, \"start_depth\": {}, "
+                        "\"rise_per_cycle\": {}}}",
+                        s ? ", " : "", c.stones[s], number(c.stone_size[s]),
+                        number(c.start_depth[s]), number(c.rise_per_cycle[s]));
+  write_file_atomically(
+      (out / "frost.json").string(),
+      fmt::format("{{\"freezes\": {}, \"stone_radius\": {}, \"cycles\": {}], "
+                  "\"sorting_index\": {}], \"surface_cover\": {}], \"stones\": {}]}}\n",
+                  freezes.size(), number(c.stone_radius), cycles, index, cover, rise));
   Section s{"Frost heave, cycle by cycle", {}, {}, {}};
   s.summary = fmt::format(
       "{} freezes (frost.csv). Heights of the stones (R >= {:.3g} mm) and of {} tracer fines just "

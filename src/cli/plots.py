@@ -136,7 +136,7 @@ elif kind == "convection":
     a.set_xlabel("x [m]")
     a.set_ylabel("mean vertical drift of small grains [m/s]")
 elif kind == "frost":
-    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 10))
     for pid, rs in by_id(rows).items():
         style = "o-" if rs[0]["role"] == "stone" else ".:"
         label = (f"stone {pid}, R = {1e3 * float(rs[0]['radius']):.2f} mm"
@@ -145,10 +145,19 @@ elif kind == "frost":
     a.set_ylabel("height above the bed's bottom [m]")
     a.legend(fontsize=8, title="dotted: tracer fines")
     cycles = sorted({int(r["cycle"]) for r in rows})
+    a.set_xlabel("freeze-thaw cycle [-]")
     b.plot(extra["cycles"], extra["sorting_index"], "o-", label="sorting index")
+    b.plot(extra["cycles"], extra["surface_cover"], "s-", label="surface stone cover")
     b.set_xlabel("freeze-thaw cycle [-]")
-    b.set_ylabel("(<h_stone> - <h_fine>) / H [-]")
+    b.set_ylabel("sorting index, cover [-]")
     b.legend(fontsize=8)
+    st = extra["stones"]
+    sc = c.scatter([1e3 * s["radius"] for s in st], [1e3 * s["rise_per_cycle"] for s in st],
+                   c=[1e3 * s["start_depth"] for s in st], cmap="viridis")
+    fig.colorbar(sc, ax=c, label="top depth at the start [mm]")
+    c.axhline(0.0, color="grey", lw=0.5)
+    c.set_xlabel("stone radius [mm]")
+    c.set_ylabel("rise per cycle [mm]")
 else:
     sys.exit(f"unknown chart {kind}")
 fig.tight_layout()

@@ -91,7 +91,9 @@ void add_run_command(CLI::App& app) {
                  s.description.empty() ? "(no description)" : s.description);
     BuiltScenario built;
     try {
-      built = build_scenario(s, [&](double t, double ke) {
+      Scenario settle = s; // --threads applies to the settling too
+      if (o->run.threads >= 0) settle.simulation.threads = o->run.threads;
+      built = build_scenario(settle, [&](double t, double ke) {
         if (o->run.quiet) return;
         fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
         std::fflush(stdout);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "io/thesis_format.hpp"
 #include "io/vtk.hpp"
 #include "render/snapshot_png.hpp"
+#include "scenario/frost_setup.hpp"
 #include "scenario/load.hpp"
 
 namespace fs = std::filesystem;
@@ -35,6 +37,8 @@ std::string RunBook::encode() const {
     << fill.hi.y << "\nbounds " << bounds.lo.x << " " << bounds.lo.y << " " << bounds.hi.x << " "
     << bounds.hi.y << "\ntracked";
   for (const auto t : tracked) o << " " << t;
+  o << "\nfront_state " << front_state.size();
+  for (const double v : front_state) o << " " << v;
   o << "\n";
   for (const auto& [name, g] : groups) {
     o << "group " << name << " " << g.particles.size();
@@ -74,7 +78,12 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
     else if (key == "bounds")
       l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
-    else if (key == "tracked") {
+    else if (key == "front_state") {
+      std::size_t n = 0;
+      l >> n;
+      b.front_state.resize(n);
+      for (double& v : b.front_state) l >> v;
+    } else if (key == "tracked") {
       for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
     } else if (key == "group") {
       std::string name;
@@ -117,6 +126,13 @@ public:
     track_every_ = std::max<std::uint64_t>(1, every(s.output.track_interval, dt));
     checkpoint_every_ = every(s.output.checkpoint_interval, dt);
     tty_ = !o.quiet && ::isatty(STDERR_FILENO);
+    if (s.frost.model == "front") {
+      front_.emplace(front_parameters(s.frost, sim_.world().particles, book_.bounds));
+      if (!book_.front_state.empty())
+        front_->load(book_.front_state, sim_.world().particles.size());
+      const double phase = std::min(s.frost.freeze_time, s.frost.thaw_time);
+      front_every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(phase / 1000.0 / dt));
+    }
     for (std::size_t i = 0; i < sim_.world().particles.size(); ++i)
       if (sim_.world().particles.is_free(i))
         weight_scale_ += sim_.world().particles.mass[i] * norm(sim_.world().gravity) *
@@ -178,6 +194,25 @@ public:
             ended = "cycles";
             break;
           }
+        }
+        if (front_ && front_->phase() == FrostFront::Phase::idle && at_rest()) {
+          if (s_.frost.cycles > 0 && book_.freezes >= s_.frost.cycles) {
+            log_frost("end");
+            ended = "cycles";
+            break;
+          }
+          front_->start_freeze(sim_);
+          ++book_.freezes;
+          log_frost("freeze");
+        }
+      }
+      if (front_ && front_->phase() != FrostFront::Phase::idle && k % front_every_ == 0 &&
+          front_->advance(sim_)) {
+        if (front_->phase() == FrostFront::Phase::thawing) {
+          log_frost("thaw");
+        } else {
+          book_.last_freeze = sim_.time(); // the next cycle waits min_interval after the thaw
+          log_frost("thawed");
         }
       }
       if (snapshot_every_ && k % snapshot_every_ == 0) {
@@ -282,19 +317,33 @@ private:
     write_file_atomically((dir_ / "contacts.pvd").string(), pvd_collection(contacts));
   }
 
+  // The grains are at rest and the last freeze (or thaw) is at least min_interval ago.
+  bool at_rest() {
+    weight_scale_ = 0.0; // sum of m g R over the free grains (a frost may have held some)
+    const Particles& p = sim_.world().particles;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.is_free(i)) weight_scale_ += p.mass[i] * norm(sim_.world().gravity) * p.radius[i];
+    return last_kinetic_ < s_.frost.kinetic_threshold * weight_scale_ &&
+           sim_.time() - book_.last_freeze >= s_.frost.min_interval;
+  }
+
+  void log_frost(const char* event) {
+    frost_ << fmt::format("{},{:.9g},{}\n", book_.freezes, sim_.time(), event);
+    if (!o_.quiet && !tty_)
+      fmt::print("frost: {} {} at t = {:.6g} s\n", event, book_.freezes, sim_.time());
+  }
+
   // The thesis' freeze (sec. 5.2): when the grains have come to rest, every free grain's height
   // above the floor is multiplied by the heave factor. Returns true when it froze.
   bool freeze() {
-    if (last_kinetic_ >= s_.frost.kinetic_threshold * weight_scale_) return false;
-    if (sim_.time() - book_.last_freeze < s_.frost.min_interval) return false;
+    if (!at_rest()) return false;
     Particles& p = sim_.world().particles;
     const double floor = book_.bounds.lo.y;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.is_free(i)) p.position[i].y = floor + (p.position[i].y - floor) * s_.frost.heave_factor;
     ++book_.freezes;
     book_.last_freeze = sim_.time();
-    frost_ << fmt::format("{},{:.9g},freeze\n", book_.freezes, sim_.time());
-    if (!o_.quiet && !tty_) fmt::print("freeze {} at t = {:.6g} s\n", book_.freezes, sim_.time());
+    log_frost("freeze");
     return true;
   }
 
@@ -319,6 +368,7 @@ private:
     for (const char* name : {"thermo.csv", "track.csv", "run.out", "frost.csv"})
       if (fs::exists(dir_ / name)) book_.file_bytes[name] = fs::file_size(dir_ / name);
     book_.wall_seconds = wall;
+    if (front_) book_.front_state = front_->save();
     Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
     const fs::path latest = dir_ / "checkpoint.bin", previous = dir_ / "checkpoint.prev.bin";
     if (fs::exists(latest)) fs::rename(latest, previous);
@@ -382,6 +432,8 @@ private:
   std::uint64_t total_ = 0, stop_ = 0;
   std::uint64_t thermo_every_ = 1, snapshot_every_ = 0, track_every_ = 1, checkpoint_every_ = 0;
   std::ofstream thermo_, track_, out_, frost_;
+  std::optional<FrostFront> front_;
+  std::uint64_t front_every_ = 1;
   bool tty_ = false, printed_ = false;
   double next_report_ = 0.1;
   double weight_scale_ = 0.0, last_kinetic_ = 0.0;

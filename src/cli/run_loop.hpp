@@ -15,7 +15,8 @@ struct RunBook {
   std::map<std::string, std::uint64_t> file_bytes; ///< output files' sizes at the checkpoint
   std::uint64_t snapshots = 0;                     ///< snapshots written
   std::uint64_t freezes = 0;                       ///< frost: freezes done
-  double last_freeze = 0.0;                        ///< s
+  double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
+  std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
   double wall_seconds = 0.0;                       ///< wall time spent so far
   double settle_time = 0.0;
   double collision_time = 0.0;

@@ -38,7 +38,8 @@ FrostCycles frost_cycles(const std::vector<Frame>& frames, const std::vector<dou
   for (std::size_t k = 0; k < nf; ++k) // evenly from the bottom (k = 0) to the top
     c.fines.push_back(fines[nf > 1 ? k * (fines.size() - 1) / (nf - 1) : 0].second);
 
-  std::vector<std::size_t> picks{0};
+  std::vector<std::size_t> picks; // the bed at rest before each freeze (and at the end)
+  if (freeze_times.empty()) picks.push_back(0);
   for (const double t : freeze_times) {
     std::size_t best = 0;
     for (std::size_t k = 0; k < frames.size(); ++k)
@@ -76,6 +77,31 @@ FrostCycles frost_cycles(const std::vector<Frame>& frames, const std::vector<dou
       else
         mf += h, ++n_f;
     }
+    // stones at the surface: the top of the fines is their 95th percentile of y + R
+    std::vector<double> fine_tops;
+    double x0 = std::numeric_limits<double>::max(), x1 = -x0;
+    for (std::size_t i = 0; i < f.id.size(); ++i)
+      if (f.kind[i] == 0) {
+        x0 = std::min(x0, f.position[i].x - f.radius[i]);
+        x1 = std::max(x1, f.position[i].x + f.radius[i]);
+        if (f.radius[i] < c.stone_radius) fine_tops.push_back(f.position[i].y + f.radius[i]);
+      }
+    std::sort(fine_tops.begin(), fine_tops.end());
+    const double fine_top = fine_tops.empty() ? top : fine_tops[fine_tops.size() * 95 / 100];
+    const double d_fine = 2.0 * sorted[sorted.size() / 2];
+    double cover = 0.0;
+    for (std::size_t i = 0; i < f.id.size(); ++i)
+      if (f.kind[i] == 0 && f.radius[i] >= c.stone_radius &&
+          f.position[i].y + f.radius[i] >= fine_top - 2.0 * d_fine)
+        cover += 2.0 * f.radius[i];
+    c.surface_cover.push_back(x1 > x0 ? cover / (x1 - x0) : 0.0);
+    if (c.time.size() == 1)
+      for (const auto id : c.stones) {
+        const auto it = at.find(id);
+        c.start_depth.push_back(it == at.end()
+                                    ? std::nan("")
+                                    : fine_top - f.position[it->second].y - f.radius[it->second]);
+      }
     c.sorting_index.push_back(ns && n_f && top > bottom
                                   ? (ms / static_cast<double>(ns) - mf / static_cast<double>(n_f)) /
                                         (top - bottom)

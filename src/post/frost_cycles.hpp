@@ -21,10 +21,15 @@ struct FrostCycles {
   /// (mean stone height - mean fine height) / bed height, per cycle
   std::vector<double> sorting_index;
   std::vector<double> rise_per_cycle; ///< per stone: least-squares slope of height, m per cycle
+  std::vector<double> start_depth;    ///< per stone: its top below the bed's top at the start, m
+  /// Share of the bed's width covered by stones at the surface (their top within two median
+  /// fine diameters of the bed's top), per cycle
+  std::vector<double> surface_cover;
 };
 
-/// `freeze_times` from frost.csv; the frames in time order. Cycle 0 is the first frame, cycle c
-/// the last frame before freeze c (snapshots at the freeze itself already show the heave).
+/// `freeze_times` from frost.csv (the freezes, then the run's end if it logged one); the frames
+/// in time order. Sample c is the last frame before time c: the bed at rest after c cycles
+/// (a snapshot at the freeze itself may already show the heave). No times: the first frame.
 FrostCycles frost_cycles(const std::vector<Frame>& frames, const std::vector<double>& freeze_times,
                          std::size_t tracer_fines = 8);
 

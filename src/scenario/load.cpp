@@ -239,11 +239,27 @@ void read_output(TableReader& r, OutputSection& o) {
 }
 
 void read_frost(TableReader& r, FrostSection& f) {
-  f.model = r.choice("model", f.model, {"none", "uniform"});
+  f.model = r.choice("model", f.model, {"none", "uniform", "front"});
   f.heave_factor = r.number("heave_factor", f.heave_factor, 1.0, 100.0, "[1, 100]");
   f.kinetic_threshold = r.number("kinetic_threshold", f.kinetic_threshold, 0.0, inf, ">= 0 J");
   f.min_interval = r.number("min_interval", f.min_interval, 0.0, inf, ">= 0 s");
   f.cycles = static_cast<std::size_t>(r.integer("cycles", 0, 0, 1'000'000));
+  f.permafrost_depth = r.number("permafrost_depth", f.permafrost_depth, 0.0, inf, ">= 0 m");
+  if (f.model == "front" && !(f.permafrost_depth > 0.0))
+    r.fail("permafrost_depth", "the front model needs the depth the front stops at: > 0 m");
+  f.heave_strain = r.number("heave_strain", f.heave_strain, 0.0, 1.0, "0 to 1");
+  f.conductivity_ratio = r.number("conductivity_ratio", f.conductivity_ratio, 1e-3, 1e3,
+                                  "1e-3 to 1e3 (stone / soil; 1: no contrast)");
+  f.stone_water = r.number("stone_water", f.stone_water, 0.0, 1e3,
+                           "0 to 1e3 (stone / soil latent heat per volume; 0: dry stones)");
+  f.crust_length = r.number("crust_length", f.crust_length, 0.0, inf, ">= 0 m (0: column width)");
+  f.column_width =
+      r.number("column_width", f.column_width, 0.0, inf, ">= 0 m (0: largest stone's diameter)");
+  f.stone_radius =
+      r.number("stone_radius", f.stone_radius, 0.0, inf, ">= 0 m (0: 1.5 x the median radius)");
+  f.freeze_time = r.number("freeze_time", f.freeze_time, 1e-9, inf, "> 0 s");
+  f.thaw_time = r.number("thaw_time", f.thaw_time, 1e-9, inf, "> 0 s");
+  f.frost_pull = r.boolean("frost_pull", f.frost_pull);
 }
 
 // Reads the table at `name` (if present) with `read`, then rejects any key it did not read.

@@ -146,7 +146,17 @@ std::string to_toml(const Scenario& s) {
                                    {"heave_factor", f.heave_factor},
                                    {"kinetic_threshold", f.kinetic_threshold},
                                    {"min_interval", f.min_interval},
-                                   {"cycles", static_cast<std::int64_t>(f.cycles)}});
+                                   {"cycles", static_cast<std::int64_t>(f.cycles)},
+                                   {"permafrost_depth", f.permafrost_depth},
+                                   {"heave_strain", f.heave_strain},
+                                   {"conductivity_ratio", f.conductivity_ratio},
+                                   {"stone_water", f.stone_water},
+                                   {"crust_length", f.crust_length},
+                                   {"column_width", f.column_width},
+                                   {"stone_radius", f.stone_radius},
+                                   {"freeze_time", f.freeze_time},
+                                   {"thaw_time", f.thaw_time},
+                                   {"frost_pull", f.frost_pull}});
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";

@@ -125,15 +125,28 @@ struct OutputSection {
   std::string movie_color = "speed"; ///< the movie's colour field
 };
 
-/// The thesis' freeze-thaw rule (sec. 5.2): whenever the kinetic energy falls below a threshold
-/// and at least min_interval has passed since the last freeze, every free grain's height above
-/// the floor is multiplied by heave_factor.
+/// Frost heave. "uniform": the thesis' rule (sec. 5.2): whenever the kinetic energy falls below
+/// kinetic_threshold x sum(m g R) and at least min_interval has passed since the last freeze,
+/// every free grain's height above the floor is multiplied by heave_factor. "front": a freezing
+/// front descends column by column and heaves the frozen crust, then a thaw front releases it
+/// (frost/frost_front.hpp); a cycle starts when the grains are at rest, as above.
 struct FrostSection {
-  std::string model = "none"; ///< none | uniform
+  std::string model = "none"; ///< none | uniform | front
   double heave_factor = 1.5;
-  double kinetic_threshold = 1.0e-6; ///< J
+  double kinetic_threshold = 1.0e-6; ///< x sum(m g R) of the free grains
   double min_interval = 0.05;        ///< s
-  std::size_t cycles = 0;            ///< stop after this many freezes (0: run to duration)
+  std::size_t cycles = 0;            ///< stop after this many cycles (0: run to duration)
+  // the front model
+  double permafrost_depth = 0.0;   ///< m below the surface
+  double heave_strain = 0.1;       ///< heave per unit depth of frozen fines
+  double conductivity_ratio = 3.0; ///< stone / soil
+  double stone_water = 0.0;        ///< stone / soil latent heat per volume
+  double crust_length = 0.0;       ///< m (0: the column width)
+  double column_width = 0.0;       ///< m (0: the largest stone's diameter)
+  double stone_radius = 0.0;       ///< m (0: 1.5 x the median radius)
+  double freeze_time = 0.5;        ///< s
+  double thaw_time = 0.5;          ///< s
+  bool frost_pull = true;          ///< stones are released when their lowest point thaws
 };
 
 struct Scenario {

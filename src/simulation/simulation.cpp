@@ -67,6 +67,10 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
   for (const Driver& d : world_.drivers)
     driven_.insert(driven_.end(), d.targets.particles.begin(), d.targets.particles.end());
+  for (std::size_t i = 0; i < world_.particles.size(); ++i) // held by an outside model
+    if (world_.particles.kind[i] == Kind::moved &&
+        std::find(driven_.begin(), driven_.end(), i) == driven_.end())
+      driven_.push_back(static_cast<std::uint32_t>(i));
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
@@ -95,6 +99,12 @@ void Simulation::step() {
                                                       : verlet_predict(p, dt, threads_, drift);
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
+  if (driven_stale_) { // every moved particle: the drivers' and the held ones
+    driven_.clear();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.kind[i] == Kind::moved) driven_.push_back(static_cast<std::uint32_t>(i));
+    driven_stale_ = false;
+  }
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
   compute_forces();
@@ -104,6 +114,20 @@ void Simulation::step() {
   ++steps_;
   time_ = t_next;
   guard();
+}
+
+void Simulation::hold(std::uint32_t i, bool held) {
+  require(i < world_.particles.size(), "hold: no particle " + std::to_string(i));
+  require(world_.particles.kind[i] != Kind::fixed,
+          "hold: particle " + std::to_string(i) + " is a fixed wall particle");
+  world_.particles.set_held(i, held);
+  driven_stale_ = true;
+}
+
+void Simulation::displace_held(std::uint32_t i, Vec2 d) {
+  if (i >= world_.particles.size() || world_.particles.kind[i] != Kind::moved)
+    throw std::logic_error("displace_held: particle " + std::to_string(i) + " is not held");
+  world_.particles.position[i] += d;
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,

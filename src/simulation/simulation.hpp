@@ -75,6 +75,12 @@ public:
   const PairTable& pairs() const { return pairs_; }
   const NeighbourList& neighbours() const { return list_; }
   int threads() const { return threads_; }
+  /// Between steps, for a model that holds grains in place (frost): holds particle i at rest
+  /// (not integrated; free grains still feel it) or frees it. Its drift is then checked against
+  /// the neighbour list like a driven particle's.
+  void hold(std::uint32_t i, bool held);
+  /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
+  void displace_held(std::uint32_t i, Vec2 d);
   /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
@@ -94,7 +100,8 @@ private:
   int threads_ = 1;
   double max_overlap_seen_ = 0.0;     ///< largest overlap / smaller radius in the last force stage
   bool finite_ = true;                ///< every position and velocity finite after the last step
-  std::vector<std::uint32_t> driven_; ///< particles moved by drivers (their drift is checked)
+  std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
+  bool driven_stale_ = false;         ///< a particle was held or freed since driven_ was listed
   std::uint32_t worst_pair_[2] = {0, 0};
 };
 

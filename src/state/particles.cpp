@@ -81,4 +81,17 @@ std::size_t Particles::add(const ParticleSpec& s) {
   return size() - 1;
 }
 
+void Particles::set_held(std::size_t i, bool held) {
+  kind[i] = held ? Kind::moved : Kind::free;
+  inv_mass[i] = held ? 0.0 : 1.0 / mass[i];
+  inv_inertia[i] = held ? 0.0 : 1.0 / inertia[i];
+  velocity[i] = {};
+  angular_velocity[i] = 0.0;
+  if (!gear.empty()) {
+    gear.r2[i] = gear.r3[i] = gear.r4[i] = {};
+    gear.phi2[i] = gear.phi3[i] = gear.phi4[i] = 0.0;
+  }
+  if (i < force_previous.size()) force_previous[i] = {}, torque_previous[i] = 0.0;
+}
+
 } // namespace talus

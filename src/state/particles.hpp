@@ -72,6 +72,10 @@ struct Particles {
   double max_radius() const;
   double min_radius() const;
 
+  /// Holds particle i (Kind::moved: placed by an outside model, such as frost, not integrated)
+  /// or frees it (Kind::free). Either way it is left at rest, with no integrator history.
+  void set_held(std::size_t i, bool held);
+
   /// Appends a particle with mass and inertia already resolved (> 0). Returns its index.
   std::size_t add(const ParticleSpec& spec);
   void reserve(std::size_t n);

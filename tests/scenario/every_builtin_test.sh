@@ -16,6 +16,9 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     frost_heave) short=(--set particles.count=300 --set simulation.duration=0.08 --set packing.settle_max_time=0.05
                         --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e3
                         --set frost.heave_factor=1.02) ;;
+    frost_front) short=(--set particles.count=200 --set simulation.duration=0.6 --set packing.settle_max_time=0.1
+                        --set frost.freeze_time=0.1 --set frost.thaw_time=0.1 --set frost.heave_strain=0.1
+                        --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e-1 --set frost.cycles=1) ;;
     hourglass) short=(--set particles.count=150 --set simulation.duration=0.1 --set packing.settle_max_time=0.2) ;;
     silo_shake) short=(--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1) ;;
     *) fail "no short version in $0" ;;
@@ -38,7 +41,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
   case "$name" in
     hourglass) [ -s "$run/analysis/discharge.csv" ] || fail "no discharge.csv" ;;
     silo_shake) [ -s "$run/analysis/segregation.csv" ] || fail "no segregation.csv" ;;
-    frost_heave) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
+    frost_heave|frost_front) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
                  [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;
   esac
   if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then

@@ -121,14 +121,17 @@ TEST(FrostCycles, StoneHeightJustBeforeEachFreezeAndItsRisePerCycle) {
     add(f, 42, {0.02, 0.005 + lift}, 0.004);
     frames.push_back(f);
   }
-  const FrostCycles c = frost_cycles(frames, {0.05, 0.10}, 3);
+  const FrostCycles c = frost_cycles(frames, {0.05, 0.10, 0.121}, 3); // two freezes, the end
   ASSERT_EQ(c.stones.size(), 1u);
   EXPECT_EQ(c.stones[0], 42u);
   EXPECT_EQ(c.fines.size(), 3u);
   ASSERT_EQ(c.time.size(), 3u);
-  EXPECT_NEAR(c.time[1], 0.04, 1e-12); // the snapshot at 0.05 s already shows the heave
-  EXPECT_NEAR(c.stone_height[2][0] - c.stone_height[0][0], 1e-3, 1e-12);
-  EXPECT_NEAR(c.rise_per_cycle[0], 0.5e-3, 1e-12);
+  EXPECT_NEAR(c.time[0], 0.04, 1e-12); // the snapshot at 0.05 s already shows the heave
+  EXPECT_NEAR(c.time[2], 0.12, 1e-12);
+  EXPECT_NEAR(c.stone_height[2][0] - c.stone_height[0][0], 2e-3, 1e-12);
+  EXPECT_NEAR(c.rise_per_cycle[0], 1e-3, 1e-12);
+  EXPECT_NEAR(c.start_depth[0], -0.007, 1e-12); // sticks out 7 mm above the fines (top 2 mm)
+  EXPECT_GT(c.surface_cover[0], 0.0);
   EXPECT_GT(c.sorting_index[0], 0.0);
 }
 

@@ -1,0 +1,263 @@
+#include "frost/frost_front.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/error.hpp"
+
+namespace talus {
+
+namespace {
+
+constexpr std::size_t slices_per_depth = 200; // Stefan table resolution: D / 200
+
+// Area of a disk of radius r centred at height yc between heights ya < yb.
+double disk_area_between(double yc, double r, double ya, double yb) {
+  const auto primitive = [&](double y) {
+    const double s = std::clamp((y - yc) / r, -1.0, 1.0);
+    return r * r * (s * std::sqrt(1.0 - s * s) + std::asin(s));
+  };
+  return primitive(yb) - primitive(ya);
+}
+
+} // namespace
+
+void check(const FrostFrontParameters& p) {
+  const auto need = [](bool ok, const char* key, const char* allowed) {
+    if (!ok) throw InvalidArgument(std::string("frost.") + key + ": allowed: " + allowed);
+  };
+  need(p.permafrost_depth > 0.0, "permafrost_depth", "> 0 m (the front model needs it)");
+  need(p.heave_strain >= 0.0 && p.heave_strain <= 1.0, "heave_strain", "0 to 1");
+  need(p.conductivity_ratio >= 1e-3 && p.conductivity_ratio <= 1e3, "conductivity_ratio",
+       "1e-3 to 1e3 (stone / soil; 1: no contrast)");
+  need(p.stone_water >= 0.0 && p.stone_water <= 1e3, "stone_water",
+       "0 to 1e3 (stone / soil latent heat per volume; 0: dry stones)");
+  need(p.crust_length >= 0.0, "crust_length", ">= 0 m (0: no smoothing)");
+  need(p.column_width > 0.0, "column_width", "> 0 m");
+  need(p.stone_radius > 0.0, "stone_radius", "> 0 m");
+  need(p.freeze_time > 0.0, "freeze_time", "> 0 s");
+  need(p.thaw_time > 0.0, "thaw_time", "> 0 s");
+  need(p.x_max > p.x_min, "columns", "a bed of positive width");
+}
+
+FrostFront::FrostFront(FrostFrontParameters p) : p_(p) {
+  check(p_);
+  const auto n = static_cast<std::size_t>(
+      std::max(1.0, std::ceil((p_.x_max - p_.x_min) / p_.column_width - 1e-9)));
+  surface_.assign(n, 0.0);
+  front_.assign(n, 0.0);
+  heave_.assign(n, 0.0);
+}
+
+std::size_t FrostFront::column_of(double x) const {
+  const double u = (x - p_.x_min) / p_.column_width;
+  if (!(u > 0.0)) return 0;
+  return std::min(surface_.size() - 1, static_cast<std::size_t>(u));
+}
+
+bool FrostFront::is_stone(const Particles& p, std::size_t i) const {
+  return p.radius[i] >= p_.stone_radius;
+}
+
+std::size_t FrostFront::frozen_count() const {
+  return static_cast<std::size_t>(std::count(frozen_.begin(), frozen_.end(), 1));
+}
+
+void FrostFront::start_freeze(const Simulation& sim) {
+  const Particles& p = sim.world().particles;
+  const std::size_t n = surface_.size();
+  frozen_.assign(p.size(), 0);
+  // each column's surface: the top of its highest free fine (a stone sticking out does not
+  // count; a column without fines: the bed's top)
+  double top = -1e300;
+  std::vector<double> surface(n, -1e300);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i) && !is_stone(p, i)) {
+      const double y = p.position[i].y + p.radius[i];
+      top = std::max(top, y);
+      double& s = surface[column_of(p.position[i].x)];
+      s = std::max(s, y);
+    }
+  if (top == -1e300) throw InvalidArgument("frost: there are no free grains to freeze");
+  for (auto& s : surface)
+    if (s == -1e300) s = top;
+  surface_ = surface;
+  // the columns' make-up in slices below their surface: the fine share of the solids
+  const double depth = p_.permafrost_depth;
+  dz_ = depth / static_cast<double>(slices_per_depth);
+  std::vector<std::vector<double>> stone(n, std::vector<double>(slices_per_depth, 0.0)),
+      fine(n, std::vector<double>(slices_per_depth, 0.0));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i)) continue;
+    const std::size_t c = column_of(p.position[i].x);
+    const double r = p.radius[i], y = p.position[i].y;
+    const double z_top = surface_[c] - (y + r), z_bottom = surface_[c] - (y - r);
+    const auto k0 = static_cast<std::ptrdiff_t>(std::floor(z_top / dz_));
+    const auto k1 = static_cast<std::ptrdiff_t>(std::floor(z_bottom / dz_));
+    for (std::ptrdiff_t k = std::max<std::ptrdiff_t>(0, k0);
+         k <= std::min<std::ptrdiff_t>(k1, slices_per_depth - 1); ++k) {
+      const double ya = surface_[c] - static_cast<double>(k + 1) * dz_, yb = ya + dz_;
+      (is_stone(p, i) ? stone : fine)[c][static_cast<std::size_t>(k)] +=
+          disk_area_between(y, r, ya, yb);
+    }
+  }
+  // layered Stefan: the front needs (latent heat in the slice) x (thermal resistance above it);
+  // stones hold no water and conduct conductivity_ratio times better than fines. In units where
+  // a column of pure fines reaches depth z at time z^2 / 2.
+  time_.assign(n, std::vector<double>(slices_per_depth + 1, 0.0));
+  fines_.assign(n, std::vector<double>(slices_per_depth, 1.0));
+  for (std::size_t c = 0; c < n; ++c) {
+    double resistance = 0.0;
+    for (std::size_t k = 0; k < slices_per_depth; ++k) {
+      const double solids = stone[c][k] + fine[c][k];
+      const double f = solids > 0.0 ? fine[c][k] / solids : 1.0;
+      const double conductivity = f + p_.conductivity_ratio * (1.0 - f);
+      const double latent = f + p_.stone_water * (1.0 - f);
+      fines_[c][k] = f;
+      time_[c][k + 1] = time_[c][k] + latent * (resistance + 0.5 * dz_ / conductivity) * dz_;
+      resistance += dz_ / conductivity;
+    }
+  }
+  std::fill(front_.begin(), front_.end(), 0.0);
+  std::fill(heave_.begin(), heave_.end(), 0.0);
+  phase_ = Phase::freezing;
+  phase_start_ = sim.time();
+}
+
+double FrostFront::front_at(std::size_t c, double target) const {
+  const std::vector<double>& t = time_[c];
+  if (target >= t.back()) return p_.permafrost_depth;
+  // the first slice whose end the front has not reached; slices of stone take no time
+  const auto it = std::upper_bound(t.begin(), t.end(), target);
+  const auto k = static_cast<std::size_t>(it - t.begin()) - 1;
+  const double span = t[k + 1] - t[k];
+  return (static_cast<double>(k) + (span > 0.0 ? (target - t[k]) / span : 1.0)) * dz_;
+}
+
+bool FrostFront::advance(Simulation& sim) {
+  Particles& p = sim.world().particles;
+  if (phase_ == Phase::idle) return false;
+  if (frozen_.size() != p.size()) frozen_.resize(p.size(), 0);
+  const double elapsed = sim.time() - phase_start_;
+  const std::size_t n = surface_.size();
+  if (phase_ == Phase::freezing) {
+    const double u = std::min(1.0, elapsed / p_.freeze_time);
+    const double target = u * 0.5 * p_.permafrost_depth * p_.permafrost_depth;
+    // heave from the fines the front crossed since the last call, column by column
+    std::vector<double> dh(n, 0.0);
+    for (std::size_t c = 0; c < n; ++c) {
+      const double next = std::max(front_[c], front_at(c, target));
+      double fines = 0.0; // integral of the fine share over the crossed depth
+      for (double z = front_[c]; z < next - 1e-15;) {
+        const auto k = std::min(slices_per_depth - 1, static_cast<std::size_t>(z / dz_));
+        const double end = std::min(next, static_cast<double>(k + 1) * dz_);
+        fines += fines_[c][k] * (end - z);
+        z = end > z ? end : next;
+      }
+      dh[c] = p_.heave_strain * fines;
+      front_[c] = next;
+    }
+    // grains the front has passed freeze: fines by their centre, stones by their top
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!p.is_free(i) || frozen_[i]) continue;
+      const std::size_t c = column_of(p.position[i].x);
+      const double depth = surface_[c] - p.position[i].y - (is_stone(p, i) ? p.radius[i] : 0.0);
+      if (depth <= front_[c]) {
+        sim.hold(static_cast<std::uint32_t>(i), true);
+        frozen_[i] = 1;
+      }
+    }
+    // the crust: heave smoothed across columns (Gaussian, sigma = crust length), weights
+    // normalised so that a uniform heave stays uniform
+    std::vector<double> smooth = dh;
+    if (p_.crust_length > 0.0) {
+      const double sigma = p_.crust_length / p_.column_width;
+      for (std::size_t c = 0; c < n; ++c) {
+        double sum = 0.0, weight = 0.0;
+        for (std::size_t k = 0; k < n; ++k) {
+          const double d = (static_cast<double>(c) - static_cast<double>(k)) / sigma;
+          const double w = std::exp(-0.5 * d * d);
+          sum += w * dh[k], weight += w;
+        }
+        smooth[c] = sum / weight;
+      }
+    }
+    for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (frozen_[i]) {
+        const double up = smooth[column_of(p.position[i].x)];
+        if (up != 0.0) sim.displace_held(static_cast<std::uint32_t>(i), {0.0, up});
+      }
+    if (u < 1.0) return false;
+    start_thaw(sim);
+    return true;
+  }
+  // thawing: from the heaved surface down to the bottom of the frozen layer
+  const double u = std::min(1.0, elapsed / p_.thaw_time);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!frozen_[i]) continue;
+    const std::size_t c = column_of(p.position[i].x);
+    const double top = surface_[c] + heave_[c], bottom = surface_[c] - front_[c];
+    const double thaw = top - (top - bottom) * std::sqrt(u);
+    const bool stone = is_stone(p, i) && p_.frost_pull;
+    const double lowest = p.position[i].y - (stone ? p.radius[i] : 0.0);
+    if (u >= 1.0 || lowest >= thaw) {
+      sim.hold(static_cast<std::uint32_t>(i), false);
+      frozen_[i] = 0;
+    }
+  }
+  if (u < 1.0) return false;
+  phase_ = Phase::idle;
+  return true;
+}
+
+void FrostFront::start_thaw(Simulation& sim) {
+  phase_ = Phase::thawing;
+  phase_start_ = sim.time();
+}
+
+std::vector<double> FrostFront::save() const {
+  std::vector<double> out{static_cast<double>(phase_), phase_start_, dz_,
+                          static_cast<double>(surface_.size()),
+                          static_cast<double>(time_.empty() ? 0 : slices_per_depth)};
+  for (const auto* v : {&surface_, &front_, &heave_}) out.insert(out.end(), v->begin(), v->end());
+  for (const auto& t : time_) out.insert(out.end(), t.begin(), t.end());
+  for (const auto& f : fines_) out.insert(out.end(), f.begin(), f.end());
+  out.push_back(static_cast<double>(frozen_.size()));
+  for (const auto f : frozen_) out.push_back(f);
+  return out;
+}
+
+void FrostFront::load(const std::vector<double>& v, std::size_t particles) {
+  const auto bad = [] { throw std::runtime_error("frost front state: malformed in checkpoint"); };
+  if (v.size() < 5) bad();
+  const auto n = static_cast<std::size_t>(v[3]), slices = static_cast<std::size_t>(v[4]);
+  if (n != surface_.size() || (slices != 0 && slices != slices_per_depth)) bad();
+  std::size_t k = 5;
+  const auto take = [&](std::size_t count) {
+    if (k + count > v.size()) bad();
+    std::vector<double> out(v.begin() + static_cast<std::ptrdiff_t>(k),
+                            v.begin() + static_cast<std::ptrdiff_t>(k + count));
+    k += count;
+    return out;
+  };
+  phase_ = static_cast<Phase>(static_cast<int>(v[0]));
+  phase_start_ = v[1];
+  dz_ = v[2];
+  surface_ = take(n);
+  front_ = take(n);
+  heave_ = take(n);
+  time_.clear();
+  fines_.clear();
+  if (slices) {
+    for (std::size_t c = 0; c < n; ++c) time_.push_back(take(slices + 1));
+    for (std::size_t c = 0; c < n; ++c) fines_.push_back(take(slices));
+  }
+  const auto count = static_cast<std::size_t>(take(1)[0]);
+  if (count != 0 && count != particles) bad();
+  frozen_.clear();
+  for (const double f : take(count)) frozen_.push_back(static_cast<std::uint8_t>(f));
+}
+
+} // namespace talus

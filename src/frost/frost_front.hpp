@@ -1,0 +1,90 @@
+#pragma once
+// A freezing-front model of frost heave in 2D (docs/model.md, "Frost heave: the front model";
+// after Kessler and Werner 2003, Washburn's frost push and frost pull, and Stefan's law).
+//
+// The bed is cut into vertical columns about a stone wide. A freeze-thaw cycle:
+//  1. Freeze: a front descends from each column's surface; the time it takes to reach a depth
+//     follows a layered Stefan estimate from the column's make-up, so it runs ahead beneath
+//     stones, which conduct heat better and hold no water (frost push). It stops at the
+//     permafrost depth. With conductivity_ratio = stone_water = 1 stones are thermally like
+//     the soil and the front is level: frost pull alone.
+//  2. Grains above the front are frozen: held in place, moving only with their column's heave;
+//     free grains still feel them. A fine freezes when its centre is above the front, a stone
+//     when its top is (the frozen layer grips it).
+//  3. Fines crossing the front add heave: heave strain x front step x the fine share of what
+//     was crossed; smoothed across columns over the crust length and applied, upward, to every
+//     frozen grain of the column.
+//  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
+//     a fine is released when its centre has thawed, a stone only when its lowest point has
+//     (frost pull: fines slump under it first). Released grains settle under gravity.
+// The engine does the rest: frozen grains are held particles (Simulation::hold).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+struct FrostFrontParameters {
+  double permafrost_depth = 0.0;   ///< m below the surface: nothing deeper freezes
+  double heave_strain = 0.1;       ///< heave per unit depth of frozen fines
+  double conductivity_ratio = 3.0; ///< stone / soil thermal conductivity (1: no contrast)
+  double stone_water = 0.0;        ///< stone / soil latent heat per volume (0: dry stones)
+  double crust_length = 0.0;       ///< m: heave smoothed over this length (Gaussian sigma)
+  double column_width = 0.0;       ///< m
+  double stone_radius = 0.0;       ///< m: grains this large or larger are stones
+  double freeze_time = 1.0;        ///< s: the front's descent to permafrost in pure fines
+  double thaw_time = 1.0;          ///< s: the thaw front's descent through the frozen layer
+  bool frost_pull = true;          ///< stones thaw out by their lowest point (else their centre)
+  double x_min = 0.0, x_max = 0.0; ///< m: the bed's horizontal extent
+};
+
+/// Throws InvalidArgument naming the parameter and its allowed values.
+void check(const FrostFrontParameters& p);
+
+class FrostFront {
+public:
+  enum class Phase : int { idle = 0, freezing = 1, thawing = 2 };
+
+  explicit FrostFront(FrostFrontParameters p);
+
+  /// Starts a freeze at time t: surfaces and the columns' Stefan tables from the grains now.
+  void start_freeze(const Simulation& sim);
+  /// Advances the phase to time sim.time(): freezes, heaves or releases grains. Returns true
+  /// when the phase has just ended (the freeze moves on to the thaw by itself; the thaw ends
+  /// idle with every grain free).
+  bool advance(Simulation& sim);
+
+  Phase phase() const { return phase_; }
+  std::size_t columns() const { return surface_.size(); }
+  /// The freezing front's depth below each column's surface, m.
+  const std::vector<double>& front_depth() const { return front_; }
+  /// Heave so far this cycle, per column, m.
+  const std::vector<double>& heave() const { return heave_; }
+  std::size_t frozen_count() const;
+  const FrostFrontParameters& parameters() const { return p_; }
+
+  /// The model's state as numbers, for a checkpoint, and back.
+  std::vector<double> save() const;
+  void load(const std::vector<double>& numbers, std::size_t particles);
+
+private:
+  std::size_t column_of(double x) const;
+  bool is_stone(const Particles& p, std::size_t i) const;
+  double front_at(std::size_t c, double target) const;
+  void start_thaw(Simulation& sim);
+
+  FrostFrontParameters p_;
+  Phase phase_ = Phase::idle;
+  double phase_start_ = 0.0;
+  double dz_ = 0.0;                        ///< slice thickness of the Stefan tables
+  std::vector<double> surface_;            ///< per column, y at the freeze's start
+  std::vector<double> front_;              ///< per column, depth below surface_
+  std::vector<double> heave_;              ///< per column, this cycle's heave
+  std::vector<std::vector<double>> time_;  ///< per column: time (units of D^2/2) to each slice
+  std::vector<std::vector<double>> fines_; ///< per column: fine share of each slice
+  std::vector<std::uint8_t> frozen_;       ///< per particle: held by the frost
+};
+
+} // namespace talus

@@ -1,0 +1,14 @@
+#pragma once
+// The front model's parameters from a scenario's [frost] section and the built grains: the
+// automatic values (0 in the file) resolved.
+#include "frost/frost_front.hpp"
+#include "scenario/scenario.hpp"
+
+namespace talus {
+
+/// stone_radius 0: 1.5 x the median radius of the free grains; column_width 0: the largest
+/// stone's diameter; crust_length 0: the column width. The columns span `bounds` in x.
+FrostFrontParameters front_parameters(const FrostSection& f, const Particles& p,
+                                      const Rect& bounds);
+
+} // namespace talus
