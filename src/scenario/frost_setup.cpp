@@ -10,8 +10,8 @@ namespace talus {
 FrostFrontParameters front_parameters(const FrostSection& f, const Particles& p,
                                       const Rect& bounds) {
   std::vector<double> radii;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.is_free(i)) radii.push_back(p.radius[i]);
+  for (std::size_t i = 0; i < p.size(); ++i) // free grains, or held by a frost being resumed
+    if (p.kind[i] != Kind::fixed) radii.push_back(p.radius[i]);
   if (radii.empty()) throw InvalidArgument("frost: there are no free grains");
   std::sort(radii.begin(), radii.end());
   FrostFrontParameters q;
