@@ -150,13 +150,16 @@ Section analyze_frost(RunData& run) {
       (out / "frost.json").string(),
       fmt::format("{{\"freezes\": {}, \"stone_radius\": {}, \"cycles\": {}], "
                   "\"sorting_index\": {}], \"surface_cover\": {}], \"stones\": {}]}}\n",
-                  freezes.size(), number(c.stone_radius), cycles, index, cover, rise));
+                  c.time.size(), number(c.stone_radius), cycles, index, cover, rise));
   Section s{"Frost heave, cycle by cycle", {}, {}, {}};
   s.summary = fmt::format(
-      "{} freezes (frost.csv). Heights of the stones (R >= {:.3g} mm) and of {} tracer fines just "
-      "before each freeze; sorting index (mean stone height - mean fine height) / bed height.",
-      freezes.size(), 1e3 * c.stone_radius, c.fines.size());
-  fmt::print("frost: {} freezes, {} stones\n", freezes.size(), c.stones.size());
+      "{} samples of the bed at rest (frost.csv: before each freeze, and at the end). Heights of "
+      "the stones (R >= {:.3g} mm) and of {} tracer fines; sorting index (mean stone height - "
+      "mean fine height) / bed height; surface stone cover: the share of the bed's width taken "
+      "by stones at the surface.",
+      c.time.size(), 1e3 * c.stone_radius, c.fines.size());
+  fmt::print("frost: {} samples at rest (before each freeze, and the end), {} stones\n",
+             c.time.size(), c.stones.size());
   for (std::size_t k = 0; k < c.stones.size(); ++k) {
     s.numbers.emplace_back(
         fmt::format("stone {} (R = {:.3g} mm): rise per cycle", c.stones[k], 1e3 * c.stone_size[k]),
