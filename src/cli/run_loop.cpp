@@ -127,7 +127,7 @@ public:
     checkpoint_every_ = every(s.output.checkpoint_interval, dt);
     tty_ = !o.quiet && ::isatty(STDERR_FILENO);
     if (s.frost.model == "front") {
-      front_.emplace(front_parameters(s.frost, sim_.world().particles, book_.bounds));
+      front_.emplace(front_parameters(s, sim_.world().particles, book_.bounds));
       if (!book_.front_state.empty())
         front_->load(book_.front_state, sim_.world().particles.size());
       const double phase = std::min(s.frost.freeze_time, s.frost.thaw_time);

@@ -39,6 +39,7 @@ void check(const FrostFrontParameters& p) {
   need(p.freeze_time > 0.0, "freeze_time", "> 0 s");
   need(p.thaw_time > 0.0, "thaw_time", "> 0 s");
   need(p.x_max > p.x_min, "columns", "a bed of positive width");
+  need(p.thawed_material >= -1, "thawed_material", "a material's name");
 }
 
 FrostFront::FrostFront(FrostFrontParameters p) : p_(p) {
@@ -64,8 +65,12 @@ std::size_t FrostFront::frozen_count() const {
   return static_cast<std::size_t>(std::count(frozen_.begin(), frozen_.end(), 1));
 }
 
-void FrostFront::start_freeze(const Simulation& sim) {
-  const Particles& p = sim.world().particles;
+void FrostFront::start_freeze(Simulation& sim) {
+  Particles& p = sim.world().particles;
+  if (material_.size() == p.size()) // thawed fines get their own material back
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p.material[i] = static_cast<std::uint16_t>(material_[i]);
+  material_.assign(p.material.begin(), p.material.end());
   const std::size_t n = surface_.size();
   frozen_.assign(p.size(), 0);
   // each column's surface: the top of its highest free fine (a stone sticking out does not
@@ -110,11 +115,12 @@ void FrostFront::start_freeze(const Simulation& sim) {
   for (std::size_t c = 0; c < n; ++c) {
     double resistance = 0.0;
     for (std::size_t k = 0; k < slices_per_depth; ++k) {
+      // an empty slice (below the floor) freezes like fines but has no fines to heave
       const double solids = stone[c][k] + fine[c][k];
       const double f = solids > 0.0 ? fine[c][k] / solids : 1.0;
       const double conductivity = f + p_.conductivity_ratio * (1.0 - f);
       const double latent = f + p_.stone_water * (1.0 - f);
-      fines_[c][k] = f;
+      fines_[c][k] = solids > 0.0 ? f : 0.0;
       time_[c][k + 1] = time_[c][k] + latent * (resistance + 0.5 * dz_ / conductivity) * dz_;
       resistance += dz_ / conductivity;
     }
@@ -205,6 +211,8 @@ bool FrostFront::advance(Simulation& sim) {
     if (u >= 1.0 || lowest >= thaw) {
       sim.hold(static_cast<std::uint32_t>(i), false);
       frozen_[i] = 0;
+      if (p_.thawed_material >= 0 && !is_stone(p, i))
+        p.material[i] = static_cast<std::uint16_t>(p_.thawed_material);
     }
   }
   if (u < 1.0) return false;
@@ -226,6 +234,8 @@ std::vector<double> FrostFront::save() const {
   for (const auto& f : fines_) out.insert(out.end(), f.begin(), f.end());
   out.push_back(static_cast<double>(frozen_.size()));
   for (const auto f : frozen_) out.push_back(f);
+  out.push_back(static_cast<double>(material_.size()));
+  out.insert(out.end(), material_.begin(), material_.end());
   return out;
 }
 
@@ -258,6 +268,9 @@ void FrostFront::load(const std::vector<double>& v, std::size_t particles) {
   if (count != 0 && count != particles) bad();
   frozen_.clear();
   for (const double f : take(count)) frozen_.push_back(static_cast<std::uint8_t>(f));
+  const auto materials = static_cast<std::size_t>(take(1)[0]);
+  if (materials != 0 && materials != particles) bad();
+  material_ = take(materials);
 }
 
 } // namespace talus

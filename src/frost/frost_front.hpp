@@ -16,7 +16,8 @@
 //     frozen grain of the column.
 //  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
 //     a fine is released when its centre has thawed, a stone only when its lowest point has
-//     (frost pull: fines slump under it first). Released grains settle under gravity.
+//     (frost pull: fines slump under it first). Released grains settle under gravity; thawed
+//     fines may take a weaker material (wet, thaw-weakened soil) until the next freeze.
 // The engine does the rest: frozen grains are held particles (Simulation::hold).
 #include <cstdint>
 #include <string>
@@ -37,6 +38,7 @@ struct FrostFrontParameters {
   double freeze_time = 1.0;        ///< s: the front's descent to permafrost in pure fines
   double thaw_time = 1.0;          ///< s: the thaw front's descent through the frozen layer
   bool frost_pull = true;          ///< stones thaw out by their lowest point (else their centre)
+  int thawed_material = -1;        ///< fines take this material when thawed (-1: unchanged)
   double x_min = 0.0, x_max = 0.0; ///< m: the bed's horizontal extent
 };
 
@@ -50,7 +52,7 @@ public:
   explicit FrostFront(FrostFrontParameters p);
 
   /// Starts a freeze at time t: surfaces and the columns' Stefan tables from the grains now.
-  void start_freeze(const Simulation& sim);
+  void start_freeze(Simulation& sim);
   /// Advances the phase to time sim.time(): freezes, heaves or releases grains. Returns true
   /// when the phase has just ended (the freeze moves on to the thaw by itself; the thaw ends
   /// idle with every grain free).
@@ -85,6 +87,7 @@ private:
   std::vector<std::vector<double>> time_;  ///< per column: time (units of D^2/2) to each slice
   std::vector<std::vector<double>> fines_; ///< per column: fine share of each slice
   std::vector<std::uint8_t> frozen_;       ///< per particle: held by the frost
+  std::vector<double> material_;           ///< per particle: its material before the thaw
 };
 
 } // namespace talus

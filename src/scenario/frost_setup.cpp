@@ -7,8 +7,8 @@
 
 namespace talus {
 
-FrostFrontParameters front_parameters(const FrostSection& f, const Particles& p,
-                                      const Rect& bounds) {
+FrostFrontParameters front_parameters(const Scenario& s, const Particles& p, const Rect& bounds) {
+  const FrostSection& f = s.frost;
   std::vector<double> radii;
   for (std::size_t i = 0; i < p.size(); ++i) // free grains, or held by a frost being resumed
     if (p.kind[i] != Kind::fixed) radii.push_back(p.radius[i]);
@@ -25,6 +25,9 @@ FrostFrontParameters front_parameters(const FrostSection& f, const Particles& p,
   q.freeze_time = f.freeze_time;
   q.thaw_time = f.thaw_time;
   q.frost_pull = f.frost_pull;
+  for (std::size_t m = 0; m < s.materials.size(); ++m)
+    if (!f.thawed_material.empty() && s.materials[m].name == f.thawed_material)
+      q.thawed_material = static_cast<int>(m);
   q.x_min = bounds.lo.x;
   q.x_max = bounds.hi.x;
   return q;

@@ -7,8 +7,8 @@
 namespace talus {
 
 /// stone_radius 0: 1.5 x the median radius of the free grains; column_width 0: the largest
-/// stone's diameter; crust_length 0: the column width. The columns span `bounds` in x.
-FrostFrontParameters front_parameters(const FrostSection& f, const Particles& p,
-                                      const Rect& bounds);
+/// stone's diameter; crust_length 0: the column width. The columns span `bounds` in x;
+/// thawed_material is looked up in the scenario's materials.
+FrostFrontParameters front_parameters(const Scenario& s, const Particles& p, const Rect& bounds);
 
 } // namespace talus

@@ -260,6 +260,7 @@ void read_frost(TableReader& r, FrostSection& f) {
   f.freeze_time = r.number("freeze_time", f.freeze_time, 1e-9, inf, "> 0 s");
   f.thaw_time = r.number("thaw_time", f.thaw_time, 1e-9, inf, "> 0 s");
   f.frost_pull = r.boolean("frost_pull", f.frost_pull);
+  f.thawed_material = r.text("thawed_material", f.thawed_material);
 }
 
 // Reads the table at `name` (if present) with `read`, then rejects any key it did not read.
@@ -347,6 +348,7 @@ Scenario load_scenario(std::string_view text, const std::string& file,
   // references between sections
   material_index(s, s.particles.material, "particles.material");
   material_index(s, s.geometry.wall_material, "geometry.wall_material");
+  material_index(s, s.frost.thawed_material, "frost.thawed_material");
   for (const auto& e : s.particles.list) material_index(s, e.material, "particles.list.material");
   for (std::size_t m = 0; m < s.materials.size(); ++m)
     for (std::size_t n = m + 1; n < s.materials.size(); ++n)

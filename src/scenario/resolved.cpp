@@ -156,7 +156,8 @@ std::string to_toml(const Scenario& s) {
                                    {"stone_radius", f.stone_radius},
                                    {"freeze_time", f.freeze_time},
                                    {"thaw_time", f.thaw_time},
-                                   {"frost_pull", f.frost_pull}});
+                                   {"frost_pull", f.frost_pull},
+                                   {"thawed_material", f.thawed_material}});
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";

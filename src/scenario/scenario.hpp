@@ -147,6 +147,7 @@ struct FrostSection {
   double freeze_time = 0.5;        ///< s
   double thaw_time = 0.5;          ///< s
   bool frost_pull = true;          ///< stones are released when their lowest point thaws
+  std::string thawed_material;     ///< thawed fines take this material ("": unchanged)
 };
 
 struct Scenario {
