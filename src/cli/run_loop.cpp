@@ -1,5 +1,6 @@
 #include "cli/run_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -271,7 +272,7 @@ private:
         "{:.9g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},{},{:.6f}",
         sim_.time(), sim_.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
         e.total(), p.x, p.y, angular_momentum(sim_), coordination_number(sim_), contact_count(sim_),
-        packing_fraction(sim_, book_.fill.lo, book_.fill.hi));
+        packing_fraction(sim_, book_.fill.lo, packing_top()));
     for (const auto& [name, g] : book_.groups) {
       Vec2 f = force_on_particles(sim_, g.particles);
       for (const auto sidx : g.segments) f += sim_.world().walls[sidx].force;
@@ -279,6 +280,18 @@ private:
     }
     thermo_ << row << "\n";
     last_kinetic_ = e.kinetic();
+  }
+
+  // The packing region's top corner: the fill region's, or below a pressing lid (the grain
+  // press' "lid" group), so the packing fraction is of the packing, not of the empty box above.
+  Vec2 packing_top() const {
+    Vec2 hi = book_.fill.hi;
+    if (const auto lid = book_.groups.find("lid"); lid != book_.groups.end())
+      for (const auto s : lid->second.segments) {
+        const Segment& w = sim_.world().walls[s];
+        hi.y = std::min({hi.y, w.a.y, w.b.y});
+      }
+    return hi;
   }
 
   void record_track() {
