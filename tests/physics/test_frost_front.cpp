@@ -206,6 +206,15 @@ TEST(LongFrostFront, OneStoneRisesAndEachMechanismAddsToIt) {
     rise["mud"] = o.stone_rise - control.stone_rise;
     std::printf("thawed fines as mud: rose %.3f mm against the control\n", 1e3 * rise["mud"]);
   }
+  // a larger stone (R = 7 mm, 14 fine radii): the cavity is larger against the fines
+  {
+    const Outcome o = cycles(with_stone(0.007, 0.002), parameters(0.015), 1);
+    const Outcome c = cycles(with_stone(0.007, 0.002), parameters(0.015), 1, false);
+    const double expected = 0.3 * std::min(0.014, 0.015 - o.stone_top_depth);
+    std::printf("larger stone: top %.2f mm deep, rose %.3f mm against the control (heave "
+                "strain x min(2R, D - a) = %.3f mm)\n",
+                1e3 * o.stone_top_depth, 1e3 * (o.stone_rise - c.stone_rise), 1e3 * expected);
+  }
   // a smaller stone (R = 3.5 mm) set in the same way rises less
   const Outcome small = cycles(with_stone(0.0035, 0.002), parameters(0.015), 1);
   const Outcome small_control = cycles(with_stone(0.0035, 0.002), parameters(0.015), 1, false);
