@@ -49,10 +49,13 @@ struct HistoryRows {
 // the old row to the new one (a merge of sorted rows); new entries start at 0. The old table is
 // used only if it has the same number of rows.
 void carry_history(const HistoryRows& old_rows, const std::vector<std::uint32_t>& offset,
-                   const std::vector<std::uint32_t>& key, std::vector<double>& history) {
+                   const std::vector<std::uint32_t>& key, std::vector<double>& history,
+                   int threads) {
   history.assign(key.size(), 0.0);
   if (old_rows.offset.size() != offset.size()) return;
-  for (std::size_t i = 0; i + 1 < offset.size(); ++i) {
+  const auto rows = static_cast<std::ptrdiff_t>(offset.size()) - 1;
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < rows; ++i) { // rows are independent
     std::uint32_t a = old_rows.offset[i];
     for (std::uint32_t b = offset[i]; b < offset[i + 1]; ++b) {
       while (a < old_rows.offset[i + 1] && old_rows.key[a] < key[b]) ++a;
@@ -61,7 +64,29 @@ void carry_history(const HistoryRows& old_rows, const std::vector<std::uint32_t>
   }
 }
 
-void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, double skin) {
+// Rows [first, last) in blocks of contiguous particles, one block per thread, joined in order.
+struct RowBlock {
+  std::vector<std::uint32_t> neighbour;
+  std::vector<ImageShift> image;
+  std::vector<std::uint32_t> count; // entries of each row
+};
+
+// Joins the blocks' rows in order into CSR arrays (offset has n + 1 entries).
+template <class Block, class Append>
+void join_blocks(std::vector<Block>& blocks, std::vector<std::uint32_t>& offset, Append append) {
+  std::size_t row = 0;
+  offset[0] = 0;
+  for (Block& b : blocks) {
+    for (const std::uint32_t c : b.count) {
+      offset[row + 1] = offset[row] + c;
+      ++row;
+    }
+    append(b);
+  }
+}
+
+void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, double skin,
+                 int threads) {
   const std::size_t n = p.size();
   CellGrid grid;
   grid.build(p.position, domain, 2.0 * p.max_radius() + skin);
@@ -72,51 +97,66 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   std::vector<double> old_history = std::move(list.history);
 
   list.row_offset.assign(n + 1, 0);
+  const int blocks = std::max(1, std::min<int>(threads, static_cast<int>(n / 256) + 1));
+  std::vector<RowBlock> block(static_cast<std::size_t>(blocks));
+  // one block per iteration: every block is built however many threads OpenMP grants
+#pragma omp parallel for schedule(static, 1) num_threads(blocks)
+  for (int bi = 0; bi < blocks; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    const std::size_t first = n * b / static_cast<std::size_t>(blocks),
+                      last = n * (b + 1) / static_cast<std::size_t>(blocks);
+    RowBlock& out = block[b];
+    out.count.reserve(last - first);
+    std::vector<std::pair<std::uint32_t, ImageShift>> row;
+    for (std::size_t i = first; i < last; ++i) {
+      row.clear();
+      const Vec2 ri = p.position[i];
+      const int cx = grid.cell_x(ri.x), cy = grid.cell_y(ri.y);
+      for (int dy = -1; dy <= 1; ++dy) {
+        int ncy = cy + dy;
+        std::int8_t sy = 0;
+        if (ncy < 0 || ncy >= grid.ny) {
+          if (!grid.periodic_y) continue;
+          sy = static_cast<std::int8_t>(ncy < 0 ? -1 : 1);
+          ncy -= sy * grid.ny;
+        }
+        for (int dx = -1; dx <= 1; ++dx) {
+          int ncx = cx + dx;
+          std::int8_t sx = 0;
+          if (ncx < 0 || ncx >= grid.nx) {
+            if (!grid.periodic_x) continue;
+            sx = static_cast<std::int8_t>(ncx < 0 ? -1 : 1);
+            ncx -= sx * grid.nx;
+          }
+          const Vec2 shift{sx * box.x, sy * box.y};
+          const std::size_t c = static_cast<std::size_t>(ncy) * grid.nx + ncx;
+          for (std::uint32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
+            const std::uint32_t j = grid.items[k];
+            if (j <= i || (!p.is_free(i) && !p.is_free(j))) continue;
+            const double reach = p.radius[i] + p.radius[j] + skin;
+            if (norm2(ri - (p.position[j] + shift)) < reach * reach)
+              row.emplace_back(j, ImageShift{sx, sy});
+          }
+        }
+      }
+      std::sort(row.begin(), row.end(),
+                [](const auto& a, const auto& b2) { return a.first < b2.first; });
+      for (const auto& [j, img] : row) {
+        out.neighbour.push_back(j);
+        out.image.push_back(img);
+      }
+      out.count.push_back(static_cast<std::uint32_t>(row.size()));
+    }
+  }
   list.neighbour.clear();
   list.image.clear();
-  std::vector<std::pair<std::uint32_t, ImageShift>> row;
-  for (std::size_t i = 0; i < n; ++i) {
-    row.clear();
-    const Vec2 ri = p.position[i];
-    const int cx = grid.cell_x(ri.x), cy = grid.cell_y(ri.y);
-    for (int dy = -1; dy <= 1; ++dy) {
-      int ncy = cy + dy;
-      std::int8_t sy = 0;
-      if (ncy < 0 || ncy >= grid.ny) {
-        if (!grid.periodic_y) continue;
-        sy = static_cast<std::int8_t>(ncy < 0 ? -1 : 1);
-        ncy -= sy * grid.ny;
-      }
-      for (int dx = -1; dx <= 1; ++dx) {
-        int ncx = cx + dx;
-        std::int8_t sx = 0;
-        if (ncx < 0 || ncx >= grid.nx) {
-          if (!grid.periodic_x) continue;
-          sx = static_cast<std::int8_t>(ncx < 0 ? -1 : 1);
-          ncx -= sx * grid.nx;
-        }
-        const Vec2 shift{sx * box.x, sy * box.y};
-        const std::size_t c = static_cast<std::size_t>(ncy) * grid.nx + ncx;
-        for (std::uint32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
-          const std::uint32_t j = grid.items[k];
-          if (j <= i || (!p.is_free(i) && !p.is_free(j))) continue;
-          const double reach = p.radius[i] + p.radius[j] + skin;
-          if (norm2(ri - (p.position[j] + shift)) < reach * reach)
-            row.emplace_back(j, ImageShift{sx, sy});
-        }
-      }
-    }
-    std::sort(row.begin(), row.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [j, img] : row) {
-      list.neighbour.push_back(j);
-      list.image.push_back(img);
-    }
-    list.row_offset[i + 1] = static_cast<std::uint32_t>(list.neighbour.size());
-  }
+  join_blocks(block, list.row_offset, [&](RowBlock& b) {
+    list.neighbour.insert(list.neighbour.end(), b.neighbour.begin(), b.neighbour.end());
+    list.image.insert(list.image.end(), b.image.begin(), b.image.end());
+  });
 
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
-                list.history);
+                list.history, threads);
 
   // transpose: for each particle, the entries where it is the second partner, in entry order
   list.col_offset.assign(n + 1, 0);
@@ -146,17 +186,17 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
     list.wall_offset[i + 1] = static_cast<std::uint32_t>(list.wall_segment.size());
   }
   carry_history({old_offset, old_segment, old_history}, list.wall_offset, list.wall_segment,
-                list.wall_history);
+                list.wall_history, 1);
 }
 
 } // namespace
 
 void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,
-                          const Domain& domain, double skin) {
+                          const Domain& domain, double skin, int threads) {
   if (domain.any_periodic())
     for (Vec2& r : p.position) r = domain.wrap(r);
   list.skin = skin;
-  build_pairs(list, p, domain, skin);
+  build_pairs(list, p, domain, skin, threads);
   build_walls(list, p, walls, skin);
   list.reference = p.position;
   list.segment_reference.resize(2 * walls.size());

@@ -54,7 +54,9 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
 /// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
 /// two non-free particles are left out. History of pairs still within reach is carried over.
 /// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.
+/// `threads` build the rows side by side, in contiguous blocks joined in order: the list is the
+/// same whatever the count.
 void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,
-                          const Domain& domain, double skin);
+                          const Domain& domain, double skin, int threads = 1);
 
 } // namespace talus

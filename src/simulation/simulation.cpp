@@ -106,7 +106,7 @@ void Simulation::step() {
     driven_stale_ = false;
   }
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
-  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin);
+  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
   compute_forces();
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
   finite_ = config_.integrator == Integrator::gear ? gear_correct(p, dt, threads_)

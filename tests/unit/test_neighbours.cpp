@@ -68,6 +68,12 @@ TEST_P(NeighbourListVsBruteForce, FindsExactlyThePairsWithinReach) {
       for (std::uint32_t q = l.col_offset[k]; q < l.col_offset[k + 1]; ++q, ++total)
         EXPECT_EQ(l.neighbour[l.col_entry[q]], k);
     EXPECT_EQ(total, l.pair_count());
+    // built in blocks by several threads: the same list, entry for entry
+    NeighbourList many;
+    build_neighbour_list(many, p, {}, d, skin, 3);
+    EXPECT_EQ(many.row_offset, l.row_offset);
+    EXPECT_EQ(many.neighbour, l.neighbour);
+    EXPECT_EQ(many.col_entry, l.col_entry);
   }
 }
 
