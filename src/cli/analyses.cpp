@@ -23,7 +23,11 @@ RunData::RunData(fs::path dir) : dir_(std::move(dir)), out_(dir_ / "analysis") {
   if (!fs::exists(dir_ / "scenario.toml"))
     throw InvalidArgument("'" + dir_.string() + "' is not a talus run folder (no scenario.toml)");
   scenario_ = load_scenario_file((dir_ / "scenario.toml").string());
+}
+
+const fs::path& RunData::out() {
   fs::create_directories(out_);
+  return out_;
 }
 
 bool RunData::has_snapshots() const {
@@ -75,8 +79,9 @@ bool plot(const fs::path& out, const std::string& kind, const fs::path& csv, con
 }
 
 Section analyze_thermo(RunData& run) {
-  const fs::path csv = run.dir() / "thermo.csv", png = run.out() / "thermo.png";
+  const fs::path csv = run.dir() / "thermo.csv";
   if (!fs::exists(csv)) throw InvalidArgument(csv.string() + " is missing");
+  const fs::path png = run.out() / "thermo.png";
   Section s{"Energies, coordination and packing fraction", {}, {}, {}};
   s.summary = "Kinetic (translation, rotation), elastic and total energy; coordination number Z "
               "and packing fraction against time (thermo.csv).";
@@ -89,7 +94,7 @@ Section analyze_thermo(RunData& run) {
 }
 
 Section analyze_forces(RunData& run, const AnalysisOptions& o) {
-  const fs::path dir = run.dir(), out = run.out();
+  const fs::path dir = run.dir();
   const auto entries = read_pvd((dir / "contacts.pvd").string());
   if (entries.empty())
     throw InvalidArgument((dir / "contacts.pvd").string() + " lists no snapshots");
@@ -116,6 +121,7 @@ Section analyze_forces(RunData& run, const AnalysisOptions& o) {
   if (scaled.empty())
     throw InvalidArgument("forces: the run's snapshots hold no contact with a normal force");
   const ForceDistribution d = force_distribution(scaled);
+  const fs::path out = run.out();
   std::string csv = "f_over_mean,probability_density,count\n";
   for (std::size_t k = 0; k < d.centre.size(); ++k)
     csv += fmt::format("{:.4f},{:.6e},{}\n", d.centre[k], d.density[k], d.count[k]);

@@ -19,7 +19,8 @@ class RunData {
 public:
   explicit RunData(std::filesystem::path dir);
   const std::filesystem::path& dir() const { return dir_; }
-  const std::filesystem::path& out() const { return out_; }
+  /// DIR/analysis, made on first use: an analysis that fails its checks leaves nothing behind.
+  const std::filesystem::path& out();
   const Scenario& scenario() const { return scenario_; }
   bool has_snapshots() const;
   /// The snapshots (particles and walls, no contacts) from time `from` on; throws

@@ -7,6 +7,8 @@ dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 "$talus" run drum --quiet --out "$dir/run" --set simulation.duration=0.3 \
   --set output.snapshot_interval=0.05 --set packing.settle_max_time=0.3 || exit 1
+"$talus" analyze "$dir/run" profiles --from 99 2> /dev/null && { echo "--from past the end was accepted"; exit 1; }
+[ -e "$dir/run/analysis" ] && { echo "a failed analysis left an analysis folder"; exit 1; }
 "$talus" analyze "$dir/run" all > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 cat "$dir/out.txt"
 head -1 "$dir/run/analysis/forces.csv" | grep -q "^f_over_mean,probability_density,count$" || exit 1
