@@ -61,6 +61,14 @@ double RunData::mean_radius() {
   return sum / static_cast<double>(n);
 }
 
+std::string json_number(double v) {
+  return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null";
+}
+
+std::string csv_number(double v) {
+  return std::isfinite(v) ? fmt::format("{:.6g}", v) : "";
+}
+
 bool plot(const fs::path& out, const std::string& kind, const fs::path& csv, const fs::path& png,
           const fs::path& json) {
   if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") != 0) {

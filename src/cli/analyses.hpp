@@ -52,6 +52,11 @@ struct Section {
   std::vector<std::pair<std::string, std::string>> numbers;
 };
 
+/// A number for a JSON file: "null" when it is not finite.
+std::string json_number(double v);
+/// A number for a CSV cell: empty when it is not finite.
+std::string csv_number(double v);
+
 /// Draws a chart with the compiled-in matplotlib script; false (with a note) when matplotlib is
 /// missing or the script fails, so the CSV files still stand.
 bool plot(const std::filesystem::path& out, const std::string& kind,

@@ -22,24 +22,20 @@ bool has_orifice(const Scenario& s) {
   return s.geometry.builder == "hourglass" || s.geometry.builder == "hopper";
 }
 
-// The region grains were seen in, over all frames.
-Rect extent(const std::vector<Frame>& frames) {
-  Rect r{{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()},
-         {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()}};
-  for (const Frame& f : frames)
-    for (std::size_t i = 0; i < f.position.size(); ++i) {
-      if (f.kind[i] != 0) continue;
-      r.lo = {std::min(r.lo.x, f.position[i].x - f.radius[i]),
-              std::min(r.lo.y, f.position[i].y - f.radius[i])};
-      r.hi = {std::max(r.hi.x, f.position[i].x + f.radius[i]),
-              std::max(r.hi.y, f.position[i].y + f.radius[i])};
-    }
-  return r;
+// Grows r to take in the free grains of a frame.
+void take_in(Rect& r, const Frame& f) {
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    if (f.kind[i] != 0) continue;
+    r.lo = {std::min(r.lo.x, f.position[i].x - f.radius[i]),
+            std::min(r.lo.y, f.position[i].y - f.radius[i])};
+    r.hi = {std::max(r.hi.x, f.position[i].x + f.radius[i]),
+            std::max(r.hi.y, f.position[i].y + f.radius[i])};
+  }
 }
 
-std::string number(double v) {
-  return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null";
-}
+constexpr Rect empty_rect{
+    {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()},
+    {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()}};
 
 } // namespace
 
@@ -47,7 +43,8 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   const Scenario& sc = run.scenario();
   const auto& frames = run.frames(o.from);
   const double d = 2.0 * run.mean_radius();
-  const Rect seen = extent(frames);
+  Rect seen = empty_rect; // where the grains went, over all frames
+  for (const Frame& f : frames) take_in(seen, f);
   // the band: given, or just above the orifice (2 orifice widths high), or the middle fifth of
   // the bed at the start
   double y0 = 0.0, y1 = 0.0, x0 = seen.lo.x, x1 = seen.hi.x;
@@ -57,7 +54,8 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
     y0 = 0.0, y1 = 2.0 * sc.geometry.orifice;
     x0 = 0.0, x1 = sc.geometry.width;
   } else {
-    const Rect start = extent({frames.front()});
+    Rect start = empty_rect;
+    take_in(start, frames.front());
     y0 = start.lo.y + 0.4 * (start.hi.y - start.lo.y);
     y1 = start.lo.y + 0.6 * (start.hi.y - start.lo.y);
   }
@@ -95,8 +93,8 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   std::string json = fmt::format(
       "{{\"band\": [{}, {}], \"bins\": {}, \"snapshots\": {}, \"from\": {}, \"centre_vy\": {}, "
       "\"edge_vy\": {}",
-      number(y0), number(y1), bins, frames.size(), number(frames.front().time), number(centre),
-      number(edges));
+      json_number(y0), json_number(y1), bins, frames.size(), json_number(frames.front().time),
+      json_number(centre), json_number(edges));
   fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots; v_y centre {:.4g} m/s, "
              "edges {:.4g} m/s\n",
              y0, y1, bins, frames.size(), centre, edges);
@@ -116,8 +114,9 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
       (out / "speed_map.json").string(),
       fmt::format("{{\"nx\": {}, \"ny\": {}, \"cell\": {}, \"region\": [{}, {}, {}, {}], "
                   "\"snapshots\": {}}}\n",
-                  m.nx, m.ny, number(cell), number(m.region.lo.x), number(m.region.lo.y),
-                  number(m.region.hi.x), number(m.region.hi.y), frames.size()));
+                  m.nx, m.ny, json_number(cell), json_number(m.region.lo.x),
+                  json_number(m.region.lo.y), json_number(m.region.hi.x),
+                  json_number(m.region.hi.y), frames.size()));
 
   if (has_orifice(sc)) { // the discharge through the orifice at y = 0
     const Discharge q = discharge(frames, 0.0);
@@ -127,8 +126,9 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
     write_file_atomically((out / "discharge.csv").string(), dc);
     json += fmt::format(", \"rate\": {}, \"rate_first_half\": {}, \"rate_second_half\": {}, "
                         "\"flow_from\": {}, \"flow_to\": {}",
-                        number(q.rate), number(q.rate_first_half), number(q.rate_second_half),
-                        number(q.flow_from), number(q.flow_to));
+                        json_number(q.rate), json_number(q.rate_first_half),
+                        json_number(q.rate_second_half), json_number(q.flow_from),
+                        json_number(q.flow_to));
     s.numbers.emplace_back("flow rate (10% to 90% through)",
                            fmt::format("{:.1f} grains/s", q.rate));
     s.numbers.emplace_back(
@@ -172,8 +172,8 @@ Section analyze_tracks(RunData& run) {
     const double span = points.back().time - points.front().time;
     json += fmt::format("{}{{\"id\": {}, \"path_length\": {}, \"displacement\": [{}, {}], "
                         "\"mean_speed\": {}}}",
-                        json.back() == '[' ? "" : ", ", id, number(path), number(net.x),
-                        number(net.y), number(span > 0.0 ? path / span : 0.0));
+                        json.back() == '[' ? "" : ", ", id, json_number(path), json_number(net.x),
+                        json_number(net.y), json_number(span > 0.0 ? path / span : 0.0));
     s.numbers.emplace_back(fmt::format("particle {}: path, net (dx, dy)", id),
                            fmt::format("{:.4g} m, ({:.4g}, {:.4g}) m", path, net.x, net.y));
   }

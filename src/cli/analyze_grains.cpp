@@ -17,14 +17,6 @@ namespace talus::cli {
 
 namespace {
 
-std::string number(double v) {
-  return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null";
-}
-
-std::string csv_number(double v) {
-  return std::isfinite(v) ? fmt::format("{:.6g}", v) : "";
-}
-
 std::vector<double> freeze_times(const fs::path& file) {
   std::ifstream in(file);
   if (!in)
@@ -91,9 +83,10 @@ Section analyze_segregation(RunData& run, const AnalysisOptions& o) {
                   "\"index_start\": {}, \"index_end\": {}, \"largest_depth_fraction_start\": {}, "
                   "\"largest_depth_fraction_end\": {}, \"wall_drift\": {}, \"centre_drift\": {}, "
                   "\"bin_width\": {}}}\n",
-                  number(g.large_radius), g.large_count, g.largest.size(), number(g.index.front()),
-                  number(index), number(g.largest_depth_fraction.front()), number(depth),
-                  number(wall_drift), number(centre_drift), number(w)));
+                  json_number(g.large_radius), g.large_count, g.largest.size(),
+                  json_number(g.index.front()), json_number(index),
+                  json_number(g.largest_depth_fraction.front()), json_number(depth),
+                  json_number(wall_drift), json_number(centre_drift), json_number(w)));
   Section s{"Size segregation", {}, {}, {}};
   s.summary = fmt::format(
       "Grains with R >= {:.3g} mm count as large ({} of them). Heights are of centres above the "
@@ -138,19 +131,19 @@ Section analyze_frost(RunData& run) {
   for (std::size_t k = 0; k < c.time.size(); ++k) {
     const char* sep = k ? ", " : "";
     cycles += fmt::format("{}{}", sep, k);
-    index += fmt::format("{}{}", sep, number(c.sorting_index[k]));
-    cover += fmt::format("{}{}", sep, number(c.surface_cover[k]));
+    index += fmt::format("{}{}", sep, json_number(c.sorting_index[k]));
+    cover += fmt::format("{}{}", sep, json_number(c.surface_cover[k]));
   }
   for (std::size_t s = 0; s < c.stones.size(); ++s)
     rise += fmt::format("{}{{\"id\": {}, \"radius\": {}, \"start_depth\": {}, "
                         "\"rise_per_cycle\": {}}}",
-                        s ? ", " : "", c.stones[s], number(c.stone_size[s]),
-                        number(c.start_depth[s]), number(c.rise_per_cycle[s]));
+                        s ? ", " : "", c.stones[s], json_number(c.stone_size[s]),
+                        json_number(c.start_depth[s]), json_number(c.rise_per_cycle[s]));
   write_file_atomically(
       (out / "frost.json").string(),
       fmt::format("{{\"freezes\": {}, \"stone_radius\": {}, \"cycles\": {}], "
                   "\"sorting_index\": {}], \"surface_cover\": {}], \"stones\": {}]}}\n",
-                  c.time.size(), number(c.stone_radius), cycles, index, cover, rise));
+                  c.time.size(), json_number(c.stone_radius), cycles, index, cover, rise));
   Section s{"Frost heave, cycle by cycle", {}, {}, {}};
   s.summary = fmt::format(
       "{} samples of the bed at rest (frost.csv: before each freeze, and at the end). Heights of "

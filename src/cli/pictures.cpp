@@ -136,7 +136,6 @@ std::size_t render_run(const fs::path& dir, const PictureRequest& r, const std::
 std::size_t make_movie(const fs::path& dir, const PictureRequest& r, double fps, int width) {
   if (std::system("command -v ffmpeg > /dev/null 2>&1") != 0)
     throw InvalidArgument("a movie needs ffmpeg (apt-get install ffmpeg)");
-  const auto shots = snapshots_of(dir);
   const fs::path frames = dir / "movie_frames";
   fs::remove_all(frames);
   const std::size_t n = render_run(dir, r, "all", width, frames);

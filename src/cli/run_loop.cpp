@@ -134,10 +134,6 @@ public:
       const double phase = std::min(s.frost.freeze_time, s.frost.thaw_time);
       front_every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(phase / 1000.0 / dt));
     }
-    for (std::size_t i = 0; i < sim_.world().particles.size(); ++i)
-      if (sim_.world().particles.is_free(i))
-        weight_scale_ += sim_.world().particles.mass[i] * norm(sim_.world().gravity) *
-                         sim_.world().particles.radius[i];
   }
 
   void open_files(bool fresh) {
@@ -332,11 +328,11 @@ private:
 
   // The grains are at rest and the last freeze (or thaw) is at least min_interval ago.
   bool at_rest() {
-    weight_scale_ = 0.0; // sum of m g R over the free grains (a frost may have held some)
+    double weight_scale = 0.0; // sum of m g R over the free grains (a frost may hold some)
     const Particles& p = sim_.world().particles;
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.is_free(i)) weight_scale_ += p.mass[i] * norm(sim_.world().gravity) * p.radius[i];
-    return last_kinetic_ < s_.frost.kinetic_threshold * weight_scale_ &&
+      if (p.is_free(i)) weight_scale += p.mass[i] * norm(sim_.world().gravity) * p.radius[i];
+    return last_kinetic_ < s_.frost.kinetic_threshold * weight_scale &&
            sim_.time() - book_.last_freeze >= s_.frost.min_interval;
   }
 
@@ -449,7 +445,7 @@ private:
   std::uint64_t front_every_ = 1;
   bool tty_ = false, printed_ = false;
   double next_report_ = 0.1;
-  double weight_scale_ = 0.0, last_kinetic_ = 0.0;
+  double last_kinetic_ = 0.0;
   std::chrono::steady_clock::time_point last_print_{};
 };
 

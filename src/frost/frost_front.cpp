@@ -61,10 +61,6 @@ bool FrostFront::is_stone(const Particles& p, std::size_t i) const {
   return p.radius[i] >= p_.stone_radius;
 }
 
-std::size_t FrostFront::frozen_count() const {
-  return static_cast<std::size_t>(std::count(frozen_.begin(), frozen_.end(), 1));
-}
-
 void FrostFront::start_freeze(Simulation& sim) {
   Particles& p = sim.world().particles;
   if (material_.size() == p.size()) // thawed fines get their own material back

@@ -64,7 +64,6 @@ public:
   const std::vector<double>& front_depth() const { return front_; }
   /// Heave so far this cycle, per column, m.
   const std::vector<double>& heave() const { return heave_; }
-  std::size_t frozen_count() const;
   const FrostFrontParameters& parameters() const { return p_; }
 
   /// The model's state as numbers, for a checkpoint, and back.

@@ -71,20 +71,6 @@ struct RowBlock {
   std::vector<std::uint32_t> count; // entries of each row
 };
 
-// Joins the blocks' rows in order into CSR arrays (offset has n + 1 entries).
-template <class Block, class Append>
-void join_blocks(std::vector<Block>& blocks, std::vector<std::uint32_t>& offset, Append append) {
-  std::size_t row = 0;
-  offset[0] = 0;
-  for (Block& b : blocks) {
-    for (const std::uint32_t c : b.count) {
-      offset[row + 1] = offset[row] + c;
-      ++row;
-    }
-    append(b);
-  }
-}
-
 void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, double skin,
                  int threads) {
   const std::size_t n = p.size();
@@ -148,12 +134,15 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
       out.count.push_back(static_cast<std::uint32_t>(row.size()));
     }
   }
+  // join the blocks in order
   list.neighbour.clear();
   list.image.clear();
-  join_blocks(block, list.row_offset, [&](RowBlock& b) {
+  std::size_t i = 0;
+  for (const RowBlock& b : block) {
+    for (const std::uint32_t c : b.count) list.row_offset[i + 1] = list.row_offset[i] + c, ++i;
     list.neighbour.insert(list.neighbour.end(), b.neighbour.begin(), b.neighbour.end());
     list.image.insert(list.image.end(), b.image.begin(), b.image.end());
-  });
+  }
 
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, threads);

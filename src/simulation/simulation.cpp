@@ -65,12 +65,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
   if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
-  for (const Driver& d : world_.drivers)
-    driven_.insert(driven_.end(), d.targets.particles.begin(), d.targets.particles.end());
-  for (std::size_t i = 0; i < world_.particles.size(); ++i) // held by an outside model
-    if (world_.particles.kind[i] == Kind::moved &&
-        std::find(driven_.begin(), driven_.end(), i) == driven_.end())
-      driven_.push_back(static_cast<std::uint32_t>(i));
+  list_moved();
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
@@ -99,12 +94,7 @@ void Simulation::step() {
                                                       : verlet_predict(p, dt, threads_, drift);
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
-  if (driven_stale_) { // every moved particle: the drivers' and the held ones
-    driven_.clear();
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.kind[i] == Kind::moved) driven_.push_back(static_cast<std::uint32_t>(i));
-    driven_stale_ = false;
-  }
+  if (driven_stale_) list_moved();
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
   compute_forces();
@@ -114,6 +104,14 @@ void Simulation::step() {
   ++steps_;
   time_ = t_next;
   guard();
+}
+
+void Simulation::list_moved() {
+  // drivers move only Kind::moved particles (attach checks), and held ones are Kind::moved too
+  driven_.clear();
+  for (std::size_t i = 0; i < world_.particles.size(); ++i)
+    if (world_.particles.kind[i] == Kind::moved) driven_.push_back(static_cast<std::uint32_t>(i));
+  driven_stale_ = false;
 }
 
 void Simulation::hold(std::uint32_t i, bool held) {

@@ -88,6 +88,7 @@ private:
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
   void compute_forces();
   void guard() const;
+  void list_moved(); ///< driven_: every Kind::moved particle
 
   World world_;
   SimulationConfig config_;
