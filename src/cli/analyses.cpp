@@ -38,6 +38,7 @@ const std::vector<Frame>& RunData::frames(double from) {
   if (all_.empty())
     for (const Snapshot& s : snapshots_of(dir_))
       all_.push_back(read_vtp_frame(s.particles.string(), s.walls.string(), s.time));
+  if (all_.front().time >= from - 1e-12) return all_; // every snapshot: no copy
   if (from != picked_from_) {
     picked_.clear();
     for (const Frame& f : all_)
