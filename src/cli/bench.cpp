@@ -152,6 +152,8 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  ns per particle-step:       {:.2f}\n", per * 1e9);
   fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
+  fmt::print("  list entries per particle:  {:.3f} (half list)\n",
+             static_cast<double>(sim.neighbours().pair_count()) / n);
   fmt::print("  peak memory per particle:   {:.0f} bytes\n", bytes);
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
   double lammps = 0.0;

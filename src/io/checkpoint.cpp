@@ -161,7 +161,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   for (const Driver& d : world.drivers) write_driver(w, d);
   const NeighbourList& l = c.state.neighbours;
   w.vec(l.row_offset), w.vec(l.neighbour), w.vec(l.image), w.vec(l.history);
-  w.vec(l.col_offset), w.vec(l.col_entry), w.vec(l.wall_offset), w.vec(l.wall_segment);
+  w.vec(l.wall_offset), w.vec(l.wall_segment);
   w.vec(l.wall_history), w.vec(l.reference), w.vec(l.segment_reference);
   w.pod(l.skin), w.pod(l.builds);
   w.pod(c.state.time), w.pod(c.state.steps);
@@ -211,7 +211,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   for (Driver& d : world.drivers) d = read_driver(r);
   NeighbourList& l = c.state.neighbours;
   r.vec(l.row_offset), r.vec(l.neighbour), r.vec(l.image), r.vec(l.history);
-  r.vec(l.col_offset), r.vec(l.col_entry), r.vec(l.wall_offset), r.vec(l.wall_segment);
+  r.vec(l.wall_offset), r.vec(l.wall_segment);
   r.vec(l.wall_history), r.vec(l.reference), r.vec(l.segment_reference);
   l.skin = r.pod<double>();
   l.builds = r.pod<std::uint64_t>();

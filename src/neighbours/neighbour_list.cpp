@@ -36,6 +36,36 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
   return false;
 }
 
+std::uint32_t force_block_rows(std::size_t n) {
+  return static_cast<std::uint32_t>(std::max<std::size_t>(64, (n + 15) / 16));
+}
+
+void index_force_blocks(NeighbourList& list) {
+  const std::size_t n = list.row_offset.size() - 1;
+  const std::uint32_t rows = force_block_rows(n);
+  const std::size_t blocks = (n + rows - 1) / rows;
+  list.block_rows = rows;
+  list.block_first_slot.assign(blocks + 1, 0);
+  list.deferred_offset.assign(n + 1, 0);
+  std::uint32_t slots = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    list.block_first_slot[b] = slots;
+    const std::size_t last = std::min(n, (b + 1) * rows);
+    for (std::uint32_t e = list.row_offset[b * rows]; e < list.row_offset[last]; ++e)
+      if (list.neighbour[e] >= last) ++slots, ++list.deferred_offset[list.neighbour[e] + 1];
+  }
+  list.block_first_slot[blocks] = slots;
+  for (std::size_t k = 0; k < n; ++k) list.deferred_offset[k + 1] += list.deferred_offset[k];
+  list.deferred_slot.resize(slots);
+  std::vector<std::uint32_t> fill(list.deferred_offset.begin(), list.deferred_offset.end() - 1);
+  std::uint32_t slot = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const std::size_t last = std::min(n, (b + 1) * rows);
+    for (std::uint32_t e = list.row_offset[b * rows]; e < list.row_offset[last]; ++e)
+      if (list.neighbour[e] >= last) list.deferred_slot[fill[list.neighbour[e]]++] = slot++;
+  }
+}
+
 namespace {
 
 // A CSR table of (key, history) rows, keys sorted within each row.
@@ -147,14 +177,7 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, threads);
 
-  // transpose: for each particle, the entries where it is the second partner, in entry order
-  list.col_offset.assign(n + 1, 0);
-  for (const std::uint32_t j : list.neighbour) ++list.col_offset[j + 1];
-  for (std::size_t k = 0; k < n; ++k) list.col_offset[k + 1] += list.col_offset[k];
-  list.col_entry.resize(list.neighbour.size());
-  std::vector<std::uint32_t> fill(list.col_offset.begin(), list.col_offset.end() - 1);
-  for (std::size_t e = 0; e < list.neighbour.size(); ++e)
-    list.col_entry[fill[list.neighbour[e]]++] = static_cast<std::uint32_t>(e);
+  index_force_blocks(list);
 }
 
 void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin) {

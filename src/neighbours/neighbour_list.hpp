@@ -23,9 +23,14 @@ struct NeighbourList {
   std::vector<std::uint32_t> neighbour; ///< j > i, sorted within a row
   std::vector<ImageShift> image;
   std::vector<double> history; ///< tangential spring s (m) of each pair, 0 when not touching
-  // the transpose: entries in which particle k is the second particle, in entry order
-  std::vector<std::uint32_t> col_offset;
-  std::vector<std::uint32_t> col_entry;
+  // Force blocks (derived from the rows by index_force_blocks): rows are cut into blocks of
+  // block_rows, a number that depends on the particle count only. An entry whose second particle
+  // lies beyond its row's block is deferred: its force waits in a slot (numbered in entry order)
+  // and is added once every block is done, so blocks can run side by side on any thread count.
+  std::uint32_t block_rows = 0;
+  std::vector<std::uint32_t> block_first_slot; ///< first deferred slot of each block, then total
+  std::vector<std::uint32_t> deferred_offset;  ///< CSR over particles: deferred slots whose
+  std::vector<std::uint32_t> deferred_slot;    ///< second particle is k, in entry order
   // particle-segment pairs, CSR over particles
   std::vector<std::uint32_t> wall_offset;
   std::vector<std::uint32_t> wall_segment;
@@ -42,6 +47,14 @@ struct NeighbourList {
     return {image[entry].sx * l.x, image[entry].sy * l.y};
   }
 };
+
+/// Rows per force block for n particles: n / 16, at least 64 (a function of n only, so that
+/// results do not depend on the thread count).
+std::uint32_t force_block_rows(std::size_t n);
+
+/// Fills the force-block fields of a list from its rows (build_neighbour_list calls it; a list
+/// read back from a checkpoint needs it too).
+void index_force_blocks(NeighbourList& list);
 
 /// True when some particle or wall end point moved more than half the skin since the last build.
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);

@@ -44,59 +44,58 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
   return false;
 }
 
-// Stores each pair's force in its list entry (for the parallel gather).
-struct StoreInEntry {
-  std::vector<PairForce>& out;
-  void operator()(Particles&, std::uint32_t e, std::ptrdiff_t, std::uint32_t,
-                  const PairForce& f) const {
-    out[e] = f;
-  }
-  void none(std::uint32_t e) const { out[e] = {}; }
-};
-
-// Adds each pair's force to both particles at once (one thread). Visiting the entries in order,
-// a particle receives first the entries where it is the second partner (earlier rows), then its
-// own row: the order gather() sums in, so both ways give bit-identical forces.
-struct ScatterToParticles {
-  void operator()(Particles& p, std::uint32_t, std::ptrdiff_t i, std::uint32_t j,
-                  const PairForce& f) const {
-    p.force[i] += f.force;
-    p.torque[i] += f.torque_i;
-    p.force[j] -= f.force;
-    p.torque[j] += f.torque_j;
-  }
-  void none(std::uint32_t) const {}
-};
-
-template <class N, class T, class Sink>
+// Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
+// force of its own particles to their weight, then adds each touching pair's force to both
+// partners in entry order, except that a partner beyond the block gets its share later, from a
+// deferred slot. A block writes only its own particles, so blocks run side by side, and the order
+// of every sum is fixed by the list alone: results do not depend on the thread count.
+template <class N, class T>
 double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
-                  const Sink& sink, double dt, int threads) {
+                  Vec2 gravity, std::vector<PairForce>& deferred, double dt, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
+  const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
   const Vec2 box = domain.size();
   double worst = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const Vec2 ri = p.position[i];
-    const double Ri = p.radius[i];
-    for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
-      const std::uint32_t j = list.neighbour[e];
-      const Vec2 shift{list.image[e].sx * box.x, list.image[e].sy * box.y};
-      const Vec2 d = ri - (p.position[j] + shift);
-      const double dist2 = norm2(d);
-      const double reach = Ri + p.radius[j];
-      if (dist2 >= reach * reach || dist2 == 0.0) {
-        sink.none(e);
-        list.history[e] = 0.0;
-        continue;
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
+    for (std::ptrdiff_t k = first; k < last; ++k) {
+      p.force[k] = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
+      p.torque[k] = 0.0;
+    }
+    std::uint32_t slot = list.block_first_slot[b];
+    for (std::ptrdiff_t i = first; i < last; ++i) {
+      const Vec2 ri = p.position[i];
+      const double Ri = p.radius[i];
+      for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
+        const std::uint32_t j = list.neighbour[e];
+        const bool later = j >= last; // j belongs to a later block
+        const Vec2 shift{list.image[e].sx * box.x, list.image[e].sy * box.y};
+        const Vec2 d = ri - (p.position[j] + shift);
+        const double dist2 = norm2(d);
+        const double reach = Ri + p.radius[j];
+        if (dist2 >= reach * reach || dist2 == 0.0) {
+          list.history[e] = 0.0;
+          if (later) deferred[slot++] = {};
+          continue;
+        }
+        const double dist = std::sqrt(dist2);
+        const ContactGeometry g = pair_geometry(
+            d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i], p.velocity[j],
+            p.angular_velocity[i], p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
+        const PairForce f(
+            contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt));
+        p.force[i] += f.force;
+        p.torque[i] += f.torque_i;
+        if (later) [[unlikely]] {
+          deferred[slot++] = f;
+        } else {
+          p.force[j] -= f.force;
+          p.torque[j] += f.torque_j;
+        }
+        worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
       }
-      const double dist = std::sqrt(dist2);
-      const ContactGeometry g = pair_geometry(
-          d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i], p.velocity[j],
-          p.angular_velocity[i], p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
-      sink(p, e, i, j,
-           PairForce(
-               contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt)));
-      worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
     }
   }
   return worst;
@@ -139,47 +138,24 @@ double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, cons
   return worst;
 }
 
-// Every particle sums, in a fixed order: gravity, the entries where it is the second partner
-// (in entry order), its own row, its wall contacts. Threads change nothing in the result.
-void gather(Particles& p, const NeighbourList& list, const std::vector<PairForce>& pf,
-            const std::vector<PairForce>& wf, Vec2 gravity, int threads) {
+// Every particle adds, in a fixed order, its deferred pair forces (in entry order), then its
+// wall contacts; then the walls sum their reactions, particle by particle.
+void finish_forces(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
+                   const std::vector<PairForce>& wf, Segments& walls, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
-    Vec2 f = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
-    double tau = 0.0;
-    for (std::uint32_t c = list.col_offset[k]; c < list.col_offset[k + 1]; ++c) {
-      const std::uint32_t e = list.col_entry[c];
-      f -= pf[e].force;
-      tau += pf[e].torque_j;
+    for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
+      const PairForce& f = deferred[list.deferred_slot[c]];
+      p.force[k] -= f.force;
+      p.torque[k] += f.torque_j;
     }
-    for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e) {
-      f += pf[e].force;
-      tau += pf[e].torque_i;
-    }
-    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
-      f += wf[e].force;
-      tau += wf[e].torque_i;
-    }
-    p.force[k] = f;
-    p.torque[k] = tau;
-  }
-}
-
-// The one-thread path: wall contacts to the grains, and their reaction to the walls, in one pass.
-void add_walls(Particles& p, const NeighbourList& list, const std::vector<PairForce>& wf,
-               Segments& walls) {
-  for (std::size_t k = 0; k < p.size(); ++k)
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
-      walls[list.wall_segment[e]].force -= wf[e].force;
     }
-}
-
-// With threads the grains gathered their wall contacts; the walls sum theirs here, in order.
-void sum_wall_forces(const Particles& p, const NeighbourList& list,
-                     const std::vector<PairForce>& wf, Segments& walls) {
+  }
+  for (Segment& s : walls) s.force = {};
   for (std::size_t k = 0; k < p.size(); ++k)
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
@@ -235,34 +211,17 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
 void Simulation::compute_forces() {
   Particles& p = world_.particles;
   wall_force_.resize(list_.wall_segment.size());
+  deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
-  const bool serial = threads_ == 1;
-  if (serial) {
-    pair_force_.clear();
-    for (std::size_t k = 0; k < p.size(); ++k) {
-      p.force[k] = p.kind[k] == Kind::free ? p.mass[k] * world_.gravity : Vec2{};
-      p.torque[k] = 0.0;
-    }
-  } else {
-    pair_force_.resize(list_.pair_count());
-  }
   max_overlap_seen_ =
       with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
-        const double a =
-            serial ? pair_stage<N, T>(p, list_, pairs_, world_.domain, ScatterToParticles{}, dt, 1)
-                   : pair_stage<N, T>(p, list_, pairs_, world_.domain, StoreInEntry{pair_force_},
-                                      dt, threads_);
+        const double a = pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity,
+                                          deferred_force_, dt, threads_);
         const double b =
             wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_);
         return std::max(a, b);
       });
-  for (Segment& s : world_.walls) s.force = {};
-  if (serial) {
-    add_walls(p, list_, wall_force_, world_.walls);
-  } else {
-    gather(p, list_, pair_force_, wall_force_, world_.gravity, threads_);
-    sum_wall_forces(p, list_, wall_force_, world_.walls);
-  }
+  finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, threads_);
 }
 
 } // namespace talus

@@ -69,6 +69,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
+    index_force_blocks(list_); // derived from the rows, not stored
     config_.skin = list_.skin;
     return;
   }

@@ -94,7 +94,7 @@ private:
   SimulationConfig config_;
   PairTable pairs_;
   NeighbourList list_;
-  std::vector<PairForce> pair_force_;
+  std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
   std::vector<PairForce> wall_force_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;

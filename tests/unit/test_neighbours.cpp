@@ -2,6 +2,7 @@
 // dense, polydisperse and periodic configurations. Contact history survives rebuilds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <tuple>
 
@@ -62,18 +63,33 @@ TEST_P(NeighbourListVsBruteForce, FindsExactlyThePairsWithinReach) {
     NeighbourList l;
     build_neighbour_list(l, p, {}, d, skin);
     EXPECT_EQ(listed(l), brute_force(p, d, skin)) << c.name << ", skin " << skin;
-    // the transpose lists every entry once, under its second particle
-    std::size_t total = 0;
+    // deferred slots: exactly the entries whose second particle lies beyond the row's block,
+    // numbered in entry order, each listed once under its second particle
+    std::vector<std::uint32_t> later; // second particle of each deferred entry, in entry order
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      const std::uint32_t block_end = std::min<std::uint32_t>(
+          static_cast<std::uint32_t>(p.size()), (i / l.block_rows + 1) * l.block_rows);
+      for (std::uint32_t e = l.row_offset[i]; e < l.row_offset[i + 1]; ++e)
+        if (l.neighbour[e] >= block_end) later.push_back(l.neighbour[e]);
+    }
+    ASSERT_EQ(l.block_first_slot.back(), later.size());
+    std::vector<int> seen(later.size(), 0);
     for (std::uint32_t k = 0; k < p.size(); ++k)
-      for (std::uint32_t q = l.col_offset[k]; q < l.col_offset[k + 1]; ++q, ++total)
-        EXPECT_EQ(l.neighbour[l.col_entry[q]], k);
-    EXPECT_EQ(total, l.pair_count());
+      for (std::uint32_t q = l.deferred_offset[k]; q < l.deferred_offset[k + 1]; ++q) {
+        const std::uint32_t slot = l.deferred_slot[q];
+        EXPECT_EQ(later[slot], k);
+        if (q > l.deferred_offset[k]) {
+          EXPECT_LT(l.deferred_slot[q - 1], slot);
+        }
+        ++seen[slot];
+      }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(later.size()));
     // built in blocks by several threads: the same list, entry for entry
     NeighbourList many;
     build_neighbour_list(many, p, {}, d, skin, 3);
     EXPECT_EQ(many.row_offset, l.row_offset);
     EXPECT_EQ(many.neighbour, l.neighbour);
-    EXPECT_EQ(many.col_entry, l.col_entry);
+    EXPECT_EQ(many.deferred_slot, l.deferred_slot);
   }
 }
 
