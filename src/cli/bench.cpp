@@ -26,6 +26,7 @@ namespace {
 
 struct BenchOptions {
   std::size_t n = 10000;
+  std::size_t tiles = 1;
   std::uint64_t steps = 2000;
   int threads = 1;
   bool lammps = false;
@@ -131,9 +132,11 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
 }
 
 void run_bench(const BenchOptions& o) {
-  const std::size_t nx = side(o.n), ny = side(o.n);
+  // with tiles: copies side by side of the settled square packing of n / tiles disks
+  const std::size_t ny = side(o.n / o.tiles), nx = ny * o.tiles;
   SimulationConfig config;
-  SimulationState state = settled_state(o, nx, ny, config);
+  SimulationState state = settled_state(o, ny, ny, config);
+  if (o.tiles > 1) state = tile_dense2d(state, o.tiles, config.skin);
   Simulation sim = Simulation::restore(std::move(state), config);
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
@@ -146,6 +149,7 @@ void run_bench(const BenchOptions& o) {
   const double per = seconds / (n * static_cast<double>(o.steps));
   const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
   const double bytes = peak_rss_bytes() / n;
+  const double engine_bytes = static_cast<double>(sim.footprint_bytes()) / n;
 
   fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s)\n", sim.world().particles.size(),
              nx, ny, o.steps, sim.threads());
@@ -154,10 +158,17 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
   fmt::print("  list entries per particle:  {:.3f} (half list)\n",
              static_cast<double>(sim.neighbours().pair_count()) / n);
-  fmt::print("  peak memory per particle:   {:.0f} bytes\n", bytes);
+  fmt::print("  list entries per particle:  {:.3f} (half list)\n",
+             static_cast<double>(sim.neighbours().pair_count()) / n);
+  fmt::print("  engine memory per particle: {:.0f} bytes (state, lists, history, buffers)\n",
+             engine_bytes);
+  fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",
+             bytes);
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
   double lammps = 0.0;
-  if (o.lammps) {
+  if (o.lammps && o.tiles > 1) {
+    fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
+  } else if (o.lammps) {
     lammps = run_lammps(o, nx, ny);
     if (lammps > 0.0) {
       fmt::print("  LAMMPS ns per particle-step: {:.2f}\n", lammps * 1e9);
@@ -171,12 +182,13 @@ void run_bench(const BenchOptions& o) {
   if (fresh)
     out << "date,talus_version,benchmark,n,steps,threads,ns_per_particle_step,"
            "particle_steps_per_second,contacts_per_particle,bytes_per_particle,"
-           "lammps_ns_per_particle_step,lammps_over_talus\n";
-  out << fmt::format("{:%Y-%m-%dT%H:%M:%S},{},dense2d,{},{},{},{:.3f},{:.6g},{:.3f},{:.0f},{},{}\n",
-                     fmt::gmtime(std::time(nullptr)), TALUS_VERSION, sim.world().particles.size(),
-                     o.steps, sim.threads(), per * 1e9, 1.0 / per, contacts, bytes,
-                     lammps > 0 ? fmt::format("{:.3f}", lammps * 1e9) : "",
-                     lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "");
+           "lammps_ns_per_particle_step,lammps_over_talus,nx,ny,engine_bytes_per_particle\n";
+  out << fmt::format(
+      "{:%Y-%m-%dT%H:%M:%S},{},dense2d,{},{},{},{:.3f},{:.6g},{:.3f},{:.0f},{},{},{},{},{:.0f}\n",
+      fmt::gmtime(std::time(nullptr)), TALUS_VERSION, sim.world().particles.size(), o.steps,
+      sim.threads(), per * 1e9, 1.0 / per, contacts, bytes,
+      lammps > 0 ? fmt::format("{:.3f}", lammps * 1e9) : "",
+      lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "", nx, ny, engine_bytes);
   fmt::print("appended to {}\n", csv.string());
 }
 
@@ -221,6 +233,11 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--n", o->n, "number of disks (rounded to a square)")
       ->capture_default_str()
       ->check(CLI::Range(9, 100000000));
+  cmd->add_option("--tiles", o->tiles,
+                  "copies side by side of the settled square packing of n / tiles disks (a "
+                  "large system without settling it)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,

@@ -1,6 +1,7 @@
 #pragma once
 // Time integration of the free particles. Each scheme is split into the stage before the force
 // evaluation (predict) and the stage after it (correct); fixed and moved particles are skipped.
+#include <cmath>
 #include <string_view>
 #include <vector>
 
@@ -44,9 +45,17 @@ bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 /// Returns false if a position or velocity came out non-finite.
 bool gear_correct(Particles& p, double dt, int threads);
 
-/// Velocity Verlet: half kick with the old forces, then drift. Returns the drift test's answer.
+/// Velocity Verlet: half kick with the old forces, then drift; F(t) moves to force_previous (the
+/// force stage must then set every force). Returns the drift test's answer.
 bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift);
-/// Velocity Verlet: half kick with the new forces. Returns false if a value is non-finite.
-bool verlet_correct(Particles& p, double dt, int threads);
+/// Velocity Verlet's second half kick for particle i, with the new forces (half = dt / 2): it
+/// replaces the predicted one. The force stage calls it for each particle as soon as that
+/// particle's force is complete (one pass less over memory). Returns false if the particle's
+/// velocity came out non-finite (a non-finite position or force makes it so).
+inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
+  p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
+  p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
+  return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
+}
 
 } // namespace talus

@@ -64,6 +64,9 @@ void index_force_blocks(NeighbourList& list) {
     for (std::uint32_t e = list.row_offset[b * rows]; e < list.row_offset[last]; ++e)
       if (list.neighbour[e] >= last) list.deferred_slot[fill[list.neighbour[e]]++] = slot++;
   }
+  list.late.clear();
+  for (std::size_t k = 0; k < n; ++k)
+    if (list.is_late(k)) list.late.push_back(static_cast<std::uint32_t>(k));
 }
 
 namespace {
@@ -176,8 +179,6 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
 
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, threads);
-
-  index_force_blocks(list);
 }
 
 void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin) {
@@ -210,6 +211,7 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
   list.skin = skin;
   build_pairs(list, p, domain, skin, threads);
   build_walls(list, p, walls, skin);
+  index_force_blocks(list);
   list.reference = p.position;
   list.segment_reference.resize(2 * walls.size());
   for (std::size_t s = 0; s < walls.size(); ++s) {

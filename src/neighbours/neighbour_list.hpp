@@ -31,6 +31,12 @@ struct NeighbourList {
   std::vector<std::uint32_t> block_first_slot; ///< first deferred slot of each block, then total
   std::vector<std::uint32_t> deferred_offset;  ///< CSR over particles: deferred slots whose
   std::vector<std::uint32_t> deferred_slot;    ///< second particle is k, in entry order
+  /// Particles whose force is complete only after every block: those with deferred entries or
+  /// wall contacts, in order.
+  std::vector<std::uint32_t> late;
+  bool is_late(std::size_t k) const {
+    return deferred_offset[k + 1] > deferred_offset[k] || wall_offset[k + 1] > wall_offset[k];
+  }
   // particle-segment pairs, CSR over particles
   std::vector<std::uint32_t> wall_offset;
   std::vector<std::uint32_t> wall_segment;
@@ -52,8 +58,8 @@ struct NeighbourList {
 /// results do not depend on the thread count).
 std::uint32_t force_block_rows(std::size_t n);
 
-/// Fills the force-block fields of a list from its rows (build_neighbour_list calls it; a list
-/// read back from a checkpoint needs it too).
+/// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
+/// calls it; a list read back from a checkpoint needs it too).
 void index_force_blocks(NeighbourList& list);
 
 /// True when some particle or wall end point moved more than half the skin since the last build.

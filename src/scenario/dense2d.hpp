@@ -18,4 +18,11 @@ struct Dense2d {
 Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed = 12345,
                       std::size_t count = 0);
 
+/// `copies` settled dense2d packings side by side along x. The base is periodic in x, so the
+/// copies fit edge to edge and the result is itself a settled packing, `copies` times as wide,
+/// without settling again: every per-particle field is repeated (positions shifted by the base
+/// width, ids renumbered), and the contact history of each pair is that of the base pair it
+/// copies. The neighbour list is rebuilt with `skin`.
+SimulationState tile_dense2d(const SimulationState& base, std::size_t copies, double skin);
+
 } // namespace talus

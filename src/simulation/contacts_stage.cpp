@@ -49,15 +49,21 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
 // partners in entry order, except that a partner beyond the block gets its share later, from a
 // deferred slot. A block writes only its own particles, so blocks run side by side, and the order
 // of every sum is fixed by the list alone: results do not depend on the thread count.
-template <class N, class T>
-double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
-                  Vec2 gravity, std::vector<PairForce>& deferred, double dt, int threads) {
+// `done(k)` is called for every particle whose force is complete once its row is done (rows
+// after it never name it); the late ones (NeighbourList::late) are done in finish_forces.
+template <class N, class T, class Done>
+std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs,
+                                   const Domain& domain, Vec2 gravity,
+                                   std::vector<PairForce>& deferred, double dt, const Done& done,
+                                   int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
   const Vec2 box = domain.size();
   double worst = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst)
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst) \
+    reduction(&& : finite)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
     for (std::ptrdiff_t k = first; k < last; ++k) {
@@ -96,21 +102,23 @@ double pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, con
         }
         worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
       }
+      if (!list.is_late(static_cast<std::size_t>(i))) finite = done(i) && finite;
     }
   }
-  return worst;
+  return {worst, finite};
 }
 
 template <class N, class T>
-double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, const PairTable& pairs,
-                  std::vector<PairForce>& out, double dt, int threads) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
+double wall_stage(const Particles& p, NeighbourList& list, const Segments& walls,
+                  const PairTable& pairs, std::vector<PairForce>& out, double dt, int threads) {
+  const auto late = static_cast<std::ptrdiff_t>(list.late.size());
   double worst = 0.0;
 #pragma omp parallel num_threads(threads) reduction(max : worst)
   {
     std::vector<WallHit> hits;
 #pragma omp for schedule(static)
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
+    for (std::ptrdiff_t q = 0; q < late; ++q) { // particles with wall contacts are late
+      const std::uint32_t i = list.late[q];
       const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
       if (w0 == w1) continue;
       const Vec2 ri = p.position[i];
@@ -138,13 +146,17 @@ double wall_stage(Particles& p, NeighbourList& list, const Segments& walls, cons
   return worst;
 }
 
-// Every particle adds, in a fixed order, its deferred pair forces (in entry order), then its
-// wall contacts; then the walls sum their reactions, particle by particle.
-void finish_forces(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
-                   const std::vector<PairForce>& wf, Segments& walls, int threads) {
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
+// Every late particle adds, in a fixed order, its deferred pair forces (in entry order), then its
+// wall contacts, and is done; then the walls sum their reactions, particle by particle.
+template <class Done>
+bool finish_forces(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
+                   const std::vector<PairForce>& wf, Segments& walls, const Done& done,
+                   int threads) {
+  const auto late = static_cast<std::ptrdiff_t>(list.late.size());
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
+  for (std::ptrdiff_t q = 0; q < late; ++q) {
+    const std::uint32_t k = list.late[q];
     for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
       const PairForce& f = deferred[list.deferred_slot[c]];
       p.force[k] -= f.force;
@@ -154,11 +166,13 @@ void finish_forces(Particles& p, const NeighbourList& list, const std::vector<Pa
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
     }
+    finite = done(k) && finite;
   }
   for (Segment& s : walls) s.force = {};
   for (std::size_t k = 0; k < p.size(); ++k)
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
+  return finite;
 }
 
 } // namespace
@@ -208,20 +222,28 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
   }
 }
 
-void Simulation::compute_forces() {
+bool Simulation::compute_forces(bool verlet_correct) {
   Particles& p = world_.particles;
   wall_force_.resize(list_.wall_segment.size());
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
-  max_overlap_seen_ =
-      with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
-        const double a = pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity,
-                                          deferred_force_, dt, threads_);
-        const double b =
-            wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_);
-        return std::max(a, b);
-      });
-  finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, threads_);
+  return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
+    // velocity Verlet's correction, particle by particle as soon as its force is complete
+    const auto correct = [&p, half = 0.5 * dt](std::size_t k) {
+      return verlet_correct_one(p, k, half);
+    };
+    const auto nothing = [](std::size_t) { return true; };
+    const auto stages = [&](const auto& done) {
+      const auto [worst_pair, finite_pairs] = pair_stage<N, T>(
+          p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt, done, threads_);
+      max_overlap_seen_ = std::max(
+          worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
+      const bool finite_late =
+          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_);
+      return finite_pairs && finite_late;
+    };
+    return verlet_correct ? stages(correct) : stages(nothing);
+  });
 }
 
 } // namespace talus

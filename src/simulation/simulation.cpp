@@ -98,10 +98,10 @@ void Simulation::step() {
   if (driven_stale_) list_moved();
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
-  compute_forces();
+  const bool verlet = config_.integrator == Integrator::verlet;
+  const bool finite = compute_forces(verlet); // Verlet's correction is done within
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
-  finite_ = config_.integrator == Integrator::gear ? gear_correct(p, dt, threads_)
-                                                   : verlet_correct(p, dt, threads_);
+  finite_ = verlet ? finite : gear_correct(p, dt, threads_);
   ++steps_;
   time_ = t_next;
   guard();
@@ -127,6 +127,28 @@ void Simulation::displace_held(std::uint32_t i, Vec2 d) {
   if (i >= world_.particles.size() || world_.particles.kind[i] != Kind::moved)
     throw std::logic_error("displace_held: particle " + std::to_string(i) + " is not held");
   world_.particles.position[i] += d;
+}
+
+namespace {
+template <class T> std::size_t bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+} // namespace
+
+std::size_t Simulation::footprint_bytes() const {
+  const Particles& p = world_.particles;
+  const GearDerivatives& g = p.gear;
+  const NeighbourList& l = list_;
+  return bytes(p.position) + bytes(p.velocity) + bytes(p.force) + bytes(p.angle) +
+         bytes(p.angular_velocity) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
+         bytes(p.inertia) + bytes(p.inv_mass) + bytes(p.inv_inertia) + bytes(p.material) +
+         bytes(p.kind) + bytes(p.id) + bytes(g.r2) + bytes(g.r3) + bytes(g.r4) + bytes(g.phi2) +
+         bytes(g.phi3) + bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous) +
+         bytes(world_.walls) + bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) +
+         bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
+         bytes(l.deferred_slot) + bytes(l.wall_offset) + bytes(l.wall_segment) +
+         bytes(l.wall_history) + bytes(l.reference) + bytes(l.segment_reference) +
+         bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_);
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,

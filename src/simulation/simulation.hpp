@@ -81,12 +81,17 @@ public:
   void hold(std::uint32_t i, bool held);
   /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
   void displace_held(std::uint32_t i, Vec2 d);
+  /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
+  /// (allocated capacity, not the process' resident size).
+  std::size_t footprint_bytes() const;
   /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
 private:
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
-  void compute_forces();
+  /// Forces of the current state; with `verlet_correct`, also velocity Verlet's second half kick,
+  /// particle by particle. Returns false if a corrected velocity came out non-finite.
+  bool compute_forces(bool verlet_correct = false);
   void guard() const;
   void list_moved(); ///< driven_: every Kind::moved particle
 
