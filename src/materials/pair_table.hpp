@@ -42,6 +42,8 @@ public:
   const PairParameters& operator()(std::uint16_t a, std::uint16_t b) const {
     return table_[a * n_ + b];
   }
+  /// The parameters of material a with every material b, indexed by b.
+  const PairParameters* row(std::uint16_t a) const { return &table_[a * n_]; }
   /// Replaces the mixed values for one pair (both orders).
   void set(std::uint16_t a, std::uint16_t b, const PairParameters& p);
 

@@ -72,36 +72,42 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
     }
     std::uint32_t slot = list.block_first_slot[b];
     for (std::ptrdiff_t i = first; i < last; ++i) {
-      const Vec2 ri = p.position[i];
-      const double Ri = p.radius[i];
+      // the row's own particle in registers: its force is summed here in the same order as in
+      // memory (j > i, so no entry of the row writes it)
+      const Vec2 ri = p.position[i], vi = p.velocity[i];
+      const double Ri = p.radius[i], mi = p.mass[i], wi = p.angular_velocity[i];
+      const PairParameters* with_i = pairs.row(p.material[i]);
+      Vec2 fi = p.force[i];
+      double ti = p.torque[i];
       for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
         const std::uint32_t j = list.neighbour[e];
         const bool later = j >= last; // j belongs to a later block
         const Vec2 shift{list.image[e].sx * box.x, list.image[e].sy * box.y};
         const Vec2 d = ri - (p.position[j] + shift);
         const double dist2 = norm2(d);
-        const double reach = Ri + p.radius[j];
+        const double Rj = p.radius[j];
+        const double reach = Ri + Rj;
         if (dist2 >= reach * reach || dist2 == 0.0) {
           list.history[e] = 0.0;
           if (later) deferred[slot++] = {};
           continue;
         }
-        const double dist = std::sqrt(dist2);
-        const ContactGeometry g = pair_geometry(
-            d, dist, Ri, p.radius[j], p.mass[i], p.mass[j], p.velocity[i], p.velocity[j],
-            p.angular_velocity[i], p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
-        const PairForce f(
-            contact_force<N, T>(pairs(p.material[i], p.material[j]), g, list.history[e], dt));
-        p.force[i] += f.force;
-        p.torque[i] += f.torque_i;
+        const ContactGeometry g =
+            pair_geometry(d, std::sqrt(dist2), Ri, Rj, mi, p.mass[j], vi, p.velocity[j], wi,
+                          p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
+        const PairForce f(contact_force<N, T>(with_i[p.material[j]], g, list.history[e], dt));
+        fi += f.force;
+        ti += f.torque_i;
         if (later) [[unlikely]] {
           deferred[slot++] = f;
         } else {
           p.force[j] -= f.force;
           p.torque[j] += f.torque_j;
         }
-        worst = std::max(worst, g.overlap / std::min(Ri, p.radius[j]));
+        worst = std::max(worst, g.overlap / std::min(Ri, Rj));
       }
+      p.force[i] = fi;
+      p.torque[i] = ti;
       if (!list.is_late(static_cast<std::size_t>(i))) finite = done(i) && finite;
     }
   }
