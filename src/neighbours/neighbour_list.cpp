@@ -126,6 +126,9 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
                       last = n * (b + 1) / static_cast<std::size_t>(blocks);
     RowBlock& out = block[b];
     out.count.reserve(last - first);
+    // about as many entries as the last list had per row, and some room
+    out.neighbour.reserve(n > 0 ? old_neighbour.size() * (last - first) / n * 11 / 10 + 16 : 0);
+    out.image.reserve(out.neighbour.capacity());
     std::vector<std::pair<std::uint32_t, ImageShift>> row;
     for (std::size_t i = first; i < last; ++i) {
       row.clear();
@@ -158,8 +161,10 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
           }
         }
       }
-      std::sort(row.begin(), row.end(),
-                [](const auto& a, const auto& b2) { return a.first < b2.first; });
+      // rows are short (a few entries): insertion sort beats std::sort's set-up here
+      for (std::size_t m = 1; m < row.size(); ++m)
+        for (std::size_t q = m; q > 0 && row[q - 1].first > row[q].first; --q)
+          std::swap(row[q - 1], row[q]);
       for (const auto& [j, img] : row) {
         out.neighbour.push_back(j);
         out.image.push_back(img);
