@@ -161,8 +161,10 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  ns per particle-step:       {:.2f}\n", per * 1e9);
   fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
-  fmt::print("  list entries per particle:  {:.3f} (half list)\n",
-             static_cast<double>(sim.neighbours().pair_count()) / n);
+  fmt::print("  list entries per particle:  {:.3f} (half list; {:.1f}% cross a force block)\n",
+             static_cast<double>(sim.neighbours().pair_count()) / n,
+             100.0 * sim.neighbours().block_first_slot.back() /
+                 std::max<double>(1.0, static_cast<double>(sim.neighbours().pair_count())));
   fmt::print("  engine memory per particle: {:.0f} bytes (state, lists, history, buffers)\n",
              engine_bytes);
   fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",

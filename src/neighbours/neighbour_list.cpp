@@ -37,7 +37,7 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
 }
 
 std::uint32_t force_block_rows(std::size_t n) {
-  return static_cast<std::uint32_t>(std::max<std::size_t>(64, (n + 15) / 16));
+  return static_cast<std::uint32_t>(std::max<std::size_t>(256, (n + 15) / 16));
 }
 
 void index_force_blocks(NeighbourList& list) {

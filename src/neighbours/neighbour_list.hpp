@@ -54,7 +54,7 @@ struct NeighbourList {
   }
 };
 
-/// Rows per force block for n particles: n / 16, at least 64 (a function of n only, so that
+/// Rows per force block for n particles: n / 16, at least 256 (a function of n only, so that
 /// results do not depend on the thread count).
 std::uint32_t force_block_rows(std::size_t n);
 
