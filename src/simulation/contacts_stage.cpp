@@ -82,8 +82,11 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
       for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
         const std::uint32_t j = list.neighbour[e];
         const bool later = j >= last; // j belongs to a later block
-        const Vec2 shift{list.image[e].sx * box.x, list.image[e].sy * box.y};
-        const Vec2 d = ri - (p.position[j] + shift);
+        Vec2 rj = p.position[j];
+        const ImageShift image = list.image[e];
+        if (image.sx != 0 || image.sy != 0) [[unlikely]] // across a periodic boundary
+          rj += Vec2{image.sx * box.x, image.sy * box.y};
+        const Vec2 d = ri - rj;
         const double dist2 = norm2(d);
         const double Rj = p.radius[j];
         const double reach = Ri + Rj;
