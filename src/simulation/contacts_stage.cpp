@@ -71,6 +71,8 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
       p.torque[k] = 0.0;
     }
     std::uint32_t slot = list.block_first_slot[b];
+    // the block's late particles, walked alongside the rows (no per-row lookup)
+    auto next_late = std::lower_bound(list.late.begin(), list.late.end(), first);
     for (std::ptrdiff_t i = first; i < last; ++i) {
       // the row's own particle in registers: its force is summed here in the same order as in
       // memory (j > i, so no entry of the row writes it)
@@ -111,7 +113,10 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
       }
       p.force[i] = fi;
       p.torque[i] = ti;
-      if (!list.is_late(static_cast<std::size_t>(i))) finite = done(i) && finite;
+      if (next_late != list.late.end() && *next_late == i)
+        ++next_late;
+      else
+        finite = done(i) && finite;
     }
   }
   return {worst, finite};
