@@ -133,7 +133,8 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
     for (std::size_t i = first; i < last; ++i) {
       row.clear();
       const Vec2 ri = p.position[i];
-      const int cx = grid.cell_x(ri.x), cy = grid.cell_y(ri.y);
+      const int cy = static_cast<int>(grid.cell_of[i]) / grid.nx; // the cell it was sorted into
+      const int cx = static_cast<int>(grid.cell_of[i]) - cy * grid.nx;
       for (int dy = -1; dy <= 1; ++dy) {
         int ncy = cy + dy;
         std::int8_t sy = 0;
