@@ -131,8 +131,10 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
     out.image.reserve(out.neighbour.capacity());
     std::vector<std::pair<std::uint32_t, ImageShift>> row;
     for (std::size_t i = first; i < last; ++i) {
-      row.clear();
+      std::size_t count = 0; // the row: row[0, count)
       const Vec2 ri = p.position[i];
+      const double Ri = p.radius[i] + skin;
+      const bool free_i = p.is_free(i);
       const int cy = static_cast<int>(grid.cell_of[i]) / grid.nx; // the cell it was sorted into
       const int cx = static_cast<int>(grid.cell_of[i]) - cy * grid.nx;
       for (int dy = -1; dy <= 1; ++dy) {
@@ -151,26 +153,31 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
             sx = static_cast<std::int8_t>(ncx < 0 ? -1 : 1);
             ncx -= sx * grid.nx;
           }
-          const Vec2 shift{sx * box.x, sy * box.y};
+          const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
           const std::size_t c = static_cast<std::size_t>(ncy) * grid.nx + ncx;
-          for (std::uint32_t k = grid.cell_start[c]; k < grid.cell_start[c + 1]; ++k) {
+          const std::uint32_t k0 = grid.cell_start[c], k1 = grid.cell_start[c + 1];
+          if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
+          // no branch per candidate: each is written and kept only if it qualifies (about half
+          // do, at random, which a branch predictor cannot learn)
+          for (std::uint32_t k = k0; k < k1; ++k) {
             const std::uint32_t j = grid.items[k];
-            if (j <= i || (!p.is_free(i) && !p.is_free(j))) continue;
-            const double reach = p.radius[i] + p.radius[j] + skin;
-            if (norm2(ri - (p.position[j] + shift)) < reach * reach)
-              row.emplace_back(j, ImageShift{sx, sy});
+            const double reach = Ri + p.radius[j];
+            const bool keep = (j > i) & (free_i | p.is_free(j)) &
+                              (norm2(ri_shifted - p.position[j]) < reach * reach);
+            row[count] = {j, ImageShift{sx, sy}};
+            count += keep;
           }
         }
       }
       // rows are short (a few entries): insertion sort beats std::sort's set-up here
-      for (std::size_t m = 1; m < row.size(); ++m)
+      for (std::size_t m = 1; m < count; ++m)
         for (std::size_t q = m; q > 0 && row[q - 1].first > row[q].first; --q)
           std::swap(row[q - 1], row[q]);
-      for (const auto& [j, img] : row) {
-        out.neighbour.push_back(j);
-        out.image.push_back(img);
+      for (std::size_t m = 0; m < count; ++m) {
+        out.neighbour.push_back(row[m].first);
+        out.image.push_back(row[m].second);
       }
-      out.count.push_back(static_cast<std::uint32_t>(row.size()));
+      out.count.push_back(static_cast<std::uint32_t>(count));
     }
   }
   // join the blocks in order
