@@ -33,15 +33,22 @@ int CellGrid::cell_y(double y) const {
   return std::clamp(c, 0, ny - 1);
 }
 
-void CellGrid::build(const std::vector<Vec2>& positions, const Domain& domain, double range) {
+void CellGrid::build(const std::vector<Vec2>& positions, const Domain& domain, double range,
+                     int threads) {
   periodic_x = domain.periodic_x;
   periodic_y = domain.periodic_y;
-  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
-  Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
-  for (const Vec2& p : positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  const auto n = static_cast<std::ptrdiff_t>(positions.size());
+  double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x;
+  double hi_x = std::numeric_limits<double>::lowest(), hi_y = hi_x;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(min                       \
+                                                                         : lo_x, lo_y)             \
+    reduction(max                                                                                  \
+              : hi_x, hi_y)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    lo_x = std::min(lo_x, positions[i].x), lo_y = std::min(lo_y, positions[i].y);
+    hi_x = std::max(hi_x, positions[i].x), hi_y = std::max(hi_y, positions[i].y);
   }
+  Vec2 lo{lo_x, lo_y}, hi{hi_x, hi_y};
   if (positions.empty()) lo = hi = {};
   if (periodic_x) lo.x = domain.lo.x, hi.x = domain.hi.x;
   if (periodic_y) lo.y = domain.lo.y, hi.y = domain.hi.y;
@@ -61,11 +68,10 @@ void CellGrid::build(const std::vector<Vec2>& positions, const Domain& domain, d
   const std::size_t n_cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
   cell_start.assign(n_cells + 1, 0);
   cell_of.resize(positions.size());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    const auto c = static_cast<std::uint32_t>(cell_y(positions[i].y) * nx + cell_x(positions[i].x));
-    cell_of[i] = c;
-    ++cell_start[c + 1];
-  }
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    cell_of[i] = static_cast<std::uint32_t>(cell_y(positions[i].y) * nx + cell_x(positions[i].x));
+  for (const std::uint32_t c : cell_of) ++cell_start[c + 1];
   for (std::size_t c = 0; c < n_cells; ++c) cell_start[c + 1] += cell_start[c];
   items.resize(positions.size());
   std::vector<std::uint32_t> fill(cell_start.begin(), cell_start.end() - 1);

@@ -21,7 +21,9 @@ struct CellGrid {
 
   /// Lays out cells at least `range` wide over the positions (or the domain along periodic
   /// directions) and sorts the particles into them.
-  void build(const std::vector<Vec2>& positions, const Domain& domain, double range);
+  /// `threads` share the per-particle work (the result does not depend on their number).
+  void build(const std::vector<Vec2>& positions, const Domain& domain, double range,
+             int threads = 1);
   int cell_x(double x) const;
   int cell_y(double y) const;
 };

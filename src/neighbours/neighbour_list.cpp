@@ -40,33 +40,44 @@ std::uint32_t force_block_rows(std::size_t n) {
   return static_cast<std::uint32_t>(std::max<std::size_t>(256, (n + 15) / 16));
 }
 
-void index_force_blocks(NeighbourList& list) {
+void index_force_blocks(NeighbourList& list, int threads) {
   const std::size_t n = list.row_offset.size() - 1;
   const std::uint32_t rows = force_block_rows(n);
   const std::size_t blocks = (n + rows - 1) / rows;
   list.block_rows = rows;
-  list.block_first_slot.assign(blocks + 1, 0);
+  // per block, in parallel: the second particles of its deferred entries (in entry order) and
+  // its late particles
+  std::vector<std::vector<std::uint32_t>> later(blocks), late(blocks);
   list.deferred_offset.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t bi = 0; bi < static_cast<std::ptrdiff_t>(blocks); ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    const std::size_t first = b * rows, last = std::min(n, first + rows);
+    for (std::uint32_t e = list.row_offset[first]; e < list.row_offset[last]; ++e)
+      if (list.neighbour[e] >= last) later[b].push_back(list.neighbour[e]);
+  }
+  list.block_first_slot.assign(blocks + 1, 0);
   std::uint32_t slots = 0;
   for (std::size_t b = 0; b < blocks; ++b) {
     list.block_first_slot[b] = slots;
-    const std::size_t last = std::min(n, (b + 1) * rows);
-    for (std::uint32_t e = list.row_offset[b * rows]; e < list.row_offset[last]; ++e)
-      if (list.neighbour[e] >= last) ++slots, ++list.deferred_offset[list.neighbour[e] + 1];
+    slots += static_cast<std::uint32_t>(later[b].size());
+    for (const std::uint32_t j : later[b]) ++list.deferred_offset[j + 1];
   }
   list.block_first_slot[blocks] = slots;
   for (std::size_t k = 0; k < n; ++k) list.deferred_offset[k + 1] += list.deferred_offset[k];
   list.deferred_slot.resize(slots);
   std::vector<std::uint32_t> fill(list.deferred_offset.begin(), list.deferred_offset.end() - 1);
   std::uint32_t slot = 0;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    const std::size_t last = std::min(n, (b + 1) * rows);
-    for (std::uint32_t e = list.row_offset[b * rows]; e < list.row_offset[last]; ++e)
-      if (list.neighbour[e] >= last) list.deferred_slot[fill[list.neighbour[e]]++] = slot++;
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (const std::uint32_t j : later[b]) list.deferred_slot[fill[j]++] = slot++;
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t bi = 0; bi < static_cast<std::ptrdiff_t>(blocks); ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    for (std::size_t k = b * rows; k < std::min(n, (b + 1) * rows); ++k)
+      if (list.is_late(k)) late[b].push_back(static_cast<std::uint32_t>(k));
   }
   list.late.clear();
-  for (std::size_t k = 0; k < n; ++k)
-    if (list.is_late(k)) list.late.push_back(static_cast<std::uint32_t>(k));
+  for (const auto& l : late) list.late.insert(list.late.end(), l.begin(), l.end());
 }
 
 namespace {
@@ -108,7 +119,7 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
                  int threads) {
   const std::size_t n = p.size();
   CellGrid grid;
-  grid.build(p.position, domain, 2.0 * p.max_radius() + skin);
+  grid.build(p.position, domain, 2.0 * p.max_radius() + skin, threads);
   const Vec2 box = domain.size();
 
   std::vector<std::uint32_t> old_offset = std::move(list.row_offset);
@@ -219,13 +230,18 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
 
 void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,
                           const Domain& domain, double skin, int threads) {
-  if (domain.any_periodic())
-    for (Vec2& r : p.position) r = domain.wrap(r);
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  if (domain.any_periodic()) {
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::ptrdiff_t i = 0; i < n; ++i) p.position[i] = domain.wrap(p.position[i]);
+  }
   list.skin = skin;
   build_pairs(list, p, domain, skin, threads);
   build_walls(list, p, walls, skin);
-  index_force_blocks(list);
-  list.reference = p.position;
+  index_force_blocks(list, threads);
+  list.reference.resize(p.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t i = 0; i < n; ++i) list.reference[i] = p.position[i];
   list.segment_reference.resize(2 * walls.size());
   for (std::size_t s = 0; s < walls.size(); ++s) {
     list.segment_reference[2 * s] = walls[s].a;

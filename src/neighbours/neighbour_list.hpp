@@ -60,7 +60,7 @@ std::uint32_t force_block_rows(std::size_t n);
 
 /// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
 /// calls it; a list read back from a checkpoint needs it too).
-void index_force_blocks(NeighbourList& list);
+void index_force_blocks(NeighbourList& list, int threads = 1);
 
 /// True when some particle or wall end point moved more than half the skin since the last build.
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
