@@ -15,6 +15,7 @@
 
 #include "analysis/observables.hpp"
 #include "cli/commands.hpp"
+#include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/dense2d.hpp"
 
@@ -135,6 +136,10 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
 void run_bench(const BenchOptions& o) {
   // with tiles: copies side by side of the settled square packing of n / tiles disks
   const std::size_t ny = side(o.n / o.tiles), nx = ny * o.tiles;
+  require(ny >= 3,
+          fmt::format("bench dense2d: --n {} / --tiles {} leaves a base packing of {} x {} "
+                      "disks; allowed: n / tiles >= 9",
+                      o.n, o.tiles, ny, ny));
   SimulationConfig config;
   SimulationState state = settled_state(o, ny, ny, config);
   if (o.tiles > 1) state = tile_dense2d(state, o.tiles, config.skin);
