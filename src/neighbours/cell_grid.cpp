@@ -38,17 +38,14 @@ void CellGrid::build(const std::vector<Vec2>& positions, const Domain& domain, d
   periodic_x = domain.periodic_x;
   periodic_y = domain.periodic_y;
   const auto n = static_cast<std::ptrdiff_t>(positions.size());
-  double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x;
-  double hi_x = std::numeric_limits<double>::lowest(), hi_y = hi_x;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(min                       \
-                                                                         : lo_x, lo_y)             \
-    reduction(max                                                                                  \
-              : hi_x, hi_y)
+  double lx = std::numeric_limits<double>::max(), ly = lx;
+  double hx = std::numeric_limits<double>::lowest(), hy = hx;
+#pragma omp parallel for num_threads(threads) reduction(min : lx, ly) reduction(max : hx, hy)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
-    lo_x = std::min(lo_x, positions[i].x), lo_y = std::min(lo_y, positions[i].y);
-    hi_x = std::max(hi_x, positions[i].x), hi_y = std::max(hi_y, positions[i].y);
+    lx = std::min(lx, positions[i].x), ly = std::min(ly, positions[i].y);
+    hx = std::max(hx, positions[i].x), hy = std::max(hy, positions[i].y);
   }
-  Vec2 lo{lo_x, lo_y}, hi{hi_x, hi_y};
+  Vec2 lo{lx, ly}, hi{hx, hy};
   if (positions.empty()) lo = hi = {};
   if (periodic_x) lo.x = domain.lo.x, hi.x = domain.hi.x;
   if (periodic_y) lo.y = domain.lo.y, hi.y = domain.hi.y;

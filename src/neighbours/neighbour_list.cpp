@@ -108,6 +108,16 @@ void carry_history(const HistoryRows& old_rows, const std::vector<std::uint32_t>
   }
 }
 
+// A neighbour cell index c along an axis of `cells` cells: false if it lies outside a
+// non-periodic axis; else wrapped into range, with `shift` the periodic image (-1, 0 or 1).
+bool neighbour_cell(int cells, bool periodic, int& c, std::int8_t& shift) {
+  if (c >= 0 && c < cells) return true;
+  if (!periodic) return false;
+  shift = static_cast<std::int8_t>(c < 0 ? -1 : 1);
+  c -= shift * cells;
+  return true;
+}
+
 // Rows [first, last) in blocks of contiguous particles, one block per thread, joined in order.
 struct RowBlock {
   std::vector<std::uint32_t> neighbour;
@@ -151,19 +161,11 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
       for (int dy = -1; dy <= 1; ++dy) {
         int ncy = cy + dy;
         std::int8_t sy = 0;
-        if (ncy < 0 || ncy >= grid.ny) {
-          if (!grid.periodic_y) continue;
-          sy = static_cast<std::int8_t>(ncy < 0 ? -1 : 1);
-          ncy -= sy * grid.ny;
-        }
+        if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
         for (int dx = -1; dx <= 1; ++dx) {
           int ncx = cx + dx;
           std::int8_t sx = 0;
-          if (ncx < 0 || ncx >= grid.nx) {
-            if (!grid.periodic_x) continue;
-            sx = static_cast<std::int8_t>(ncx < 0 ? -1 : 1);
-            ncx -= sx * grid.nx;
-          }
+          if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
           const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
           const std::size_t c = static_cast<std::size_t>(ncy) * grid.nx + ncx;
           const std::uint32_t k0 = grid.cell_start[c], k1 = grid.cell_start[c + 1];

@@ -183,7 +183,7 @@ bool finish_forces(Particles& p, const NeighbourList& list, const std::vector<Pa
     finite = done(k) && finite;
   }
   for (Segment& s : walls) s.force = {};
-  for (std::size_t k = 0; k < p.size(); ++k)
+  for (const std::uint32_t k : list.late) // particles with wall contacts are late, in order
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
   return finite;
