@@ -33,7 +33,8 @@ void check(const FrostFrontParameters& p) {
        "1e-3 to 1e3 (stone / soil; 1: no contrast)");
   need(p.stone_water >= 0.0 && p.stone_water <= 1e3, "stone_water",
        "0 to 1e3 (stone / soil latent heat per volume; 0: dry stones)");
-  need(p.crust_length >= 0.0, "crust_length", ">= 0 m (0: no smoothing)");
+  need(p.crust_length >= 0.0, "crust_length",
+       ">= 0 m (below the column width: each column on its own)");
   need(p.column_width > 0.0, "column_width", "> 0 m");
   need(p.stone_radius > 0.0, "stone_radius", "> 0 m");
   need(p.freeze_time > 0.0, "freeze_time", "> 0 s");
@@ -170,21 +171,15 @@ bool FrostFront::advance(Simulation& sim) {
         frozen_[i] = 1;
       }
     }
-    // the crust: heave smoothed across columns (Gaussian, sigma = crust length), weights
-    // normalised so that a uniform heave stays uniform
+    // the crust: stiff, so over ground that heaves less (a stone narrower than the crust) it is
+    // carried by the lenses beside it: each column takes the largest heave within the crust
+    // length on either side
     std::vector<double> smooth = dh;
-    if (p_.crust_length > 0.0) {
-      const double sigma = p_.crust_length / p_.column_width;
-      for (std::size_t c = 0; c < n; ++c) {
-        double sum = 0.0, weight = 0.0;
-        for (std::size_t k = 0; k < n; ++k) {
-          const double d = (static_cast<double>(c) - static_cast<double>(k)) / sigma;
-          const double w = std::exp(-0.5 * d * d);
-          sum += w * dh[k], weight += w;
-        }
-        smooth[c] = sum / weight;
-      }
-    }
+    const auto reach =
+        static_cast<std::size_t>(std::floor(p_.crust_length / p_.column_width + 1e-9));
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t k = c > reach ? c - reach : 0; k <= std::min(n - 1, c + reach); ++k)
+        smooth[c] = std::max(smooth[c], dh[k]);
     for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
     for (std::size_t i = 0; i < p.size(); ++i)
       if (frozen_[i]) {

@@ -12,8 +12,9 @@
 //     free grains still feel them. A fine freezes when its centre is above the front, a stone
 //     when its top is (the frozen layer grips it).
 //  3. Fines crossing the front add heave: heave strain x front step x the fine share of what
-//     was crossed; smoothed across columns over the crust length and applied, upward, to every
-//     frozen grain of the column.
+//     was crossed. The stiff crust rides on its highest lens within the crust length, so a
+//     stone narrower than that is lifted by the fines beside it; every frozen grain of a column
+//     moves up by its column's heave.
 //  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
 //     a fine is released when its centre has thawed, a stone only when its lowest point has
 //     (frost pull: fines slump under it first). Released grains settle under gravity; thawed
@@ -32,7 +33,7 @@ struct FrostFrontParameters {
   double heave_strain = 0.1;       ///< heave per unit depth of frozen fines
   double conductivity_ratio = 3.0; ///< stone / soil thermal conductivity (1: no contrast)
   double stone_water = 0.0;        ///< stone / soil latent heat per volume (0: dry stones)
-  double crust_length = 0.0;       ///< m: heave smoothed over this length (Gaussian sigma)
+  double crust_length = 0.0;       ///< m: the crust rides on its highest lens this far away
   double column_width = 0.0;       ///< m
   double stone_radius = 0.0;       ///< m: grains this large or larger are stones
   double freeze_time = 1.0;        ///< s: the front's descent to permafrost in pure fines
