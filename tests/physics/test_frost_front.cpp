@@ -59,10 +59,10 @@ double bed_top(const Particles& p) {
 
 // The fines with a stone of radius R (0: none) set into the bed at its middle, its top `depth`
 // below the surface (the fines it overlaps removed), at rest.
-World with_stone(double radius, double depth) {
+World with_stone(double radius, double depth, double x = 0.015) {
   World w = fines().world;
   if (radius <= 0.0) return w;
-  const Vec2 centre{0.015, bed_top(w.particles) - depth - radius};
+  const Vec2 centre{x, bed_top(w.particles) - depth - radius};
   World out;
   out.materials = w.materials;
   out.materials.push_back(out.materials[0]); // 1: thawed, wet soil (for frost.thawed_material)
@@ -182,15 +182,17 @@ struct OneStone {
 // One cycle for a stone of radius R set with its top `depth` below the surface, against a control
 // run that spends the same time without frost (a stone set into settled fines keeps sinking a
 // little into the loosened ring around it).
-OneStone one_stone(const std::string& label, double radius, double depth, FrostFrontParameters q) {
-  const Outcome control = cycles(with_stone(radius, depth), q, 1, false);
-  const Outcome o = cycles(with_stone(radius, depth), q, 1);
+OneStone one_stone(const std::string& label, double radius, double depth, FrostFrontParameters q,
+                   double x = 0.015) {
+  const Outcome control = cycles(with_stone(radius, depth, x), q, 1, false);
+  const Outcome o = cycles(with_stone(radius, depth, x), q, 1);
   const OneStone s{o.stone_lift, frost_pull_estimate(q, radius, o.stone_top_depth),
                    o.stone_rise - control.stone_rise};
-  std::printf("%-12s R %.1f mm, top %5.2f mm deep: lifted %6.3f mm by the freeze (estimate %.3f "
-              "mm), rose %6.3f mm over the cycle against the control\n",
-              label.c_str(), 1e3 * radius, 1e3 * o.stone_top_depth, 1e3 * s.lift, 1e3 * s.estimate,
-              1e3 * s.rise);
+  std::printf(
+      "%-12s x %.1f mm, R %.1f mm, top %5.2f mm deep: lifted %6.3f mm by the freeze (estimate %.3f "
+      "mm), rose %6.3f mm over the cycle against the control\n",
+      label.c_str(), 1e3 * x, 1e3 * radius, 1e3 * o.stone_top_depth, 1e3 * s.lift, 1e3 * s.estimate,
+      1e3 * s.rise);
   return s;
 }
 
@@ -198,30 +200,41 @@ OneStone one_stone(const std::string& label, double radius, double depth, FrostF
 // its bottom below the front (15 mm down), heave strain 0.3. The frozen layer grips the stone
 // and the heave of the fines beside it lifts it off the unfrozen fines it rested on: the lift at
 // the freeze's end is the cavity frost pull opens, within 20% of the estimate heave strain x
-// (D - a) (measured: 0.2% and 4%; the 20% is the tolerance: the fines' share of what the
-// front crosses is below 1 where a large stone reaches into the neighbouring columns). The larger
-// stone, whose top is nearer the surface, is lifted more. A stone below the freezing depth is
-// not lifted: within 0.2 mm (it sinks 0.1 mm into the loosened ring around it, as without frost)
-// and its rise over the cycle is within 0.1 mm of the control's. What the thaw keeps of the lift
-// is printed, also for a smaller stone held whole in the frozen layer, without the thermal
-// contrast, without frost pull and with thawed fines as mud (docs/experiments.md): it is not
-// kept (DISABLED_OneStoneKeepsItsLiftThroughTheThaw). Opt-in (2.5 minutes): TALUS_LONG_TESTS=1.
+// (D - a) (measured: 0 to 10%; the 20% is the tolerance: the fines' share of what the
+// front crosses is below 1 where a stone reaches into the neighbouring columns). The R = 5 mm
+// stone is set at three places across the bed (three packings around it), the others at the
+// middle. The larger stone, whose top is nearer the surface, is lifted more. A stone below the
+// freezing depth is not lifted: within 0.2 mm (it sinks 0.1 mm into the loosened ring around it,
+// as without frost) and its rise over the cycle is within 0.1 mm of the control's. The rises
+// over the cycle are printed, with their means over the three places, also without the thermal
+// contrast and without frost pull, for a smaller stone held whole in the frozen layer and with
+// thawed fines as mud (docs/experiments.md): they scatter by +-0.4 mm from place to place around
+// zero, so no mechanism's effect on them is asserted; the thaw keeps no measurable part of the
+// lift (DISABLED_OneStoneKeepsItsLiftThroughTheThaw). Opt-in (4.5 minutes): TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, TheFreezeLiftsAStoneByTheHeaveOfTheFinesBesideIt) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
   const FrostFrontParameters q = parameters(0.015);
-  const OneStone middle = one_stone("default", 0.005, 0.002, q);
-  EXPECT_NEAR(middle.lift, middle.estimate, 0.2 * middle.estimate);
-  const OneStone large = one_stone("larger", 0.007, 0.002, q);
-  EXPECT_NEAR(large.lift, large.estimate, 0.2 * large.estimate);
-  EXPECT_GT(large.lift, middle.lift);
-  one_stone("smaller", 0.0035, 0.002, q);
   FrostFrontParameters level = q; // no thermal contrast: a level front (frost pull alone)
   level.conductivity_ratio = 1.0;
   level.stone_water = 1.0;
-  one_stone("no contrast", 0.005, 0.002, level);
   FrostFrontParameters centre = q; // stones thaw out by their centre
   centre.frost_pull = false;
-  one_stone("no pull", 0.005, 0.002, centre);
+  std::map<std::string, double> mean_rise;
+  double middle_lift = 0.0;
+  for (const double x : {0.0125, 0.015, 0.0175}) {
+    const OneStone s = one_stone("default", 0.005, 0.002, q, x);
+    EXPECT_NEAR(s.lift, s.estimate, 0.2 * s.estimate) << "x = " << x;
+    if (x == 0.015) middle_lift = s.lift;
+    mean_rise["default"] += s.rise / 3.0;
+    mean_rise["no contrast"] += one_stone("no contrast", 0.005, 0.002, level, x).rise / 3.0;
+    mean_rise["no pull"] += one_stone("no pull", 0.005, 0.002, centre, x).rise / 3.0;
+  }
+  for (const auto& [label, rise] : mean_rise)
+    std::printf("mean rise over the three places, %s: %.3f mm\n", label.c_str(), 1e3 * rise);
+  const OneStone large = one_stone("larger", 0.007, 0.002, q);
+  EXPECT_NEAR(large.lift, large.estimate, 0.2 * large.estimate);
+  EXPECT_GT(large.lift, middle_lift);
+  one_stone("smaller", 0.0035, 0.002, q);
   FrostFrontParameters mud = q; // thawed fines as a wet, nearly frictionless "mud"
   mud.thawed_material = 1;
   one_stone("mud", 0.005, 0.002, mud);
