@@ -16,7 +16,11 @@ namespace talus {
 namespace {
 
 // Fines of R = 0.5 mm +- 0.1 mm sedimented in a box 3 cm wide (one thread: the tests run side
-// by side). Cached: each test builds it once.
+// by side). Cached: each test builds it once. Every grain is a disk (m = rho pi r^2 x 1 m), so a
+// stone presses the bed per unit width as a 2D grain should: with "sphere" masses a stone ten
+// fines wide weighs a thousand fines but rests on about ten, and sinks through a loosened bed
+// (docs/experiments.md). The stiffness is 1500 times the spheres' 2e3 N/m, as the masses are:
+// the same collision time and overlaps.
 const BuiltScenario& fines() {
   static const BuiltScenario b = build_scenario(load_scenario(R"(
 name = "frost_front_test"
@@ -30,10 +34,11 @@ seed = 3
 [[materials]]
 name = "soil"
 density = 2650.0
-normal_stiffness = 2.0e3
+normal_stiffness = 3.0e6
 restitution = 0.3
 friction = 0.5
 [particles]
+shape = "disk"
 count = 560
 size = { distribution = "uniform", mean_radius = 0.0005, spread = 0.0001 }
 [packing]
@@ -81,7 +86,7 @@ World with_stone(double radius, double depth, double x = 0.015) {
                         .kind = p.kind[i],
                         .mass = p.mass[i],
                         .inertia = p.inertia[i]});
-  out.add_particle({.position = centre, .radius = radius, .shape = Shape::sphere});
+  out.add_particle({.position = centre, .radius = radius, .shape = Shape::disk});
   return out;
 }
 
@@ -196,22 +201,24 @@ OneStone one_stone(const std::string& label, double radius, double depth, FrostF
   return s;
 }
 
-// One stone (R = 5 mm, ten fine radii, and 7 mm) with its top about 2 mm below the surface and
-// its bottom below the front (15 mm down), heave strain 0.3. The frozen layer grips the stone
-// and the heave of the fines beside it lifts it off the unfrozen fines it rested on: the lift at
-// the freeze's end is the cavity frost pull opens, within 20% of the estimate heave strain x
-// (D - a) (measured: 0 to 10%; the 20% is the issue's tolerance: the fines' share of what the
-// front crosses is below 1 where a stone reaches into the neighbouring columns). The R = 5 mm
-// stone is set at three places across the bed (three packings around it), the others at the
-// middle. The larger stone, whose top is nearer the surface, is lifted more. A stone below the
-// freezing depth is not lifted: within 0.2 mm (it sinks 0.1 mm into the loosened ring around it,
-// as without frost) and its rise over the cycle is within 0.1 mm of the control's. The rises
-// over the cycle are printed, with their means over the three places, also without the thermal
-// contrast and without frost pull, for a smaller stone held whole in the frozen layer and with
-// thawed fines as mud (docs/experiments.md): they scatter by +-0.4 mm from place to place around
-// zero, so no mechanism's effect on them is asserted; the thaw keeps no measurable part of the
-// lift (DISABLED_OneStoneKeepsItsLiftThroughTheThaw). Opt-in (4.5 minutes): TALUS_LONG_TESTS=1.
-TEST(LongFrostFront, TheFreezeLiftsAStoneByTheHeaveOfTheFinesBesideIt) {
+// One stone (R = 5 mm, ten fine radii) with its top 6 mm below the surface and its bottom below
+// the front (15 mm down), heave strain 0.3, set at three places across the bed (three packings
+// around it). Measured values in docs/experiments.md.
+// - The freeze: the frozen layer grips the stone and the heave of the fines beside it lifts it
+//   off the unfrozen fines it rested on, by the frost-pull estimate heave strain x (D - a) within
+//   20% at each place (measured: 8 to 9% less; the fines' share of what the front crosses is
+//   below 1 near the loose surface). The same for a larger stone (R = 7 mm, top 2 mm down).
+// - The cycle: the stone keeps part of the lift, at least 0.5 mm at each place (measured 1.0 to
+//   1.2 mm, scatter +-0.1 mm; the issue asks for the estimate within 20%, which is not met:
+//   DISABLED_OneStoneKeepsItsLiftThroughTheThaw). Frost pull adds to it: released by its centre
+//   instead of its lowest point, the stone keeps at least 0.1 mm less on average over the three
+//   places (measured 0.26 mm less). The larger stone keeps more than the R = 5 mm one's mean,
+//   a smaller one held whole in the frozen layer (R = 3.5 mm, top 2 mm down) keeps less.
+// - A stone below the freezing depth is neither lifted (0.2 mm) nor moved by the cycle (0.1 mm).
+// Printed only: without the thermal contrast (the stone keeps more: the front no longer runs
+// ahead beneath the stone to freeze the fines under it early) and with thawed fines as mud.
+// Opt-in (3 minutes): TALUS_LONG_TESTS=1.
+TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsPartOfTheLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
   const FrostFrontParameters q = parameters(0.015);
   FrostFrontParameters level = q; // no thermal contrast: a level front (frost pull alone)
@@ -220,36 +227,38 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneByTheHeaveOfTheFinesBesideIt) {
   FrostFrontParameters centre = q; // stones thaw out by their centre
   centre.frost_pull = false;
   std::map<std::string, double> mean_rise;
-  double middle_lift = 0.0;
   for (const double x : {0.0125, 0.015, 0.0175}) {
-    const OneStone s = one_stone("default", 0.005, 0.002, q, x);
+    const OneStone s = one_stone("default", 0.005, 0.006, q, x);
     EXPECT_NEAR(s.lift, s.estimate, 0.2 * s.estimate) << "x = " << x;
-    if (x == 0.015) middle_lift = s.lift;
+    EXPECT_GT(s.rise, 0.5e-3) << "x = " << x;
     mean_rise["default"] += s.rise / 3.0;
-    mean_rise["no contrast"] += one_stone("no contrast", 0.005, 0.002, level, x).rise / 3.0;
-    mean_rise["no pull"] += one_stone("no pull", 0.005, 0.002, centre, x).rise / 3.0;
+    mean_rise["no contrast"] += one_stone("no contrast", 0.005, 0.006, level, x).rise / 3.0;
+    mean_rise["no pull"] += one_stone("no pull", 0.005, 0.006, centre, x).rise / 3.0;
   }
   for (const auto& [label, rise] : mean_rise)
     std::printf("mean rise over the three places, %s: %.3f mm\n", label.c_str(), 1e3 * rise);
+  EXPECT_GT(mean_rise["default"], mean_rise["no pull"] + 0.1e-3);
   const OneStone large = one_stone("larger", 0.007, 0.002, q);
   EXPECT_NEAR(large.lift, large.estimate, 0.2 * large.estimate);
-  EXPECT_GT(large.lift, middle_lift);
-  one_stone("smaller", 0.0035, 0.002, q);
+  EXPECT_GT(large.rise, mean_rise["default"]);
+  const OneStone small = one_stone("smaller", 0.0035, 0.002, q);
+  EXPECT_LT(small.rise, mean_rise["default"]);
   FrostFrontParameters mud = q; // thawed fines as a wet, nearly frictionless "mud"
   mud.thawed_material = 1;
-  one_stone("mud", 0.005, 0.002, mud);
-  // below the freezing depth: the front stops 5 mm down, the stone's top is about 20 mm down
-  const OneStone deep = one_stone("deep", 0.005, 0.010, parameters(0.005));
+  one_stone("mud", 0.005, 0.006, mud);
+  // below the freezing depth: the front stops 5 mm down, the stone's top is 8 mm down (R = 3.5
+  // mm, so that it clears the floor of the 18 mm deep bed)
+  const OneStone deep = one_stone("deep", 0.0035, 0.008, parameters(0.005));
   EXPECT_LT(std::abs(deep.lift), 0.2e-3);
   EXPECT_LT(std::abs(deep.rise), 0.1e-3);
 }
 
 // The issue's check on the whole cycle: the stone keeps its lift (rise within 20% of the
-// estimate). Not met: the thaw gives the lift back (docs/experiments.md, "what the thaw keeps").
+// estimate). Not met: the stone keeps 40% of it (docs/experiments.md, "what the thaw keeps").
 // Run with --gtest_also_run_disabled_tests and TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, DISABLED_OneStoneKeepsItsLiftThroughTheThaw) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
-  const OneStone s = one_stone("default", 0.005, 0.002, parameters(0.015));
+  const OneStone s = one_stone("default", 0.005, 0.006, parameters(0.015));
   EXPECT_NEAR(s.rise, s.estimate, 0.2 * s.estimate);
 }
 
