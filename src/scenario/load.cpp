@@ -44,9 +44,23 @@ void apply_override(toml::table& root, const std::string& assignment) {
     throw ScenarioError("--set '" + assignment +
                         "': expected key=value, e.g. particles.count=5000");
   const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+  // dotted parts; an array index may also be written in brackets: materials[0].friction is
+  // materials.0.friction
   std::vector<std::string> parts;
   std::stringstream in(key);
-  for (std::string p; std::getline(in, p, '.');) parts.push_back(p);
+  for (std::string p; std::getline(in, p, '.');) {
+    std::size_t open = p.find('[');
+    parts.push_back(p.substr(0, open));
+    while (open != std::string::npos) {
+      const std::size_t close = p.find(']', open);
+      if (close == std::string::npos || close == open + 1 ||
+          (close + 1 < p.size() && p[close + 1] != '['))
+        throw ScenarioError("--set " + key + ": '" + p +
+                            "': write an array index as name[0] or name.0");
+      parts.push_back(p.substr(open + 1, close - open - 1));
+      open = close + 1 < p.size() ? close + 1 : std::string::npos;
+    }
+  }
   toml::node* node = &root;
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) node = child(*node, parts[k], true, key);
   toml::table parsed;

@@ -50,6 +50,14 @@ TEST(ScenarioLoader, SetOverridesAnyKey) {
   EXPECT_DOUBLE_EQ(s.simulation.gravity.y, -1.0);
   EXPECT_NE(error_of("", {"particles.cuont=5"}).find("did you mean 'count'"), std::string::npos);
   EXPECT_NE(error_of("", {"nonsense"}).find("key=value"), std::string::npos);
+  // an array index in brackets, as TOML users write it, is the same key
+  const Scenario b =
+      load_scenario("[[materials]]\nfriction = 0.5\n", "t", {"materials[0].friction=0.2"});
+  EXPECT_DOUBLE_EQ(b.materials[0].friction, 0.2);
+  EXPECT_NE(error_of("[[materials]]\n", {"materials[0.friction=0.2"}).find("name[0] or name.0"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[materials]]\n", {"materials[3].friction=0.2"}).find("past the end"),
+            std::string::npos);
 }
 
 TEST(ScenarioLoader, ResolvedScenarioRereadsToTheSameScenario) {
