@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/error.hpp"
@@ -19,6 +20,18 @@ double disk_area_between(double yc, double r, double ya, double yb) {
     return r * r * (s * std::sqrt(1.0 - s * s) + std::asin(s));
   };
   return primitive(yb) - primitive(ya);
+}
+
+// The top of the ground under grain s's lowest point: the highest point, on the vertical
+// through s's centre, of the grains below it (-inf: none; s rests on a wall or nothing).
+double ground_beneath(const Particles& p, std::size_t s) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    if (j == s || p.position[j].y >= p.position[s].y) continue;
+    const double dx = std::abs(p.position[j].x - p.position[s].x), r = p.radius[j];
+    if (dx < r) top = std::max(top, p.position[j].y + std::sqrt(r * r - dx * dx));
+  }
+  return top;
 }
 
 } // namespace
@@ -56,6 +69,15 @@ std::size_t FrostFront::column_of(double x) const {
   const double u = (x - p_.x_min) / p_.column_width;
   if (!(u > 0.0)) return 0;
   return std::min(surface_.size() - 1, static_cast<std::size_t>(u));
+}
+
+double FrostFront::heave_at(const std::vector<double>& h, double x) const {
+  const double u = (x - p_.x_min) / p_.column_width - 0.5; // column centres at integers
+  if (!(u > 0.0)) return h.front();
+  const auto c = static_cast<std::size_t>(u);
+  if (c + 1 >= h.size()) return h.back();
+  const double t = u - static_cast<double>(c);
+  return (1.0 - t) * h[c] + t * h[c + 1];
 }
 
 bool FrostFront::is_stone(const Particles& p, std::size_t i) const {
@@ -181,9 +203,13 @@ bool FrostFront::advance(Simulation& sim) {
       for (std::size_t k = c > reach ? c - reach : 0; k <= std::min(n - 1, c + reach); ++k)
         smooth[c] = std::max(smooth[c], dh[k]);
     for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
+    // every frozen grain moves up by the heave at its x, linear between the columns' centres:
+    // grains that touch across a column's edge move nearly together. (Moving each by its own
+    // column's heave pressed frozen grains of a faster-heaving column into those of its
+    // neighbour, unresisted while both were held, and the overlap burst out at the thaw.)
     for (std::size_t i = 0; i < p.size(); ++i)
       if (frozen_[i]) {
-        const double up = smooth[column_of(p.position[i].x)];
+        const double up = heave_at(smooth, p.position[i].x);
         if (up != 0.0) sim.displace_held(static_cast<std::uint32_t>(i), {0.0, up});
       }
     if (u < 1.0) return false;
@@ -198,7 +224,7 @@ bool FrostFront::advance(Simulation& sim) {
     const double top = surface_[c] + heave_[c], bottom = surface_[c] - front_[c];
     const double thaw = top - (top - bottom) * std::sqrt(u);
     const bool stone = is_stone(p, i) && p_.frost_pull;
-    const double lowest = p.position[i].y - (stone ? p.radius[i] : 0.0);
+    const double lowest = stone && i < ice_bottom_.size() ? ice_bottom_[i] : p.position[i].y;
     if (u >= 1.0 || lowest >= thaw) {
       sim.hold(static_cast<std::uint32_t>(i), false);
       frozen_[i] = 0;
@@ -212,6 +238,18 @@ bool FrostFront::advance(Simulation& sim) {
 }
 
 void FrostFront::start_thaw(Simulation& sim) {
+  // frost pull: the cavity the heave opened under a gripped stone holds segregation ice, and the
+  // stone rests on it until the thaw has gone through it to the ground beneath (its lowest point
+  // where nothing lies under it)
+  const Particles& p = sim.world().particles;
+  ice_bottom_.assign(p.size(), 0.0);
+  for (std::size_t s = 0; s < p.size(); ++s)
+    if (frozen_[s] && is_stone(p, s)) {
+      const std::size_t c = column_of(p.position[s].x);
+      const double frozen_bottom = surface_[c] - front_[c]; // no ice below the front
+      ice_bottom_[s] =
+          std::min(p.position[s].y - p.radius[s], std::max(frozen_bottom, ground_beneath(p, s)));
+    }
   phase_ = Phase::thawing;
   phase_start_ = sim.time();
 }
@@ -227,6 +265,8 @@ std::vector<double> FrostFront::save() const {
   for (const auto f : frozen_) out.push_back(f);
   out.push_back(static_cast<double>(material_.size()));
   out.insert(out.end(), material_.begin(), material_.end());
+  out.push_back(static_cast<double>(ice_bottom_.size()));
+  out.insert(out.end(), ice_bottom_.begin(), ice_bottom_.end());
   return out;
 }
 
@@ -262,6 +302,11 @@ void FrostFront::load(const std::vector<double>& v, std::size_t particles) {
   const auto materials = static_cast<std::size_t>(take(1)[0]);
   if (materials != 0 && materials != particles) bad();
   material_ = take(materials);
+  ice_bottom_.clear();
+  if (k == v.size()) return; // written before the ice under stones was kept: lowest points
+  const auto stones = static_cast<std::size_t>(take(1)[0]);
+  if (stones != 0 && stones != particles) bad();
+  ice_bottom_ = take(stones);
 }
 
 } // namespace talus

@@ -16,8 +16,10 @@
 //     stone narrower than that is lifted by the fines beside it; every frozen grain of a column
 //     moves up by its column's heave.
 //  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
-//     a fine is released when its centre has thawed, a stone only when its lowest point has
-//     (frost pull: fines slump under it first). Released grains settle under gravity; thawed
+//     a fine is released when its centre has thawed, a stone only when the ice under it has:
+//     the cavity the heave opened beneath a gripped stone holds segregation ice, so the stone
+//     thaws out when the thaw reaches the ground under its lowest point (frost pull: thawed
+//     fines slump into the cavity first). Released grains settle under gravity; thawed
 //     fines may take a weaker material (wet, thaw-weakened soil) until the next freeze.
 // The engine does the rest: frozen grains are held particles (Simulation::hold).
 #include <cstdint>
@@ -38,7 +40,7 @@ struct FrostFrontParameters {
   double stone_radius = 0.0;       ///< m: grains this large or larger are stones
   double freeze_time = 1.0;        ///< s: the front's descent to permafrost in pure fines
   double thaw_time = 1.0;          ///< s: the thaw front's descent through the frozen layer
-  bool frost_pull = true;          ///< stones thaw out by their lowest point (else their centre)
+  bool frost_pull = true;          ///< stones thaw out by the ice under them (else their centre)
   int thawed_material = -1;        ///< fines take this material when thawed (-1: unchanged)
   double x_min = 0.0, x_max = 0.0; ///< m: the bed's horizontal extent
 };
@@ -74,6 +76,8 @@ public:
 private:
   std::size_t column_of(double x) const;
   bool is_stone(const Particles& p, std::size_t i) const;
+  /// A per-column quantity at x: linear between the columns' centres, flat beyond the outer ones.
+  double heave_at(const std::vector<double>& per_column, double x) const;
   double front_at(std::size_t c, double target) const;
   void start_thaw(Simulation& sim);
 
@@ -88,6 +92,7 @@ private:
   std::vector<std::vector<double>> fines_; ///< per column: fine share of each slice
   std::vector<std::uint8_t> frozen_;       ///< per particle: held by the frost
   std::vector<double> material_;           ///< per particle: its material before the thaw
+  std::vector<double> ice_bottom_;         ///< per particle: y a stone thaws out at (frost pull)
 };
 
 } // namespace talus

@@ -213,17 +213,18 @@ OneStone one_stone(const std::string& label, double radius, double depth, FrostF
 //   off the unfrozen fines it rested on, by the frost-pull estimate heave strain x (D - a) within
 //   20% at each place (measured: 8 to 9% less; the fines' share of what the front crosses is
 //   below 1 near the loose surface). The same for a larger stone (R = 7 mm, top 2 mm down).
-// - The cycle: the stone keeps part of the lift, at least 0.5 mm at each place (measured 1.0 to
-//   1.2 mm, scatter +-0.1 mm; the issue asks for the estimate within 20%, which is not met:
+// - The cycle: the stone rests on the ice in its cavity until the thaw has gone through it, and
+//   keeps more than half the estimate at each place (measured 57, 60 and 77%: 1.59 to 2.12 mm;
+//   the issue asks for the estimate within 20%, which is not met:
 //   DISABLED_OneStoneKeepsItsLiftThroughTheThaw). Frost pull adds to it: released by its centre
-//   instead of its lowest point, the stone keeps at least 0.1 mm less on average over the three
-//   places (measured 0.26 mm less). The larger stone keeps more than the R = 5 mm one's mean,
-//   a smaller one held whole in the frozen layer (R = 3.5 mm, top 2 mm down) keeps less.
+//   instead, the stone keeps at least 0.5 mm less on average over the three places (measured
+//   0.90 mm less). The larger stone keeps more than the R = 5 mm one's mean, a smaller one held
+//   whole in the frozen layer (R = 3.5 mm, top 2 mm down) keeps less.
 // - A stone below the freezing depth is neither lifted (0.2 mm) nor moved by the cycle (0.1 mm).
-// Printed only: without the thermal contrast (the stone keeps more: the front no longer runs
-// ahead beneath the stone to freeze the fines under it early) and with thawed fines as mud.
+// Printed only: without the thermal contrast (the mean is 6% lower, within the scatter between
+// places) and with thawed fines as mud.
 // Opt-in (2 minutes): TALUS_LONG_TESTS=1.
-TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsPartOfTheLift) {
+TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsMostOfTheLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
   const FrostFrontParameters q = parameters(0.015);
   FrostFrontParameters level = q; // no thermal contrast: a level front (frost pull alone)
@@ -235,14 +236,14 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsPartOfTheLift) {
   for (const double x : {0.0125, 0.015, 0.0175}) {
     const OneStone s = one_stone("default", 0.005, 0.006, q, x);
     EXPECT_NEAR(s.lift, s.estimate, 0.2 * s.estimate) << "x = " << x;
-    EXPECT_GT(s.rise, 0.5e-3) << "x = " << x;
+    EXPECT_GT(s.rise, 0.5 * s.estimate) << "x = " << x;
     mean_rise["default"] += s.rise / 3.0;
     mean_rise["no contrast"] += one_stone("no contrast", 0.005, 0.006, level, x).rise / 3.0;
     mean_rise["no pull"] += one_stone("no pull", 0.005, 0.006, centre, x).rise / 3.0;
   }
   for (const auto& [label, rise] : mean_rise)
     std::printf("mean rise over the three places, %s: %.3f mm\n", label.c_str(), 1e3 * rise);
-  EXPECT_GT(mean_rise["default"], mean_rise["no pull"] + 0.1e-3);
+  EXPECT_GT(mean_rise["default"], mean_rise["no pull"] + 0.5e-3);
   const OneStone large = one_stone("larger", 0.007, 0.002, q);
   EXPECT_NEAR(large.lift, large.estimate, 0.2 * large.estimate);
   EXPECT_GT(large.rise, mean_rise["default"]);
@@ -259,7 +260,7 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsPartOfTheLift) {
 }
 
 // The issue's check on the whole cycle: the stone keeps its lift (rise within 20% of the
-// estimate). Not met: the stone keeps 40% of it (docs/experiments.md, "what the thaw keeps").
+// estimate). Not met: the stone keeps 57% of it here (docs/experiments.md, "what the thaw keeps").
 // Run with --gtest_also_run_disabled_tests and TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, DISABLED_OneStoneKeepsItsLiftThroughTheThaw) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";

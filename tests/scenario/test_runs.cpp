@@ -101,26 +101,30 @@ TEST(Resume, IsBitIdenticalToAnUninterruptedRun) {
   }
 }
 
-// The frost front's state (columns, fronts, heave, frozen grains) is in the checkpoint: a run
-// stopped in the middle of a freeze continues exactly.
-TEST(Resume, FrostFrontMidFreezeIsBitIdentical) {
+// The frost front's state (columns, fronts, heave, frozen grains, the ice under stones) is in the
+// checkpoint: a run stopped in the middle of a freeze or of a thaw continues exactly.
+TEST(Resume, FrostFrontMidFreezeOrThawIsBitIdentical) {
   const Scenario s = builtin(
       "frost_front",
       {"particles.count=150", "packing.settle_max_time=0.05", "simulation.duration=0.12",
        "frost.kinetic_threshold=1e3", "frost.min_interval=0.01", "frost.freeze_time=0.04",
        "frost.thaw_time=0.04", "frost.heave_strain=0.05", "output.checkpoint_interval=0.05"});
-  const fs::path whole = fresh_dir("frost_whole"), parts = fresh_dir("frost_parts");
+  const fs::path whole = fresh_dir("frost_whole");
   ASSERT_EQ(run(s, whole), cli::exit_completed);
-  ASSERT_EQ(run(s, parts, 0.03), cli::exit_stopped); // the freeze began at 0.01 s
-  cli::RunOptions o;
-  o.quiet = true;
-  ASSERT_EQ(cli::resume_run(parts.string(), o), cli::exit_completed);
-  EXPECT_EQ(final_state(whole), final_state(parts));
   const std::string events = read_file((whole / "frost.csv").string());
   EXPECT_NE(events.find("thawed"), std::string::npos) << events;
-  EXPECT_EQ(events, read_file((parts / "frost.csv").string()));
+  // the freeze runs from 0.01 to 0.05 s, the thaw to 0.09 s
+  for (const double stop : {0.03, 0.07}) {
+    const fs::path parts = fresh_dir("frost_parts");
+    ASSERT_EQ(run(s, parts, stop), cli::exit_stopped);
+    cli::RunOptions o;
+    o.quiet = true;
+    ASSERT_EQ(cli::resume_run(parts.string(), o), cli::exit_completed);
+    EXPECT_EQ(final_state(whole), final_state(parts)) << "stopped at " << stop << " s";
+    EXPECT_EQ(events, read_file((parts / "frost.csv").string()));
+    fs::remove_all(parts);
+  }
   fs::remove_all(whole);
-  fs::remove_all(parts);
 }
 
 TEST(Resume, ACorruptCheckpointFallsBackToThePreviousOne) {
