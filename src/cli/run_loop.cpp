@@ -180,9 +180,7 @@ public:
     };
     std::string ended = "duration";
     while (sim_.step_count() < stop_) {
-      // the steps up to the next one that something looks at run in one go (Simulation::run
-      // then fuses velocity Verlet's passes over memory; the results are the same bits)
-      sim_.run(steps_to_next_look());
+      sim_.step();
       const std::uint64_t k = sim_.step_count();
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
       if (k % thermo_every_ == 0) {
@@ -246,22 +244,6 @@ public:
   }
 
 private:
-  // Steps from now to the next step after which the loop records, checkpoints, advances the
-  // frost or stops (at least 1).
-  std::uint64_t steps_to_next_look() const {
-    const std::uint64_t k = sim_.step_count();
-    std::uint64_t next = stop_;
-    const auto at = [&](std::uint64_t every) {
-      if (every) next = std::min(next, (k / every + 1) * every);
-    };
-    if (!book_.tracked.empty()) at(track_every_);
-    at(thermo_every_);
-    if (front_ && front_->phase() != FrostFront::Phase::idle) at(front_every_);
-    at(snapshot_every_);
-    at(checkpoint_every_);
-    return next > k ? next - k : 1;
-  }
-
   // The pictures and the movie the scenario asks for (output.pictures, output.movie).
   void scenario_pictures() {
     for (const std::string& p : s_.output.pictures) {

@@ -45,26 +45,9 @@ bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 /// Returns false if a position or velocity came out non-finite.
 bool gear_correct(Particles& p, double dt, int threads);
 
-/// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the velocity
-/// set to its prediction v(t) + dt a(t). Returns whether it ended farther than sqrt(limit2) from
-/// reference[i] (a null reference: true).
-inline bool verlet_predict_one(Particles& p, std::size_t i, double dt, double half,
-                               const Vec2* reference, double limit2) {
-  const Vec2 kick = half * p.inv_mass[i] * p.force[i];
-  p.position[i] += dt * (p.velocity[i] + kick);
-  p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
-  const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
-  p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
-  p.angular_velocity[i] += 2.0 * spin_kick;
-  return !reference || norm2(p.position[i] - reference[i]) > limit2;
-}
-
 /// Velocity Verlet: half kick with the old forces, then drift; F(t) moves to force_previous (the
 /// force stage must then set every force). Returns the drift test's answer.
 bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift);
-/// The same when every particle was already predicted by the force stage of the step before
-/// (Simulation::run fuses the two): F(t) moves to force_previous.
-void verlet_predicted(Particles& p);
 /// Velocity Verlet's second half kick for particle i, with the new forces (half = dt / 2): it
 /// replaces the predicted one. The force stage calls it for each particle as soon as that
 /// particle's force is complete (one pass less over memory). Returns false if the particle's

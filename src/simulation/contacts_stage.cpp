@@ -52,20 +52,18 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
 // `done(k)` is called for every particle whose force is complete once its row is done (rows
 // after it never name it); the late ones (NeighbourList::late) are done in finish_forces.
 template <class N, class T, class Done>
-std::pair<double, std::uint8_t> pair_stage(Particles& p, NeighbourList& list,
-                                           const PairTable& pairs, const Domain& domain,
-                                           Vec2 gravity, std::vector<PairForce>& deferred,
-                                           double dt, const Done& done, int threads) {
+std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs,
+                                   const Domain& domain, Vec2 gravity,
+                                   std::vector<PairForce>& deferred, double dt, const Done& done,
+                                   int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
   const Vec2 box = domain.size();
   double worst = 0.0;
-  std::uint8_t flags = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(max                       \
-                                                                         : worst)                  \
-    reduction(|                                                                                    \
-              : flags)
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst) \
+    reduction(&& : finite)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
     const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
     for (std::ptrdiff_t k = first; k < last; ++k) {
@@ -118,10 +116,10 @@ std::pair<double, std::uint8_t> pair_stage(Particles& p, NeighbourList& list,
       if (next_late != list.late.end() && *next_late == i)
         ++next_late;
       else
-        flags |= done(i);
+        finite = done(i) && finite;
     }
   }
-  return {worst, flags};
+  return {worst, finite};
 }
 
 template <class N, class T>
@@ -165,12 +163,12 @@ double wall_stage(const Particles& p, NeighbourList& list, const Segments& walls
 // Every late particle adds, in a fixed order, its deferred pair forces (in entry order), then its
 // wall contacts, and is done; then the walls sum their reactions, particle by particle.
 template <class Done>
-std::uint8_t finish_forces(Particles& p, const NeighbourList& list,
-                           const std::vector<PairForce>& deferred, const std::vector<PairForce>& wf,
-                           Segments& walls, const Done& done, int threads) {
+bool finish_forces(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
+                   const std::vector<PairForce>& wf, Segments& walls, const Done& done,
+                   int threads) {
   const auto late = static_cast<std::ptrdiff_t>(list.late.size());
-  std::uint8_t flags = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(| : flags)
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
   for (std::ptrdiff_t q = 0; q < late; ++q) {
     const std::uint32_t k = list.late[q];
     for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
@@ -182,13 +180,13 @@ std::uint8_t finish_forces(Particles& p, const NeighbourList& list,
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
     }
-    flags |= done(k);
+    finite = done(k) && finite;
   }
   for (Segment& s : walls) s.force = {};
   for (const std::uint32_t k : list.late) // particles with wall contacts are late, in order
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
-  return flags;
+  return finite;
 }
 
 } // namespace
@@ -238,36 +236,27 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
   }
 }
 
-std::uint8_t Simulation::compute_forces(bool verlet_correct, bool predict_next) {
+bool Simulation::compute_forces(bool verlet_correct) {
   Particles& p = world_.particles;
   wall_force_.resize(list_.wall_segment.size());
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
-    // Velocity Verlet's correction, particle by particle as soon as its force is complete; no
-    // later row or stage reads a done particle, so the next step's prediction may follow it.
-    const double half = 0.5 * dt, limit2 = 0.25 * list_.skin * list_.skin;
-    const Vec2* reference = list_.reference.size() == p.size() ? list_.reference.data() : nullptr;
-    const auto correct = [&p, half](std::size_t k) -> std::uint8_t {
-      return verlet_correct_one(p, k, half) ? 0 : not_finite;
+    // velocity Verlet's correction, particle by particle as soon as its force is complete
+    const auto correct = [&p, half = 0.5 * dt](std::size_t k) {
+      return verlet_correct_one(p, k, half);
     };
-    const auto correct_predict = [&p, dt, half, reference, limit2](std::size_t k) {
-      const std::uint8_t finite = verlet_correct_one(p, k, half) ? 0 : not_finite;
-      return static_cast<std::uint8_t>(
-          finite | (verlet_predict_one(p, k, dt, half, reference, limit2) ? drifted : 0));
-    };
-    const auto nothing = [](std::size_t) -> std::uint8_t { return 0; };
+    const auto nothing = [](std::size_t) { return true; };
     const auto stages = [&](const auto& done) {
-      const auto [worst_pair, pair_flags] = pair_stage<N, T>(
+      const auto [worst_pair, finite_pairs] = pair_stage<N, T>(
           p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt, done, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
-      return static_cast<std::uint8_t>(
-          pair_flags |
-          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_));
+      const bool finite_late =
+          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_);
+      return finite_pairs && finite_late;
     };
-    if (!verlet_correct) return stages(nothing);
-    return predict_next ? stages(correct_predict) : stages(correct);
+    return verlet_correct ? stages(correct) : stages(nothing);
   });
 }
 

@@ -88,35 +88,20 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
 }
 
 void Simulation::step() {
-  advance(false);
-}
-
-void Simulation::advance(bool fuse_next) {
   const double dt = config_.timestep;
   Particles& p = world_.particles;
   const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
-  bool moved = false;
-  if (predicted_) { // done by the last force stage
-    verlet_predicted(p);
-    moved = predicted_drift_;
-    predicted_ = false;
-  } else {
-    moved = config_.integrator == Integrator::gear ? gear_predict(p, dt, threads_, drift)
-                                                   : verlet_predict(p, dt, threads_, drift);
-  }
+  bool moved = config_.integrator == Integrator::gear ? gear_predict(p, dt, threads_, drift)
+                                                      : verlet_predict(p, dt, threads_, drift);
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
   if (driven_stale_) list_moved();
   moved = moved || walls_moved(list_, p, world_.walls, driven_);
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
   const bool verlet = config_.integrator == Integrator::verlet;
-  const bool fuse = verlet && fuse_next;
-  // Verlet's correction is done within, and with `fuse` the next step's prediction
-  const std::uint8_t flags = compute_forces(verlet, fuse);
+  const bool finite = compute_forces(verlet); // Verlet's correction is done within
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
-  finite_ = verlet ? !(flags & not_finite) : gear_correct(p, dt, threads_);
-  predicted_ = fuse; // (if not finite, guard() below stops the run)
-  predicted_drift_ = (flags & drifted) != 0;
+  finite_ = verlet ? finite : gear_correct(p, dt, threads_);
   ++steps_;
   time_ = t_next;
   guard();
@@ -169,9 +154,8 @@ std::size_t Simulation::footprint_bytes() const {
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
                      std::uint64_t every) {
   for (std::uint64_t s = 0; s < steps; ++s) {
-    const bool observed = observer && every > 0 && (steps_ + 1) % every == 0;
-    advance(s + 1 < steps && !observed);
-    if (observed) observer(*this);
+    step();
+    if (observer && every > 0 && steps_ % every == 0) observer(*this);
   }
 }
 

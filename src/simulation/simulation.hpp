@@ -62,11 +62,7 @@ public:
 
   /// One time step: predict, move bodies, neighbours, contacts, correct, guard.
   void step();
-  /// `steps` steps; `observer` (if any) is called every `every` steps after the step. With
-  /// velocity Verlet, a step that no observer follows predicts each particle's next position as
-  /// soon as its force is complete (one pass less over memory); the results are bit-identical to
-  /// calling step() `steps` times, and the state is a plain step's whenever run returns or
-  /// calls the observer.
+  /// `steps` steps; `observer` (if any) is called every `every` steps after the step.
   void run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer = {},
            std::uint64_t every = 1);
 
@@ -93,17 +89,9 @@ public:
 
 private:
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
-  /// A step; with `fuse_next` (velocity Verlet only) the next step's prediction is done in this
-  /// step's force stage, and the state is left predicted.
-  void advance(bool fuse_next);
-  /// What the force stage's per-particle work reports (bits, or-ed over the particles).
-  enum ForceFlags : std::uint8_t { not_finite = 1, drifted = 2 };
   /// Forces of the current state; with `verlet_correct`, also velocity Verlet's second half kick,
-  /// particle by particle, and with `predict_next` the next step's first half kick and drift
-  /// after it. Returns ForceFlags: not_finite if a corrected velocity came out non-finite,
-  /// drifted if a predicted particle left its neighbour-list reference by more than the skin
-  /// allows.
-  std::uint8_t compute_forces(bool verlet_correct = false, bool predict_next = false);
+  /// particle by particle. Returns false if a corrected velocity came out non-finite.
+  bool compute_forces(bool verlet_correct = false);
   void guard() const;
   void list_moved(); ///< driven_: every Kind::moved particle
 
@@ -120,8 +108,6 @@ private:
   bool finite_ = true;                ///< every position and velocity finite after the last step
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   bool driven_stale_ = false;         ///< a particle was held or freed since driven_ was listed
-  bool predicted_ = false;            ///< the last force stage already predicted this step
-  bool predicted_drift_ = false;      ///< ... and that prediction failed the drift test
   std::uint32_t worst_pair_[2] = {0, 0};
 };
 
