@@ -72,14 +72,17 @@ std::size_t FrostFront::column_of(double x) const {
 }
 
 void FrostFront::lift_resting_grains(const Particles& p, std::vector<double>& up) const {
+  // The lift passes through free grains too (they are not displaced here, but a free grain
+  // caught between a frozen grain that rises and one above it that does not would be crushed).
   // Held grains are not in the engine's neighbour list (it pairs a grain with a free one only),
-  // so the frozen grains that touch are found here: binned on a grid of cells two fine radii
-  // wide, a stone in every cell its box covers. Grains less than `gap` apart count as touching:
-  // one call's differential heave cannot close a wider gap.
+  // so the grains that touch are found here: binned on a grid of cells two fine radii wide, a
+  // stone in every cell its box covers. Grains less than `gap` apart count as touching: one
+  // call's differential heave cannot close a wider gap.
+  if (std::none_of(up.begin(), up.end(), [](double u) { return u != 0.0; })) return;
   std::vector<std::uint32_t> grains;
   double cell = 0.0, y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (frozen_[i]) {
+    if (frozen_[i] || p.is_free(i)) {
       grains.push_back(static_cast<std::uint32_t>(i));
       if (!is_stone(p, i)) cell = std::max(cell, 2.0 * p.radius[i]);
       y_lo = std::min(y_lo, p.position[i].y - p.radius[i]);

@@ -78,7 +78,8 @@ private:
   bool is_stone(const Particles& p, std::size_t i) const;
   /// A per-column quantity at x: linear between the columns' centres, flat beyond the outer ones.
   double heave_at(const std::vector<double>& per_column, double x) const;
-  /// Raises each frozen grain's lift `up` to that of any frozen grain it touches from above.
+  /// Raises each grain's lift `up` to that of any grain it rests on (frozen or free; touching
+  /// from above), from the bottom up.
   void lift_resting_grains(const Particles& p, std::vector<double>& up) const;
   double front_at(std::size_t c, double target) const;
   void start_thaw(Simulation& sim);
