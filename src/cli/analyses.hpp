@@ -57,6 +57,10 @@ std::string json_number(double v);
 /// A number for a CSV cell: empty when it is not finite.
 std::string csv_number(double v);
 
+/// The times of a run's frost.csv at which the bed was at rest: each freeze, and the end if the
+/// run logged one. Throws InvalidArgument when the file is missing or a row is malformed.
+std::vector<double> freeze_times(const std::filesystem::path& file);
+
 /// Draws a chart with the compiled-in matplotlib script; false (with a note) when matplotlib is
 /// missing or the script fails, so the CSV files still stand.
 bool plot(const std::filesystem::path& out, const std::string& kind,

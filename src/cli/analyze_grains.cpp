@@ -15,8 +15,6 @@ namespace fs = std::filesystem;
 
 namespace talus::cli {
 
-namespace {
-
 std::vector<double> freeze_times(const fs::path& file) {
   std::ifstream in(file);
   if (!in)
@@ -36,8 +34,6 @@ std::vector<double> freeze_times(const fs::path& file) {
   }
   return out;
 }
-
-} // namespace
 
 Section analyze_segregation(RunData& run, const AnalysisOptions& o) {
   const auto& frames = run.frames(o.from);

@@ -282,9 +282,9 @@ bool FrostFront::advance(Simulation& sim) {
         smooth[c] = std::max(smooth[c], dh[k]);
     for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
     // every frozen grain moves up by the heave at its x, linear between the columns' centres,
-    // and at least as much as any frozen grain it rests on: held grains do not give way, so a
-    // grain pushed from below by one that heaves more would be pressed into it, and the overlap
-    // would burst out at the thaw
+    // and at least as much as any grain it rests on: held grains do not give way, so a grain
+    // pushed from below by one that heaves more would be pressed into it, and the overlap would
+    // burst out at the thaw
     std::vector<double> up(p.size(), 0.0);
     for (std::size_t i = 0; i < p.size(); ++i)
       if (frozen_[i]) up[i] = heave_at(smooth, p.position[i].x);

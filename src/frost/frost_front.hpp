@@ -13,8 +13,8 @@
 //     when its top is (the frozen layer grips it).
 //  3. Fines crossing the front add heave: heave strain x front step x the fine share of what
 //     was crossed. The stiff crust rides on its highest lens within the crust length, so a
-//     stone narrower than that is lifted by the fines beside it; every frozen grain of a column
-//     moves up by its column's heave.
+//     stone narrower than that is lifted by the fines beside it. A frozen grain moves up by the
+//     heave at its x (linear between column centres), or more if a grain it rests on does.
 //  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
 //     a fine is released when its centre has thawed, a stone only when the ice under it has:
 //     the cavity the heave opened beneath a gripped stone holds segregation ice, so the stone

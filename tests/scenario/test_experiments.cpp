@@ -9,21 +9,17 @@
 #include <cstdlib>
 
 #include "analysis/force_distribution.hpp"
-#include "cli/builtin_scenarios.hpp"
 #include "post/flow_profiles.hpp"
 #include "post/segregation.hpp"
 #include "render/frame.hpp"
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"
+#include "support/builtin_scenario.hpp"
 
 namespace talus {
 namespace {
 
-Scenario builtin(const std::string& name, const std::vector<std::string>& set) {
-  for (const auto& b : cli::builtin_scenarios())
-    if (b.name == name) return load_scenario(b.text, name, set);
-  throw std::runtime_error("no built-in " + name);
-}
+using testing::builtin;
 
 // Runs a scenario to its duration, keeping a frame every `interval` seconds (and at the start).
 std::vector<Frame> frames_of(const Scenario& s, double interval) {

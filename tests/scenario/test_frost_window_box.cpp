@@ -5,37 +5,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "cli/analyses.hpp"
-#include "cli/builtin_scenarios.hpp"
 #include "cli/run_loop.hpp"
 #include "post/frost_cycles.hpp"
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "support/builtin_scenario.hpp"
 
 namespace fs = std::filesystem;
 
 namespace talus {
 namespace {
-
-// frost.csv's freeze times and its end time, as `talus analyze DIR frost` reads them.
-std::vector<double> freezes_and_end(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line); // header: cycle,time,event
-  std::vector<double> times;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    std::string cycle, time, event;
-    std::getline(row, cycle, ',');
-    std::getline(row, time, ',');
-    std::getline(row, event);
-    if (event == "freeze" || event == "end") times.push_back(std::stod(time));
-  }
-  return times;
-}
 
 // 20 of the scenario's 30 cycles on one thread (about 6 minutes; the same bits as on two, and
 // ctest runs tests side by side with OMP_WAIT_POLICY=PASSIVE, under which the two threads of
@@ -48,17 +28,14 @@ std::vector<double> freezes_and_end(const fs::path& file) {
 // R <= 3 mm. Opt-in: TALUS_LONG_TESTS=1.
 TEST(LongExperiments, FrostFrontWindowBoxSortsStonesUpward) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
-  Scenario s;
-  for (const auto& b : cli::builtin_scenarios())
-    if (b.name == "frost_front")
-      s = load_scenario(b.text, "frost_front", {"frost.cycles=20", "simulation.threads=1"});
+  const Scenario s = testing::builtin("frost_front", {"frost.cycles=20", "simulation.threads=1"});
   const fs::path dir = fs::temp_directory_path() / "talus_test_frost_window_box";
   fs::remove_all(dir);
   cli::RunOptions o;
   o.quiet = true;
   ASSERT_EQ(cli::start_run(s, build_scenario(s), dir.string(), o), cli::exit_completed);
   cli::RunData run(dir);
-  const FrostCycles c = frost_cycles(run.frames(0.0), freezes_and_end(dir / "frost.csv"));
+  const FrostCycles c = frost_cycles(run.frames(0.0), cli::freeze_times(dir / "frost.csv"));
   ASSERT_EQ(c.stones.size(), 8U);
   ASSERT_EQ(c.sorting_index.size(), 21U); // at rest before each of the 20 freezes, and the end
   double large = 0.0, small = 0.0;

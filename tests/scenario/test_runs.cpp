@@ -3,11 +3,11 @@
 
 #include <filesystem>
 
-#include "cli/builtin_scenarios.hpp"
 #include "cli/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/load.hpp"
+#include "support/builtin_scenario.hpp"
 
 namespace fs = std::filesystem;
 
@@ -20,11 +20,7 @@ fs::path fresh_dir(const std::string& name) {
   return d;
 }
 
-Scenario builtin(const std::string& name, const std::vector<std::string>& set) {
-  for (const auto& b : cli::builtin_scenarios())
-    if (b.name == name) return load_scenario(b.text, name, set);
-  throw std::runtime_error("no built-in " + name);
-}
+using testing::builtin;
 
 int run(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
   cli::RunOptions o;
