@@ -96,7 +96,8 @@ void Simulation::step() {
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
   if (driven_stale_) list_moved();
-  moved = moved || walls_moved(list_, p, world_.walls, driven_);
+  moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
+  list_stale_ = false;
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
   const bool verlet = config_.integrator == Integrator::verlet;
   const bool finite = compute_forces(verlet); // Verlet's correction is done within
@@ -119,6 +120,11 @@ void Simulation::hold(std::uint32_t i, bool held) {
   require(i < world_.particles.size(), "hold: no particle " + std::to_string(i));
   require(world_.particles.kind[i] != Kind::fixed,
           "hold: particle " + std::to_string(i) + " is a fixed wall particle");
+  // A held grain has no pairs with other held grains in the neighbour list (the list pairs a
+  // grain with a free one), so a released one needs a new list before the next force stage:
+  // otherwise it would fall into a held neighbour unseen until its drift forced a rebuild, and
+  // be shot out by the overlap it had reached by then.
+  if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
   world_.particles.set_held(i, held);
   driven_stale_ = true;
 }

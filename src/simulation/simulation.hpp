@@ -108,6 +108,7 @@ private:
   bool finite_ = true;                ///< every position and velocity finite after the last step
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   bool driven_stale_ = false;         ///< a particle was held or freed since driven_ was listed
+  bool list_stale_ = false;           ///< a held particle was freed: rebuild the list
   std::uint32_t worst_pair_[2] = {0, 0};
 };
 
