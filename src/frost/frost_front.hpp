@@ -17,10 +17,13 @@
 //     heave at its x (linear between column centres), or more if a grain it rests on does.
 //  4. Thaw: a thaw front descends from the heaved surface to the bottom of the frozen layer;
 //     a fine is released when its centre has thawed, a stone only when the ice under it has:
-//     the cavity the heave opened beneath a gripped stone holds segregation ice, so the stone
-//     thaws out when the thaw reaches the ground under its lowest point (frost pull: thawed
-//     fines slump into the cavity first). Released grains settle under gravity; thawed
-//     fines may take a weaker material (wet, thaw-weakened soil) until the next freeze.
+//     the cavity the heave opened beneath a gripped stone holds segregation ice, pure ice that
+//     takes 1 / ice_content times the latent heat of as much frozen soil, so the thaw front
+//     (in soil-equivalent depth) must go that much further below the cavity's floor, past the
+//     frozen layer if need be (frost pull: thawed fines slump into the cavity first); frozen
+//     fines under the cavity thaw as much later. ice_content defaults to the fines' measured
+//     pore fraction (saturated). Released grains settle under gravity; thawed fines may take
+//     a weaker material (wet, thaw-weakened soil) until the next freeze.
 // The engine does the rest: frozen grains are held particles (Simulation::hold).
 #include <cstdint>
 #include <string>
@@ -41,6 +44,9 @@ struct FrostFrontParameters {
   double freeze_time = 1.0;        ///< s: the front's descent to permafrost in pure fines
   double thaw_time = 1.0;          ///< s: the thaw front's descent through the frozen layer
   bool frost_pull = true;          ///< stones thaw out by the ice under them (else their centre)
+  /// Ice per volume of frozen fines (saturated: their pore fraction). 0: the fines' pore
+  /// fraction in the bed, measured at each freeze's start.
+  double ice_content = 0.0;
   int thawed_material = -1;        ///< fines take this material when thawed (-1: unchanged)
   double x_min = 0.0, x_max = 0.0; ///< m: the bed's horizontal extent
 };
@@ -67,6 +73,8 @@ public:
   const std::vector<double>& front_depth() const { return front_; }
   /// Heave so far this cycle, per column, m.
   const std::vector<double>& heave() const { return heave_; }
+  /// Ice per volume of frozen fines this freeze (the parameter, or the measured pore fraction).
+  double ice_content() const { return ice_content_; }
   const FrostFrontParameters& parameters() const { return p_; }
 
   /// The model's state as numbers, for a checkpoint, and back.
@@ -95,7 +103,10 @@ private:
   std::vector<std::vector<double>> fines_; ///< per column: fine share of each slice
   std::vector<std::uint8_t> frozen_;       ///< per particle: held by the frost
   std::vector<double> material_;           ///< per particle: its material before the thaw
-  std::vector<double> ice_bottom_;         ///< per particle: y a stone thaws out at (frost pull)
+  std::vector<double> release_level_;      ///< per particle: thaw front y a stone thaws out at
+  std::vector<double> thaw_delay_;         ///< per particle: soil-equivalent depth of cavity ice
+                                           ///< above a frozen fine (in a stone's shadow), m
+  double ice_content_ = 1.0;               ///< this freeze's ice per volume of frozen fines
 };
 
 } // namespace talus

@@ -19,6 +19,7 @@ FrostFrontParameters front_parameters(const Scenario& s, const Particles& p, con
   q.heave_strain = f.heave_strain;
   q.conductivity_ratio = f.conductivity_ratio;
   q.stone_water = f.stone_water;
+  q.ice_content = f.ice_content;
   q.stone_radius = f.stone_radius > 0.0 ? f.stone_radius : 1.5 * radii[radii.size() / 2];
   q.column_width = f.column_width > 0.0 ? f.column_width : 2.0 * radii.back();
   q.crust_length = f.crust_length > 0.0 ? f.crust_length : q.column_width;

@@ -266,6 +266,8 @@ void read_frost(TableReader& r, FrostSection& f) {
                                   "1e-3 to 1e3 (stone / soil; 1: no contrast)");
   f.stone_water = r.number("stone_water", f.stone_water, 0.0, 1e3,
                            "0 to 1e3 (stone / soil latent heat per volume; 0: dry stones)");
+  f.ice_content = r.number("ice_content", f.ice_content, 0.0, 1.0,
+                           "0 to 1 (ice per volume of frozen fines; 0: their pore fraction)");
   f.crust_length = r.number("crust_length", f.crust_length, 0.0, inf, ">= 0 m (0: column width)");
   f.column_width =
       r.number("column_width", f.column_width, 0.0, inf, ">= 0 m (0: largest stone's diameter)");

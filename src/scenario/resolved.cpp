@@ -151,6 +151,7 @@ std::string to_toml(const Scenario& s) {
                                    {"heave_strain", f.heave_strain},
                                    {"conductivity_ratio", f.conductivity_ratio},
                                    {"stone_water", f.stone_water},
+                                   {"ice_content", f.ice_content},
                                    {"crust_length", f.crust_length},
                                    {"column_width", f.column_width},
                                    {"stone_radius", f.stone_radius},

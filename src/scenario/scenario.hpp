@@ -141,6 +141,7 @@ struct FrostSection {
   double heave_strain = 0.1;       ///< heave per unit depth of frozen fines
   double conductivity_ratio = 3.0; ///< stone / soil
   double stone_water = 0.0;        ///< stone / soil latent heat per volume
+  double ice_content = 0.0;        ///< ice per volume of frozen fines (0: their pore fraction)
   double crust_length = 0.0;       ///< m (0: the column width)
   double column_width = 0.0;       ///< m (0: the largest stone's diameter)
   double stone_radius = 0.0;       ///< m (0: 1.5 x the median radius)

@@ -36,6 +36,9 @@ TEST(ScenarioLoader, OutOfRangeAndWrongTypesNameTheAllowedValues) {
   EXPECT_NE(e.find("simulation.timestep"), std::string::npos) << e;
   e = error_of("[particles]\nmaterial = \"clay\"\n");
   EXPECT_NE(e.find("no material named 'clay'"), std::string::npos) << e;
+  e = error_of("[frost]\nice_content = 1.5\n");
+  EXPECT_NE(e.find("frost.ice_content"), std::string::npos) << e;
+  EXPECT_NE(e.find("0 to 1"), std::string::npos) << e;
   e = error_of("name = \"x\"\n[simulation\n");
   EXPECT_NE(e.find("test.toml:2"), std::string::npos) << e; // TOML syntax errors keep their line
 }
