@@ -337,11 +337,11 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsItsLift) {
 //   estimate within 20% at each of the three places: measured 86 to 90%, while the freeze itself
 //   lifts it by 91 to 92% of the estimate.
 // - With frost pull alone (a level front), stones of R = 3.5, 5 and 7 mm with their tops 2 mm
-//   down rise by the estimate 0.3 x 2R within 20% at each place (measured 106 to 119%, 87 to 92%,
-//   85 to 89%), and larger stones rise more: the means over the three places grow with R
+//   down rise by the estimate 0.3 x min(2R, D - a) within 20% at each place (measured 106 to 119%,
+//   87 to 92%, 85 to 89%), and larger stones rise more: the means over the three places grow with R
 //   (measured 2.41, 2.67, 3.45 mm). With the thermal contrast the front runs through the column
 //   of a stone as wide as it (R = 5 mm) and freezes the fines under it before a cavity opens: it
-//   kept 40 to 66% (docs/experiments.md).
+//   kept 40 to 66% (measured before the thaw's overlap relaxation; docs/experiments.md).
 // Opt-in (4 minutes): TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, OneStoneInSaturatedFinesKeepsItsLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
