@@ -341,7 +341,7 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsItsLift) {
 //   87 to 92%, 85 to 89%), and larger stones rise more: the means over the three places grow with R
 //   (measured 2.41, 2.67, 3.45 mm). With the thermal contrast the front runs through the column
 //   of a stone as wide as it (R = 5 mm) and freezes the fines under it before a cavity opens: it
-//   kept 40 to 66% (measured before the thaw's overlap relaxation; docs/experiments.md).
+//   keeps 55 to 62% (docs/experiments.md).
 // Opt-in (4 minutes): TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, OneStoneInSaturatedFinesKeepsItsLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
