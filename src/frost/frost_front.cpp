@@ -43,10 +43,10 @@ double ground_beneath(const Particles& p, std::size_t s) {
 // it overlaps about 0.01% there); a pair that thaws together shares the move. Released grains are
 // few per call, so every frozen grain is tried.
 void separate_released(Particles& p, const std::vector<std::uint32_t>& released,
-                       const std::vector<std::uint8_t>& was_frozen) {
+                       const std::vector<std::uint8_t>& frozen) {
   for (const std::uint32_t i : released)
     for (std::size_t j = 0; j < p.size(); ++j) {
-      if (j == i || !was_frozen[j]) continue;
+      if (j == i || !frozen[j]) continue;
       const Vec2 d = p.position[i] - p.position[j];
       const double reach = p.radius[i] + p.radius[j];
       const double dist2 = norm2(d);
@@ -359,8 +359,7 @@ bool FrostFront::advance(Simulation& sim) {
   // (or the fines under it) is left
   const double u = elapsed / p_.thaw_time;
   bool held = false;
-  const std::vector<std::uint8_t> was_frozen = frozen_;
-  std::vector<std::uint32_t> released;
+  std::vector<std::uint32_t> released; // still marked frozen_ until they are separated
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!frozen_[i]) continue;
     const std::size_t c = column_of(p.position[i].x);
@@ -375,12 +374,12 @@ bool FrostFront::advance(Simulation& sim) {
       continue;
     }
     sim.hold(static_cast<std::uint32_t>(i), false);
-    frozen_[i] = 0;
     released.push_back(static_cast<std::uint32_t>(i));
     if (p_.thawed_material >= 0 && !is_stone(p, i))
       p.material[i] = static_cast<std::uint16_t>(p_.thawed_material);
   }
-  separate_released(p, released, was_frozen);
+  separate_released(p, released, frozen_);
+  for (const std::uint32_t i : released) frozen_[i] = 0;
   if (u < 1.0 || held) return false;
   phase_ = Phase::idle;
   return true;
