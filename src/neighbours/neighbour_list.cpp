@@ -70,11 +70,15 @@ void index_force_blocks(NeighbourList& list, int threads) {
   std::uint32_t slot = 0;
   for (std::size_t b = 0; b < blocks; ++b)
     for (const std::uint32_t j : later[b]) list.deferred_slot[fill[j]++] = slot++;
+  list.entry_row.resize(list.neighbour.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::ptrdiff_t bi = 0; bi < static_cast<std::ptrdiff_t>(blocks); ++bi) {
     const auto b = static_cast<std::size_t>(bi);
-    for (std::size_t k = b * rows; k < std::min(n, (b + 1) * rows); ++k)
+    for (std::size_t k = b * rows; k < std::min(n, (b + 1) * rows); ++k) {
       if (list.is_late(k)) late[b].push_back(static_cast<std::uint32_t>(k));
+      for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e)
+        list.entry_row[e] = static_cast<std::uint32_t>(k);
+    }
   }
   list.late.clear();
   for (const auto& l : late) list.late.insert(list.late.end(), l.begin(), l.end());

@@ -34,6 +34,9 @@ struct NeighbourList {
   /// Particles whose force is complete only after every block: those with deferred entries or
   /// wall contacts, in order.
   std::vector<std::uint32_t> late;
+  /// The row (first particle) of each entry, so that the force stage can walk a stretch of
+  /// entries in one flat loop (no inner loop whose length changes from row to row).
+  std::vector<std::uint32_t> entry_row;
   bool is_late(std::size_t k) const {
     return deferred_offset[k + 1] > deferred_offset[k] || wall_offset[k + 1] > wall_offset[k];
   }

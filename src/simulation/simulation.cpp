@@ -152,9 +152,9 @@ std::size_t Simulation::footprint_bytes() const {
          bytes(g.phi3) + bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous) +
          bytes(world_.walls) + bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) +
          bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
-         bytes(l.deferred_slot) + bytes(l.late) + bytes(l.wall_offset) + bytes(l.wall_segment) +
-         bytes(l.wall_history) + bytes(l.reference) + bytes(l.segment_reference) +
-         bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_);
+         bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
+         bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
+         bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_);
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
