@@ -162,28 +162,35 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
       const bool free_i = p.is_free(i);
       const int cy = static_cast<int>(grid.cell_of[i]) / grid.nx; // the cell it was sorted into
       const int cx = static_cast<int>(grid.cell_of[i]) - cy * grid.nx;
+      // the candidates of items[k0, k1), seen at the image (sx, sy): no branch per candidate,
+      // each is written and kept only if it qualifies (about half do, at random, which a branch
+      // predictor cannot learn)
+      const auto scan = [&](std::uint32_t k0, std::uint32_t k1, std::int8_t sx, std::int8_t sy) {
+        const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
+        if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
+        for (std::uint32_t k = k0; k < k1; ++k) {
+          const std::uint32_t j = grid.items[k];
+          const double reach = Ri + p.radius[j];
+          const bool keep = (j > i) & (free_i | p.is_free(j)) &
+                            (norm2(ri_shifted - p.position[j]) < reach * reach);
+          row[count] = {j, ImageShift{sx, sy}};
+          count += keep;
+        }
+      };
       for (int dy = -1; dy <= 1; ++dy) {
         int ncy = cy + dy;
         std::int8_t sy = 0;
         if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
+        const std::size_t cell_row = static_cast<std::size_t>(ncy) * grid.nx;
+        if (cx >= 1 && cx + 1 < grid.nx) { // three cells side by side: one stretch of items
+          scan(grid.cell_start[cell_row + cx - 1], grid.cell_start[cell_row + cx + 2], 0, sy);
+          continue;
+        }
         for (int dx = -1; dx <= 1; ++dx) {
           int ncx = cx + dx;
           std::int8_t sx = 0;
           if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
-          const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
-          const std::size_t c = static_cast<std::size_t>(ncy) * grid.nx + ncx;
-          const std::uint32_t k0 = grid.cell_start[c], k1 = grid.cell_start[c + 1];
-          if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
-          // no branch per candidate: each is written and kept only if it qualifies (about half
-          // do, at random, which a branch predictor cannot learn)
-          for (std::uint32_t k = k0; k < k1; ++k) {
-            const std::uint32_t j = grid.items[k];
-            const double reach = Ri + p.radius[j];
-            const bool keep = (j > i) & (free_i | p.is_free(j)) &
-                              (norm2(ri_shifted - p.position[j]) < reach * reach);
-            row[count] = {j, ImageShift{sx, sy}};
-            count += keep;
-          }
+          scan(grid.cell_start[cell_row + ncx], grid.cell_start[cell_row + ncx + 1], sx, sy);
         }
       }
       // rows are short (a few entries): insertion sort beats std::sort's set-up here
