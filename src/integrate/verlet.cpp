@@ -40,7 +40,7 @@ bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const Vec2 kick = half * p.inv_mass[i] * p.force[i];
     p.position[i] += dt * (p.velocity[i] + kick);
-    if (reference) moved = moved || norm2(p.position[i] - reference[i]) > drift.limit2;
+    if (reference) moved |= norm2(p.position[i] - reference[i]) > drift.limit2;
     p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
     const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
     p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
