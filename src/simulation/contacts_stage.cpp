@@ -123,7 +123,9 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         const Vec2 d = position[i] - rj;
         const double dist2 = norm2(d);
         const double reach = radius[i] + radius[j];
-        const bool touches = (dist2 < reach * reach) & (dist2 != 0.0);
+        // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
+        // that it reaches the forces and the finite check (as with the one-pass stage)
+        const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
         const auto later = static_cast<std::uint32_t>(j >= last); // j is in a later block
         const std::uint32_t later_mask = 0u - later;
         found[count] = {d, e, i, j, (slot & later_mask) | ~later_mask};
