@@ -1,10 +1,9 @@
-// Stage 4 of a step: contact forces. Each pair's force is computed once into its list entry (in
-// parallel), then every particle sums its entries in a fixed order: the result does not depend
-// on the number of threads, and no floating-point atomics are needed.
+// Stage 4 of a step: contact forces, block by block of rows (see pair_stage): every sum has an
+// order fixed by the list alone, so the result does not depend on the number of threads, and no
+// floating-point atomics are needed.
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstdlib>
 #include <vector>
 
 #include "simulation/simulation.hpp"
@@ -104,6 +103,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
     const ImageShift* images = list.image.data();
     double* history = list.history.data();
     PairForce* slots = deferred.data();
+    const std::uint32_t* row_of = list.entry_row.data();
     // a deferred entry that does not touch leaves a zero in its slot
     std::fill(slots + slot, slots + list.block_first_slot[b + 1], PairForce{});
     for (std::ptrdiff_t r0 = first; r0 < last; r0 += stretch_rows) {
@@ -112,7 +112,6 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
       TouchingEntry* found = touching.data();
       // first pass: the touching entries; the others lose their history (masks, no branches)
       std::size_t count = 0;
-      const std::uint32_t* row_of = list.entry_row.data();
       for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
         const std::uint32_t i = row_of[e];
         const std::uint32_t j = neighbour[e];
