@@ -1,9 +1,11 @@
 #pragma once
 // Normal contact laws: magnitude of the repulsive force from overlap and overlap rate.
-#include <algorithm>
+// `force` and `stiffness` take one contact (PairParameters, ContactGeometry) or two side by side
+// (PairLanes, ContactLanes: contact/contact_lanes.hpp); the same lines serve both.
 #include <cmath>
 
 #include "contact/geometry.hpp"
+#include "contact/lanes.hpp"
 #include "materials/pair_table.hpp"
 
 namespace talus {
@@ -12,12 +14,12 @@ namespace talus {
 /// eta_n = gamma_n m_eff, or 2 zeta sqrt(k_n m_eff) from the restitution (materials/timestep.hpp).
 struct LinearSpringDashpot {
   static constexpr bool uses_r_eff = false;
-  static double force(const PairParameters& p, const ContactGeometry& g) {
-    const double f = p.normal_stiffness * g.overlap + p.normal_dashpot(g.m_eff) * g.overlap_rate();
-    return std::max(f, 0.0);
+  template <class P, class G> static auto force(const P& p, const G& g) {
+    return not_below_zero(p.normal_stiffness * g.overlap +
+                          p.normal_dashpot(g.m_eff) * g.overlap_rate());
   }
   /// Normal stiffness k_n seen by a tangential spring.
-  static double stiffness(const PairParameters& p, const ContactGeometry&) {
+  template <class P, class G> static auto stiffness(const P& p, const G&) {
     return p.normal_stiffness;
   }
   static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
@@ -29,15 +31,14 @@ struct LinearSpringDashpot {
 /// F_n = rho (xi^3/2 + 3/2 A sqrt(xi) dxi/dt), rho = 4/3 E* sqrt(R*), never attractive.
 struct HertzViscoelastic {
   static constexpr bool uses_r_eff = true;
-  static double force(const PairParameters& p, const ContactGeometry& g) {
-    const double rho = 4.0 / 3.0 * p.effective_young * std::sqrt(g.r_eff);
-    const double s = std::sqrt(g.overlap);
-    const double f = rho * s * (g.overlap + 1.5 * p.hertz_damping * g.overlap_rate());
-    return std::max(f, 0.0);
+  template <class P, class G> static auto force(const P& p, const G& g) {
+    const auto rho = 4.0 / 3.0 * p.effective_young * square_root(g.r_eff);
+    const auto s = square_root(g.overlap);
+    return not_below_zero(rho * s * (g.overlap + 1.5 * p.hertz_damping * g.overlap_rate()));
   }
   /// Tangent stiffness dF/dxi = 2 E* sqrt(R* xi), used to scale a linear tangential spring.
-  static double stiffness(const PairParameters& p, const ContactGeometry& g) {
-    return 2.0 * p.effective_young * std::sqrt(g.r_eff * g.overlap);
+  template <class P, class G> static auto stiffness(const P& p, const G& g) {
+    return 2.0 * p.effective_young * square_root(g.r_eff * g.overlap);
   }
   static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
     const double rho = 4.0 / 3.0 * p.effective_young * std::sqrt(g.r_eff);

@@ -1,11 +1,12 @@
 #pragma once
 // Tangential contact laws: friction force along t from the slip velocity and, for the spring
 // laws, the stored tangential displacement (the contact's history, a scalar along the current
-// tangent, so it is always kept in the current tangent direction).
-#include <algorithm>
+// tangent, so it is always kept in the current tangent direction). Like the normal laws, they
+// take one contact or two side by side (contact/lanes.hpp).
 #include <cmath>
 
 #include "contact/geometry.hpp"
+#include "contact/lanes.hpp"
 #include "materials/pair_table.hpp"
 
 namespace talus {
@@ -15,13 +16,14 @@ namespace talus {
 struct ViscousCoulomb {
   static constexpr bool has_history = false;
   static constexpr bool uses_r_eff = false;
-  static double force(const PairParameters& p, const ContactGeometry& g, double normal_force,
-                      double /*normal_stiffness*/, double& /*history*/, double /*dt*/) {
-    const double viscous = p.tangential_damping * g.m_eff * std::abs(g.v_tangent);
-    const double f = std::min(viscous, p.friction * normal_force);
-    return g.v_tangent > 0.0 ? -f : (g.v_tangent < 0.0 ? f : 0.0);
+  template <class P, class G, class R>
+  static R force(const P& p, const G& g, R normal_force, R /*normal_stiffness*/, R& /*history*/,
+                 double /*dt*/) {
+    const R viscous = p.tangential_damping * g.m_eff * magnitude(g.v_tangent);
+    const R f = smaller(viscous, p.friction * normal_force);
+    return select(g.v_tangent > 0.0, -f, select(g.v_tangent < 0.0, f, R{}));
   }
-  static double stiffness(const PairParameters&, const ContactGeometry&, double) { return 0.0; }
+  template <class P, class G, class R> static R stiffness(const P&, const G&, R) { return R{}; }
 };
 
 /// A tangential spring with history and Coulomb slip (Cundall & Strack 1979, as in LAMMPS):
@@ -30,36 +32,37 @@ struct ViscousCoulomb {
 template <class Stiffness> struct TangentialSpring {
   static constexpr bool has_history = true;
   static constexpr bool uses_r_eff = Stiffness::uses_r_eff;
-  static double stiffness(const PairParameters& p, const ContactGeometry& g, double kn) {
+  template <class P, class G, class R> static R stiffness(const P& p, const G& g, R kn) {
     return Stiffness::of(p, g, kn);
   }
-  static double force(const PairParameters& p, const ContactGeometry& g, double normal_force,
-                      double kn, double& s, double dt) {
-    const double kt = Stiffness::of(p, g, kn);
-    const double eta = p.tangential_damping * g.m_eff;
+  // the slip by selects, not a branch: two contacts side by side may differ (the reset spring
+  // is computed for a contact that sticks too, and not used)
+  template <class P, class G, class R>
+  static R force(const P& p, const G& g, R normal_force, R kn, R& s, double dt) {
+    const R kt = Stiffness::of(p, g, kn);
+    const R eta = p.tangential_damping * g.m_eff;
     s += g.v_tangent * dt;
-    double f = -kt * s - eta * g.v_tangent;
-    const double limit = p.friction * normal_force;
-    if (std::abs(f) > limit) {
-      f = std::copysign(limit, f);
-      s = kt > 0.0 ? -(f + eta * g.v_tangent) / kt : 0.0;
-    }
-    return f;
+    const R f = -kt * s - eta * g.v_tangent;
+    const R limit = p.friction * normal_force;
+    const auto slips = magnitude(f) > limit;
+    const R f_slip = copy_sign(limit, f);
+    s = select(slips, select(kt > 0.0, -(f_slip + eta * g.v_tangent) / kt, R{}), s);
+    return select(slips, f_slip, f);
   }
 };
 
 /// Cundall-Strack: k_t = ratio x k_n (linear law) or ratio x tangent stiffness (Hertz).
 struct CundallStrackStiffness {
   static constexpr bool uses_r_eff = false;
-  static double of(const PairParameters& p, const ContactGeometry&, double kn) {
+  template <class P, class G, class R> static R of(const P& p, const G&, R kn) {
     return p.tangential_stiffness_ratio * kn;
   }
 };
 /// Hertz-Mindlin no-slip: k_t = 8 G* sqrt(R* xi).
 struct MindlinStiffness {
   static constexpr bool uses_r_eff = true;
-  static double of(const PairParameters& p, const ContactGeometry& g, double) {
-    return 8.0 * p.effective_shear * std::sqrt(g.r_eff * g.overlap);
+  template <class P, class G, class R> static R of(const P& p, const G& g, R) {
+    return 8.0 * p.effective_shear * square_root(g.r_eff * g.overlap);
   }
 };
 

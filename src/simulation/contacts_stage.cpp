@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "contact/contact_lanes.hpp"
 #include "simulation/simulation.hpp"
 
 namespace talus {
@@ -49,7 +50,7 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
 struct TouchingEntry {
   Vec2 d; // r_i - r_j (the image of j)
   std::uint32_t entry;
-  std::uint32_t row;
+  std::uint32_t row; // i
   std::uint32_t j;
   std::uint32_t slot; // its deferred slot, or no_slot if its second particle is in the block
 };
@@ -104,6 +105,10 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
     double* history = list.history.data();
     PairForce* slots = deferred.data();
     const std::uint32_t* row_of = list.entry_row.data();
+    const double* mass = p.mass.data();
+    const Vec2* velocity = p.velocity.data();
+    const double* spin = p.angular_velocity.data();
+    const std::uint16_t* material = p.material.data();
     // a deferred entry that does not touch leaves a zero in its slot
     std::fill(slots + slot, slots + list.block_first_slot[b + 1], PairForce{});
     for (std::ptrdiff_t r0 = first; r0 < last; r0 += stretch_rows) {
@@ -133,24 +138,43 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
         slot += later;
       }
-      // second pass: the touching pairs' forces, in entry order
-      for (std::size_t t = 0; t < count; ++t) {
-        const auto [d, e, i, j, deferred_slot] = found[t];
-        const double Ri = radius[i], Rj = radius[j];
-        const ContactGeometry g = pair_geometry(
-            d, std::sqrt(norm2(d)), Ri, Rj, p.mass[i], p.mass[j], p.velocity[i], p.velocity[j],
-            p.angular_velocity[i], p.angular_velocity[j], N::uses_r_eff || T::uses_r_eff);
-        const PairForce f(
-            contact_force<N, T>(pairs(p.material[i], p.material[j]), g, history[e], dt));
-        p.force[i] += f.force;
-        p.torque[i] += f.torque_i;
-        if (deferred_slot != no_slot) [[unlikely]] {
-          slots[deferred_slot] = f;
-        } else {
-          p.force[j] -= f.force;
-          p.torque[j] += f.torque_j;
-        }
-        worst = std::max(worst, g.overlap / std::min(Ri, Rj));
+      // second pass: the touching pairs' forces, two at a time (one per lane), added to the
+      // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
+      for (std::size_t t = 0; t < count; t += 2) {
+        const TouchingEntry& c0 = found[t];
+        const bool two = t + 1 < count;
+        const TouchingEntry& c1 = found[two ? t + 1 : t];
+        const Lanes ri{radius[c0.row], radius[c1.row]}, rj{radius[c0.j], radius[c1.j]};
+        const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
+        const ContactLanes g = pair_geometry(
+            dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{mass[c0.row], mass[c1.row]},
+            Lanes{mass[c0.j], mass[c1.j]}, Lanes{velocity[c0.row].x, velocity[c1.row].x},
+            Lanes{velocity[c0.row].y, velocity[c1.row].y},
+            Lanes{velocity[c0.j].x, velocity[c1.j].x}, Lanes{velocity[c0.j].y, velocity[c1.j].y},
+            Lanes{spin[c0.row], spin[c1.row]}, Lanes{spin[c0.j], spin[c1.j]},
+            N::uses_r_eff || T::uses_r_eff);
+        Lanes spring{history[c0.entry], history[c1.entry]};
+        const ForceLanes f = contact_force<N, T>(PairLanes(pairs(material[c0.row], material[c0.j]),
+                                                           pairs(material[c1.row], material[c1.j])),
+                                                 g, spring, dt);
+        const auto add = [&](const TouchingEntry& c, int lane) {
+          const Vec2 force{f.force_x[lane], f.force_y[lane]};
+          history[c.entry] = spring[lane];
+          p.force[c.row] += force;
+          p.torque[c.row] += f.torque_i[lane];
+          if (c.slot != no_slot) [[unlikely]] {
+            slots[c.slot].force = force;
+            slots[c.slot].torque_i = f.torque_i[lane];
+            slots[c.slot].torque_j = f.torque_j[lane];
+          } else {
+            p.force[c.j] -= force;
+            p.torque[c.j] += f.torque_j[lane];
+          }
+        };
+        add(c0, 0);
+        if (two) add(c1, 1);
+        const Lanes ratio = g.overlap / smaller(ri, rj);
+        worst = std::max(worst, std::max(ratio[0], ratio[1]));
       }
       // every row of the stretch is done: its particles' forces are complete, but for the late
       for (std::ptrdiff_t i = r0; i < r1; ++i) {

@@ -1,0 +1,139 @@
+// Two contacts side by side (contact/contact_lanes.hpp) give, lane by lane, exactly the bits of
+// one contact through pair_geometry and contact_force, for every law pair: the force stage uses
+// the lanes, the wall contacts and the observers the scalar form, and runs stay reproducible
+// only if both agree to the last bit. Tolerance: none (bit patterns are compared).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+#include "contact/contact_lanes.hpp"
+#include "contact/contact_law.hpp"
+
+namespace talus {
+namespace {
+
+std::uint64_t bits(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
+// One random contact: what the force stage knows of it before the law runs.
+struct Sample {
+  Vec2 d, v_i, v_j;
+  double r_i, r_j, m_i, m_j, w_i, w_j, history;
+  int pair; // which parameter set
+};
+
+Sample draw(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Sample s;
+  s.r_i = 1e-3 + 4e-3 * u(rng);
+  s.r_j = 1e-3 + 4e-3 * u(rng);
+  const double angle = 6.283185307179586 * u(rng);
+  const double dist = (s.r_i + s.r_j) * (1.0 - 0.05 * u(rng)); // overlaps up to 5%
+  s.d = {dist * std::cos(angle), dist * std::sin(angle)};
+  s.m_i = 1e-4 + 1e-2 * u(rng);
+  s.m_j = 1e-4 + 1e-2 * u(rng);
+  // a tenth at rest (v_t = 0 exactly), the others from 1 mm/s to 30 m/s
+  const double speed = u(rng) < 0.1 ? 0.0 : std::pow(10.0, -3.0 + 4.5 * u(rng));
+  s.v_i = {speed * (u(rng) - 0.5), speed * (u(rng) - 0.5)};
+  s.v_j = {speed * (u(rng) - 0.5), speed * (u(rng) - 0.5)};
+  s.w_i = speed * 100.0 * (u(rng) - 0.5);
+  s.w_j = speed * 100.0 * (u(rng) - 0.5);
+  s.history = 1e-4 * (u(rng) - 0.5); // springs from sticking to far beyond the Coulomb limit
+  s.pair = static_cast<int>(u(rng) * 3.0);
+  return s;
+}
+
+// Three parameter sets: a damping rate (LAMMPS' way), a damping from the restitution (square
+// root of m_eff), and a mixed pair; each with its own Hertz and tangential damping.
+std::vector<PairParameters> parameter_sets() {
+  Material a, b, c;
+  a.normal_stiffness = 1e5, a.normal_damping_rate = 100.0, a.tangential_damping = 50.0;
+  a.hertz_damping = 1e-4;
+  b.normal_stiffness = 3e4, b.restitution = 0.5, b.friction = 0.3, b.tangential_damping = 1e3;
+  b.hertz_damping = 2e-5;
+  c.young = 5e7, c.poisson = 0.25, c.hertz_damping = 1e-5, c.tangential_damping = 20.0;
+  c.normal_stiffness = 2e5, c.friction = 0.8, c.restitution = 0.7;
+  return {mix(a, a), mix(b, b), mix(b, c)};
+}
+
+template <class N, class T> void expect_lanes_match_scalar(const char* laws) {
+  const std::vector<PairParameters> params = parameter_sets();
+  std::mt19937_64 rng(7);
+  const double dt = 1e-5;
+  int compared = 0, slipping = 0, released = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const Sample s[2] = {draw(rng), draw(rng)};
+    const auto lanes = [&](auto field) { return Lanes{field(s[0]), field(s[1])}; };
+    const Lanes dx = lanes([](const Sample& c) { return c.d.x; });
+    const Lanes dy = lanes([](const Sample& c) { return c.d.y; });
+    const ContactLanes g = pair_geometry(
+        dx, dy, square_root(dx * dx + dy * dy), lanes([](const Sample& c) { return c.r_i; }),
+        lanes([](const Sample& c) { return c.r_j; }), lanes([](const Sample& c) { return c.m_i; }),
+        lanes([](const Sample& c) { return c.m_j; }),
+        lanes([](const Sample& c) { return c.v_i.x; }),
+        lanes([](const Sample& c) { return c.v_i.y; }),
+        lanes([](const Sample& c) { return c.v_j.x; }),
+        lanes([](const Sample& c) { return c.v_j.y; }),
+        lanes([](const Sample& c) { return c.w_i; }), lanes([](const Sample& c) { return c.w_j; }),
+        N::uses_r_eff || T::uses_r_eff);
+    Lanes spring = lanes([](const Sample& c) { return c.history; });
+    const ForceLanes f = contact_force<N, T>(PairLanes(params[static_cast<std::size_t>(s[0].pair)],
+                                                       params[static_cast<std::size_t>(s[1].pair)]),
+                                             g, spring, dt);
+    for (int lane = 0; lane < 2; ++lane) {
+      const Sample& c = s[lane];
+      const ContactGeometry one =
+          pair_geometry(c.d, std::sqrt(norm2(c.d)), c.r_i, c.r_j, c.m_i, c.m_j, c.v_i, c.v_j, c.w_i,
+                        c.w_j, N::uses_r_eff || T::uses_r_eff);
+      double history = c.history;
+      const ContactForce expected =
+          contact_force<N, T>(params[static_cast<std::size_t>(c.pair)], one, history, dt);
+      SCOPED_TRACE(std::string(laws) + ", sample " + std::to_string(k) + ", lane " +
+                   std::to_string(lane));
+      ASSERT_EQ(bits(f.force_x[lane]), bits(expected.force.x));
+      ASSERT_EQ(bits(f.force_y[lane]), bits(expected.force.y));
+      ASSERT_EQ(bits(f.torque_i[lane]), bits(expected.torque_i));
+      ASSERT_EQ(bits(f.torque_j[lane]), bits(expected.torque_j));
+      ASSERT_EQ(bits(spring[lane]), bits(history));
+      ++compared;
+      released += expected.normal_force == 0.0;
+      const double ft = dot(expected.force, one.tangent());
+      slipping +=
+          expected.normal_force > 0.0 &&
+          std::abs(ft) == params[static_cast<std::size_t>(c.pair)].friction * expected.normal_force;
+    }
+  }
+  EXPECT_EQ(compared, 8000);
+  // the samples reach every branch the selects replace: separating contacts whose normal force
+  // is cut at zero, and contacts at the Coulomb limit
+  EXPECT_GT(released, 100) << laws;
+  EXPECT_GT(slipping, 100) << laws;
+}
+
+TEST(ContactLanes, EveryLawPairGivesTheScalarBits) {
+  expect_lanes_match_scalar<LinearSpringDashpot, CundallStrack>("linear, cundall_strack");
+  expect_lanes_match_scalar<LinearSpringDashpot, MindlinNoSlip>("linear, mindlin");
+  expect_lanes_match_scalar<LinearSpringDashpot, ViscousCoulomb>("linear, coulomb");
+  expect_lanes_match_scalar<HertzViscoelastic, CundallStrack>("hertz, cundall_strack");
+  expect_lanes_match_scalar<HertzViscoelastic, MindlinNoSlip>("hertz, mindlin");
+  expect_lanes_match_scalar<HertzViscoelastic, ViscousCoulomb>("hertz, coulomb");
+}
+
+TEST(ContactLanes, HelpersFollowTheStandardFunctions) {
+  const Lanes x{-0.0, 3.5}, y{2.0, -1.0};
+  const Lanes m = magnitude(x), c = copy_sign(y, x), z = not_below_zero(Lanes{-1e-300, 0.0});
+  EXPECT_EQ(bits(m[0]), bits(0.0));
+  EXPECT_EQ(bits(c[0]), bits(std::copysign(2.0, -0.0)));
+  EXPECT_EQ(bits(c[1]), bits(std::copysign(-1.0, 3.5)));
+  EXPECT_EQ(bits(z[0]), bits(std::max(-1e-300, 0.0)));
+  EXPECT_TRUE(std::isnan(not_below_zero(Lanes{std::nan(""), 1.0})[0])); // as std::max(NaN, 0)
+  EXPECT_EQ(smaller(Lanes{1.0, 2.0}, Lanes{3.0, -4.0})[1], -4.0);
+  EXPECT_EQ(square_root(Lanes{4.0, 2.0})[1], std::sqrt(2.0));
+}
+
+} // namespace
+} // namespace talus
