@@ -28,7 +28,7 @@ namespace {
 struct BenchOptions {
   std::size_t n = 10000;
   std::size_t tiles = 1;
-  double skin = 0.0; // m; 0: the LAMMPS input's
+  double skin = 0.0; // m; 0: automatic (the engine's default)
   std::uint64_t steps = 2000;
   int threads = 1;
   bool lammps = false;
@@ -143,10 +143,11 @@ void run_bench(const BenchOptions& o) {
   SimulationConfig config;
   SimulationState state = settled_state(o, ny, ny, config);
   if (o.tiles > 1) state = tile_dense2d(state, o.tiles, config.skin);
-  if (o.skin > 0.0) { // the list is rebuilt with this skin at the first step
-    state.neighbours.skin = config.skin = o.skin;
-    state.neighbours.reference.clear();
-  }
+  // the list is rebuilt at the first step, with the given skin or the automatic one (the
+  // cached packing's list has the LAMMPS input's 1 mm)
+  config.skin = o.skin;
+  if (o.skin > 0.0) state.neighbours.skin = o.skin;
+  state.neighbours.reference.clear();
   Simulation sim = Simulation::restore(std::move(state), config);
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
@@ -175,6 +176,8 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",
              bytes);
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
+  fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
+             o.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
   double lammps = 0.0;
   if (o.lammps && o.tiles > 1) {
     fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
@@ -199,7 +202,7 @@ void run_bench(const BenchOptions& o) {
                      o.steps, sim.threads(), per * 1e9, 1.0 / per, contacts, bytes,
                      lammps > 0 ? fmt::format("{:.3f}", lammps * 1e9) : "",
                      lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "", nx, ny, engine_bytes,
-                     sim.config().skin);
+                     sim.neighbours().skin);
   fmt::print("appended to {}\n", csv.string());
 }
 
@@ -249,8 +252,10 @@ void add_bench_command(CLI::App& app) {
                   "large system without settling it)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--skin", o->skin,
-                  "neighbour-list skin, m (0: the LAMMPS input's 1 mm; the physics is the same)")
+  cmd->add_option(
+         "--skin", o->skin,
+         "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the LAMMPS input's; the "
+         "physics is the same)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.01));
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();

@@ -9,18 +9,11 @@
 #include <omp.h>
 
 #include "core/error.hpp"
+#include "neighbours/skin.hpp"
 
 namespace talus {
 
 namespace {
-
-double mean_free_radius(const Particles& p) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.is_free(i)) sum += p.radius[i], ++n;
-  return n ? sum / static_cast<double>(n) : p.max_radius();
-}
 
 void validate_setup(const World& w, const SimulationConfig& c) {
   require(std::isfinite(c.timestep) && c.timestep > 0.0,
@@ -64,13 +57,11 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   const auto useful = static_cast<int>(std::min<std::size_t>(
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
-  if (config_.skin == 0.0) config_.skin = 0.25 * mean_free_radius(world_.particles);
   list_moved();
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
     index_force_blocks(list_); // derived from the rows, not stored
-    config_.skin = list_.skin;
     return;
   }
   for (std::size_t i = 0; i < world_.particles.size(); ++i)
@@ -82,7 +73,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     attach(d, world_.particles, world_.walls);
     apply(d, 0.0, world_.particles, world_.walls);
   }
-  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, config_.skin);
+  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin());
   compute_forces();
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
@@ -98,7 +89,7 @@ void Simulation::step() {
   if (driven_stale_) list_moved();
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
-  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, config_.skin, threads_);
+  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
   const bool verlet = config_.integrator == Integrator::verlet;
   const bool finite = compute_forces(verlet); // Verlet's correction is done within
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
@@ -106,6 +97,13 @@ void Simulation::step() {
   ++steps_;
   time_ = t_next;
   guard();
+}
+
+double Simulation::next_skin() const {
+  // config_.skin stays 0 for the automatic skin (it is saved in checkpoints), so that a resumed
+  // run chooses its skins as the uninterrupted one does
+  return config_.skin > 0.0 ? config_.skin
+                            : automatic_skin(world_.particles, world_.domain, config_.timestep);
 }
 
 void Simulation::list_moved() {

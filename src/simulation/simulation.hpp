@@ -17,7 +17,7 @@ struct SimulationConfig {
   Integrator integrator = Integrator::gear;
   NormalLaw normal_law = NormalLaw::linear;
   TangentialLaw tangential_law = TangentialLaw::cundall_strack;
-  double skin = 0.0; ///< m; 0: a quarter of the mean free-particle radius
+  double skin = 0.0; ///< m; 0: automatic, chosen at every build (neighbours/skin.hpp)
   int threads = 0;   ///< 0: all cores (OpenMP default)
   /// Fewer particles than this per thread is not worth the threads' overhead: small systems
   /// use fewer threads (the results are bit-identical whatever the count).
@@ -93,7 +93,8 @@ private:
   /// particle by particle. Returns false if a corrected velocity came out non-finite.
   bool compute_forces(bool verlet_correct = false);
   void guard() const;
-  void list_moved(); ///< driven_: every Kind::moved particle
+  void list_moved();        ///< driven_: every Kind::moved particle
+  double next_skin() const; ///< the skin of the next list build (config or automatic)
 
   World world_;
   SimulationConfig config_;

@@ -137,6 +137,7 @@ TEST(NeighbourList, ContactHistorySurvivesRebuilds) {
   SimulationConfig c;
   c.timestep = 1e-6;
   c.tangential_law = TangentialLaw::cundall_strack;
+  c.skin = 2.5e-4; // small, so that the fast grain forces rebuilds
   Simulation s(std::move(w), c);
   s.run(200);
   const auto& l = s.neighbours();

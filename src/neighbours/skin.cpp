@@ -1,0 +1,50 @@
+#include "neighbours/skin.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace talus {
+
+namespace {
+// rebuild cost (in entry tests) / packing fraction: 27 / 0.85 = 32 from the stage timings
+// (a rebuild about 110 ns per particle, an entry's test about 4 ns), and 64 measured best
+// (dense2d at 1e5, where the list is rebuilt every 17 steps at 1 mm: docs/performance.md)
+constexpr double rebuild_cost_over_packing_fraction = 64.0;
+} // namespace
+
+double automatic_skin(double speed, double dt, double mean_radius, double max_radius,
+                      const Domain& domain) {
+  double skin = std::sqrt(rebuild_cost_over_packing_fraction * speed * dt * mean_radius);
+  if (!std::isfinite(skin)) skin = mean_radius;
+  skin = std::clamp(skin, 0.1 * mean_radius, mean_radius);
+  const Vec2 size = domain.size();
+  for (const auto& [periodic, length] :
+       {std::pair{domain.periodic_x, size.x}, std::pair{domain.periodic_y, size.y}})
+    if (periodic) {
+      const double room = 0.99 * (length / 3.0 - 2.0 * max_radius);
+      if (room > 0.0) skin = std::min(skin, room);
+    }
+  return skin;
+}
+
+double automatic_skin(const Particles& p, const Domain& domain, double dt) {
+  // one thread, in index order: the sum of the radii, and so the skin and the list, must not
+  // depend on the thread count (a pass over the radii costs about 1% of a rebuild)
+  double fastest2 = 0.0, largest = 0.0, radii = 0.0, all_radii = 0.0;
+  std::size_t free = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    largest = std::max(largest, p.radius[i]);
+    all_radii += p.radius[i];
+    if (p.is_free(i)) {
+      fastest2 = std::max(fastest2, norm2(p.velocity[i]));
+      radii += p.radius[i];
+      ++free;
+    }
+  }
+  const double mean = free > 0
+                          ? radii / static_cast<double>(free)
+                          : all_radii / static_cast<double>(std::max<std::size_t>(1, p.size()));
+  return automatic_skin(std::sqrt(fastest2), dt, mean, largest, domain);
+}
+
+} // namespace talus

@@ -1,0 +1,23 @@
+#pragma once
+// The automatic skin (simulation.skin = 0): chosen again at every list build from how fast the
+// grains move, so that neither the list's extra entries nor its rebuilds dominate a step.
+#include "core/domain.hpp"
+#include "state/particles.hpp"
+
+namespace talus {
+
+/// The skin that balances the two costs a skin sets, for grains of mean radius R whose fastest
+/// moves at `speed` with time step dt. A wider skin puts about 2 phi / R more entries per
+/// particle and metre of skin into the list (phi: packing fraction), each tested every step;
+/// a narrower one rebuilds the list more often, every skin / (2 v dt) steps, each rebuild costing
+/// about as much per particle as C entry tests. The sum is least at
+/// skin = sqrt(C / phi x v dt R); C / phi = 64 (measured). The skin is kept within [0.1, 1] x R,
+/// and below what a periodic box allows (3 interaction ranges 2 R_max + skin per period).
+double automatic_skin(double speed, double dt, double mean_radius, double max_radius,
+                      const Domain& domain);
+
+/// automatic_skin for the particles as they are: the fastest free one, the mean radius of the
+/// free ones (of all, if none is free), the largest radius.
+double automatic_skin(const Particles& p, const Domain& domain, double dt);
+
+} // namespace talus

@@ -1,0 +1,54 @@
+// The automatic skin (simulation.skin = 0): its rule, its bounds, and that a simulation uses it
+// at every build while its configuration (saved in checkpoints) keeps asking for it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "neighbours/skin.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus {
+namespace {
+
+constexpr double radius = 1e-3, dt = 1e-5;
+
+TEST(AutomaticSkin, GrowsAsTheSquareRootOfTheSpeedBetweenATenthAndOneRadius) {
+  const Domain open;
+  EXPECT_DOUBLE_EQ(automatic_skin(0.0, dt, radius, radius, open), 0.1 * radius); // at rest
+  // sqrt(64 v dt R) = 0.4 R at v = 0.25 m/s; four times faster, twice the skin
+  EXPECT_NEAR(automatic_skin(0.25, dt, radius, radius, open), 0.4 * radius, 1e-12);
+  EXPECT_NEAR(automatic_skin(1.0, dt, radius, radius, open), 0.8 * radius, 1e-12);
+  EXPECT_DOUBLE_EQ(automatic_skin(100.0, dt, radius, radius, open), radius); // capped
+}
+
+TEST(AutomaticSkin, LeavesAPeriodicBoxItsThreeInteractionRanges) {
+  // a period of 3 x (2 R_max + 0.5 R): room for a skin of 0.5 R, less 1%
+  const double period = 3.0 * (2.0 * radius + 0.5 * radius);
+  const Domain box{{0.0, 0.0}, {period, 1.0}, true, false};
+  EXPECT_NEAR(automatic_skin(100.0, dt, radius, radius, box), 0.99 * 0.5 * radius, 1e-15);
+  EXPECT_NEAR(automatic_skin(0.25, dt, radius, radius, box), 0.4 * radius, 1e-12); // room left
+}
+
+// Two grains far apart, one moving: the list is built with the skin the rule gives for
+// 0.25 m/s, and the configuration still says "automatic".
+TEST(AutomaticSkin, ASimulationBuildsItsListsWithIt) {
+  World w;
+  Material m;
+  m.normal_stiffness = 1.0e4;
+  w.materials = {m};
+  w.add_particle({.position = {0.0, 0.0}, .radius = radius, .velocity = {0.25, 0.0}});
+  w.add_particle({.position = {0.5, 0.0}, .radius = radius});
+  SimulationConfig c;
+  c.timestep = dt;
+  Simulation s(std::move(w), c);
+  EXPECT_NEAR(s.neighbours().skin, 0.4 * radius, 1e-12);
+  EXPECT_EQ(s.config().skin, 0.0);
+  // it moves half the skin (0.2 mm) in 80 steps: rebuilt, with the same rule
+  const auto builds = s.neighbours().builds;
+  s.run(100);
+  EXPECT_EQ(s.neighbours().builds, builds + 1);
+  EXPECT_NEAR(s.neighbours().skin, 0.4 * radius, 1e-12);
+}
+
+} // namespace
+} // namespace talus
