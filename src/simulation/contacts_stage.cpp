@@ -50,8 +50,6 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
 struct TouchingEntry {
   Vec2 d; // r_i - r_j (the image of j)
   std::uint32_t entry;
-  std::uint32_t row; // i
-  std::uint32_t j;
   std::uint32_t slot; // its deferred slot, or no_slot if its second particle is in the block
 };
 constexpr std::uint32_t no_slot = ~std::uint32_t{0};
@@ -132,7 +130,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
         const auto later = static_cast<std::uint32_t>(j >= last); // j is in a later block
         const std::uint32_t later_mask = 0u - later;
-        found[count] = {d, e, i, j, (slot & later_mask) | ~later_mask};
+        found[count] = {d, e, (slot & later_mask) | ~later_mask};
         count += touches;
         const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
         history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
@@ -144,35 +142,37 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         const TouchingEntry& c0 = found[t];
         const bool two = t + 1 < count;
         const TouchingEntry& c1 = found[two ? t + 1 : t];
-        const Lanes ri{radius[c0.row], radius[c1.row]}, rj{radius[c0.j], radius[c1.j]};
+        // the entries' particles, from the list (the stretch's entries are in the L1 cache)
+        const std::uint32_t i0 = row_of[c0.entry], j0 = neighbour[c0.entry];
+        const std::uint32_t i1 = row_of[c1.entry], j1 = neighbour[c1.entry];
+        const Lanes ri{radius[i0], radius[i1]}, rj{radius[j0], radius[j1]};
         const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
         const ContactLanes g = pair_geometry(
-            dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{mass[c0.row], mass[c1.row]},
-            Lanes{mass[c0.j], mass[c1.j]}, Lanes{velocity[c0.row].x, velocity[c1.row].x},
-            Lanes{velocity[c0.row].y, velocity[c1.row].y},
-            Lanes{velocity[c0.j].x, velocity[c1.j].x}, Lanes{velocity[c0.j].y, velocity[c1.j].y},
-            Lanes{spin[c0.row], spin[c1.row]}, Lanes{spin[c0.j], spin[c1.j]},
-            N::uses_r_eff || T::uses_r_eff);
+            dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{mass[i0], mass[i1]},
+            Lanes{mass[j0], mass[j1]}, Lanes{velocity[i0].x, velocity[i1].x},
+            Lanes{velocity[i0].y, velocity[i1].y}, Lanes{velocity[j0].x, velocity[j1].x},
+            Lanes{velocity[j0].y, velocity[j1].y}, Lanes{spin[i0], spin[i1]},
+            Lanes{spin[j0], spin[j1]}, N::uses_r_eff || T::uses_r_eff);
         Lanes spring{history[c0.entry], history[c1.entry]};
-        const ForceLanes f = contact_force<N, T>(PairLanes(pairs(material[c0.row], material[c0.j]),
-                                                           pairs(material[c1.row], material[c1.j])),
-                                                 g, spring, dt);
-        const auto add = [&](const TouchingEntry& c, int lane) {
+        const ForceLanes f = contact_force<N, T>(
+            PairLanes(pairs(material[i0], material[j0]), pairs(material[i1], material[j1])), g,
+            spring, dt);
+        const auto add = [&](const TouchingEntry& c, std::uint32_t i, std::uint32_t j, int lane) {
           const Vec2 force{f.force_x[lane], f.force_y[lane]};
           history[c.entry] = spring[lane];
-          p.force[c.row] += force;
-          p.torque[c.row] += f.torque_i[lane];
+          p.force[i] += force;
+          p.torque[i] += f.torque_i[lane];
           if (c.slot != no_slot) [[unlikely]] {
             slots[c.slot].force = force;
             slots[c.slot].torque_i = f.torque_i[lane];
             slots[c.slot].torque_j = f.torque_j[lane];
           } else {
-            p.force[c.j] -= force;
-            p.torque[c.j] += f.torque_j[lane];
+            p.force[j] -= force;
+            p.torque[j] += f.torque_j[lane];
           }
         };
-        add(c0, 0);
-        if (two) add(c1, 1);
+        add(c0, i0, j0, 0);
+        if (two) add(c1, i1, j1, 1);
         const Lanes ratio = g.overlap / smaller(ri, rj);
         worst = std::max(worst, std::max(ratio[0], ratio[1]));
       }
