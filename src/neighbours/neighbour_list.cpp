@@ -77,7 +77,7 @@ void index_force_blocks(NeighbourList& list, int threads) {
     for (std::size_t k = b * rows; k < std::min(n, (b + 1) * rows); ++k) {
       if (list.is_late(k)) late[b].push_back(static_cast<std::uint32_t>(k));
       for (std::uint32_t e = list.row_offset[k]; e < list.row_offset[k + 1]; ++e)
-        list.entry_row[e] = static_cast<std::uint32_t>(k);
+        list.entry_row[e] = static_cast<std::uint8_t>((k - b * rows) % NeighbourList::stretch_rows);
     }
   }
   list.late.clear();

@@ -34,9 +34,13 @@ struct NeighbourList {
   /// Particles whose force is complete only after every block: those with deferred entries or
   /// wall contacts, in order.
   std::vector<std::uint32_t> late;
-  /// The row (first particle) of each entry, so that the force stage can walk a stretch of
-  /// entries in one flat loop (no inner loop whose length changes from row to row).
-  std::vector<std::uint32_t> entry_row;
+  /// The force stage goes through a block's rows by stretches of this many, from the block's
+  /// first row.
+  static constexpr std::uint32_t stretch_rows = 64;
+  /// The row (first particle) of each entry, less the first row of its stretch, so that the
+  /// force stage can walk a stretch of entries in one flat loop (no inner loop whose length
+  /// changes from row to row). One byte, not four: it is read for every entry every step.
+  std::vector<std::uint8_t> entry_row;
   bool is_late(std::size_t k) const {
     return deferred_offset[k + 1] > deferred_offset[k] || wall_offset[k + 1] > wall_offset[k];
   }

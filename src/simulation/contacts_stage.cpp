@@ -54,7 +54,7 @@ struct TouchingEntry {
 };
 constexpr std::uint32_t no_slot = ~std::uint32_t{0};
 // Rows per stretch: their particles' data stays in the L1 cache between the two passes.
-constexpr std::ptrdiff_t stretch_rows = 64;
+constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
 // force of its own particles to their weight, then adds each touching pair's force to both
@@ -102,7 +102,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
     const ImageShift* images = list.image.data();
     double* history = list.history.data();
     PairForce* slots = deferred.data();
-    const std::uint32_t* row_of = list.entry_row.data();
+    const std::uint8_t* row_in_stretch = list.entry_row.data();
     const double* mass = p.mass.data();
     const Vec2* velocity = p.velocity.data();
     const double* spin = p.angular_velocity.data();
@@ -116,7 +116,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
       // first pass: the touching entries; the others lose their history (masks, no branches)
       std::size_t count = 0;
       for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
-        const std::uint32_t i = row_of[e];
+        const auto i = static_cast<std::uint32_t>(r0 + row_in_stretch[e]);
         const std::uint32_t j = neighbour[e];
         Vec2 rj = position[j];
         const ImageShift image = images[e];
@@ -143,8 +143,9 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         const bool two = t + 1 < count;
         const TouchingEntry& c1 = found[two ? t + 1 : t];
         // the entries' particles, from the list (the stretch's entries are in the L1 cache)
-        const std::uint32_t i0 = row_of[c0.entry], j0 = neighbour[c0.entry];
-        const std::uint32_t i1 = row_of[c1.entry], j1 = neighbour[c1.entry];
+        const auto i0 = static_cast<std::uint32_t>(r0 + row_in_stretch[c0.entry]);
+        const auto i1 = static_cast<std::uint32_t>(r0 + row_in_stretch[c1.entry]);
+        const std::uint32_t j0 = neighbour[c0.entry], j1 = neighbour[c1.entry];
         const Lanes ri{radius[i0], radius[i1]}, rj{radius[j0], radius[j1]};
         const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
         const ContactLanes g = pair_geometry(
