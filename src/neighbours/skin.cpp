@@ -27,7 +27,7 @@ double automatic_skin(double speed, double dt, double mean_radius, double max_ra
   return skin;
 }
 
-double automatic_skin(const Particles& p, const Domain& domain, double dt) {
+double automatic_skin(const Particles& p, const Segments& walls, const Domain& domain, double dt) {
   // one thread, in index order: the sum of the radii, and so the skin and the list, must not
   // depend on the thread count (a pass over the radii costs about 1% of a rebuild)
   double fastest2 = 0.0, largest = 0.0, radii = 0.0, all_radii = 0.0;
@@ -35,12 +35,15 @@ double automatic_skin(const Particles& p, const Domain& domain, double dt) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     largest = std::max(largest, p.radius[i]);
     all_radii += p.radius[i];
-    if (p.is_free(i)) {
+    if (p.kind[i] != Kind::fixed) // free grains, and wall grains moved by drivers
       fastest2 = std::max(fastest2, norm2(p.velocity[i]));
+    if (p.is_free(i)) {
       radii += p.radius[i];
       ++free;
     }
   }
+  for (const Segment& s : walls) // the ends of moving walls trigger rebuilds too
+    fastest2 = std::max({fastest2, norm2(s.velocity_at(s.a)), norm2(s.velocity_at(s.b))});
   const double mean = free > 0
                           ? radii / static_cast<double>(free)
                           : all_radii / static_cast<double>(std::max<std::size_t>(1, p.size()));

@@ -3,6 +3,7 @@
 // grains move, so that neither the list's extra entries nor its rebuilds dominate a step.
 #include "core/domain.hpp"
 #include "state/particles.hpp"
+#include "state/walls.hpp"
 
 namespace talus {
 
@@ -16,8 +17,9 @@ namespace talus {
 double automatic_skin(double speed, double dt, double mean_radius, double max_radius,
                       const Domain& domain);
 
-/// automatic_skin for the particles as they are: the fastest free one, the mean radius of the
-/// free ones (of all, if none is free), the largest radius.
-double automatic_skin(const Particles& p, const Domain& domain, double dt);
+/// automatic_skin for the world as it is: the fastest of what can set off a rebuild (free grains,
+/// wall grains moved by drivers, the ends of moving wall segments), the mean radius of the free
+/// grains (of all, if none is free), the largest radius.
+double automatic_skin(const Particles& p, const Segments& walls, const Domain& domain, double dt);
 
 } // namespace talus

@@ -102,8 +102,9 @@ void Simulation::step() {
 double Simulation::next_skin() const {
   // config_.skin stays 0 for the automatic skin (it is saved in checkpoints), so that a resumed
   // run chooses its skins as the uninterrupted one does
-  return config_.skin > 0.0 ? config_.skin
-                            : automatic_skin(world_.particles, world_.domain, config_.timestep);
+  return config_.skin > 0.0
+             ? config_.skin
+             : automatic_skin(world_.particles, world_.walls, world_.domain, config_.timestep);
 }
 
 void Simulation::list_moved() {

@@ -50,5 +50,22 @@ TEST(AutomaticSkin, ASimulationBuildsItsListsWithIt) {
   EXPECT_NEAR(s.neighbours().skin, 0.4 * radius, 1e-12);
 }
 
+// A grain at rest beside a wall that moves: the wall's ends set off rebuilds, so its speed
+// chooses the skin (0.25 m/s: 0.4 R, as for a grain that fast).
+TEST(AutomaticSkin, FollowsAMovingWall) {
+  Particles p;
+  p.add({.position = {0.0, 0.0}, .radius = radius, .mass = 1.0, .inertia = 1.0});
+  Segments walls(1);
+  walls[0].a = {-0.1, -0.01};
+  walls[0].b = {0.1, -0.01};
+  EXPECT_DOUBLE_EQ(automatic_skin(p, walls, Domain{}, dt), 0.1 * radius); // all at rest
+  walls[0].velocity = {0.25, 0.0};
+  EXPECT_NEAR(automatic_skin(p, walls, Domain{}, dt), 0.4 * radius, 1e-12);
+  walls[0].velocity = {};
+  walls[0].angular_velocity = 2.5; // about its pivot at the origin: 0.25 m/s at the ends
+  EXPECT_NEAR(automatic_skin(p, walls, Domain{}, dt), 0.4 * radius * std::sqrt(std::sqrt(1.01)),
+              1e-12);
+}
+
 } // namespace
 } // namespace talus
