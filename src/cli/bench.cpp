@@ -146,7 +146,6 @@ void run_bench(const BenchOptions& o) {
   // the list is rebuilt at the first step, with the given skin or the automatic one (the
   // cached packing's list has the LAMMPS input's 1 mm)
   config.skin = o.skin;
-  if (o.skin > 0.0) state.neighbours.skin = o.skin;
   state.neighbours.reference.clear();
   Simulation sim = Simulation::restore(std::move(state), config);
   const double n = static_cast<double>(sim.world().particles.size());

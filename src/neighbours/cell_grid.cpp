@@ -14,9 +14,11 @@ namespace {
 int cells_along(double length, double range, bool periodic, const char* axis) {
   if (periodic) {
     const double n = std::floor(length / range);
-    require(n >= 3.0, std::string("periodic box too small along ") + axis + ": " +
-                          std::to_string(length) + " m holds fewer than 3 interaction ranges of " +
-                          std::to_string(range) + " m (2 x largest radius + skin)");
+    require(n >= min_periodic_cells, std::string("periodic box too small along ") + axis + ": " +
+                                         std::to_string(length) + " m holds fewer than " +
+                                         std::to_string(min_periodic_cells) +
+                                         " interaction ranges of " + std::to_string(range) +
+                                         " m (2 x largest radius + skin)");
     return static_cast<int>(std::min(n, 1.0e6));
   }
   return static_cast<int>(std::clamp(std::floor(length / range) + 1.0, 1.0, 1.0e6));

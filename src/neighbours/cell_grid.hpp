@@ -8,6 +8,10 @@
 
 namespace talus {
 
+/// A periodic direction must hold this many cells at least: the 3 x 3 stencil around a cell
+/// would otherwise meet the same cell twice.
+inline constexpr int min_periodic_cells = 3;
+
 struct CellGrid {
   Vec2 origin;
   Vec2 cell_size;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "neighbours/cell_grid.hpp"
+
 namespace talus {
 
 namespace {
@@ -21,7 +23,7 @@ double automatic_skin(double speed, double dt, double mean_radius, double max_ra
   for (const auto& [periodic, length] :
        {std::pair{domain.periodic_x, size.x}, std::pair{domain.periodic_y, size.y}})
     if (periodic) {
-      const double room = 0.99 * (length / 3.0 - 2.0 * max_radius);
+      const double room = 0.99 * (length / min_periodic_cells - 2.0 * max_radius);
       if (room > 0.0) skin = std::min(skin, room);
     }
   return skin;
@@ -30,10 +32,9 @@ double automatic_skin(double speed, double dt, double mean_radius, double max_ra
 double automatic_skin(const Particles& p, const Segments& walls, const Domain& domain, double dt) {
   // one thread, in index order: the sum of the radii, and so the skin and the list, must not
   // depend on the thread count (a pass over the radii costs about 1% of a rebuild)
-  double fastest2 = 0.0, largest = 0.0, radii = 0.0, all_radii = 0.0;
+  double fastest2 = 0.0, radii = 0.0, all_radii = 0.0;
   std::size_t free = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    largest = std::max(largest, p.radius[i]);
     all_radii += p.radius[i];
     if (p.kind[i] != Kind::fixed) // free grains, and wall grains moved by drivers
       fastest2 = std::max(fastest2, norm2(p.velocity[i]));
@@ -47,7 +48,7 @@ double automatic_skin(const Particles& p, const Segments& walls, const Domain& d
   const double mean = free > 0
                           ? radii / static_cast<double>(free)
                           : all_radii / static_cast<double>(std::max<std::size_t>(1, p.size()));
-  return automatic_skin(std::sqrt(fastest2), dt, mean, largest, domain);
+  return automatic_skin(std::sqrt(fastest2), dt, mean, p.max_radius(), domain);
 }
 
 } // namespace talus
