@@ -1,6 +1,7 @@
 #include "neighbours/neighbour_list.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "neighbours/cell_grid.hpp"
 
@@ -37,7 +38,8 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
 }
 
 std::uint32_t force_block_rows(std::size_t n) {
-  return static_cast<std::uint32_t>(std::max<std::size_t>(256, (n + 15) / 16));
+  const std::size_t blocks = std::clamp<std::size_t>(std::bit_floor(n / 2048), 2, 16);
+  return static_cast<std::uint32_t>(std::max<std::size_t>(1, (n + blocks - 1) / blocks));
 }
 
 void index_force_blocks(NeighbourList& list, int threads) {

@@ -61,8 +61,11 @@ struct NeighbourList {
   }
 };
 
-/// Rows per force block for n particles: n / 16, at least 256 (a function of n only, so that
-/// results do not depend on the thread count).
+/// Rows per force block for n particles: n cut into 2, 4, 8 or 16 blocks (a power of two, so that
+/// 2, 4, 8 or 16 threads share them evenly) of at least 2048 rows each where n allows. A function
+/// of n only, so that results do not depend on the thread count. Not more blocks than that: an
+/// entry that crosses a block's end costs about 6 ns more than one that does not (its deferred
+/// slot and its late particle), and a block's end crosses a whole layer of the packing.
 std::uint32_t force_block_rows(std::size_t n);
 
 /// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list

@@ -41,7 +41,7 @@ std::vector<Frame> frames_of(const Scenario& s, double interval) {
 TEST(Experiments, HourglassFlowsFastestOnTheCentreLineAtASteadyRate) {
   const Scenario s = builtin("hourglass", {"particles.count=250", "simulation.duration=0.8",
                                            "packing.settle_max_time=0.6"});
-  const auto frames = frames_of(s, 0.05);
+  const auto frames = frames_of(s, 0.01);
   // the band just above the orifice (y = 0), 2 orifice widths high, bins of 2 cm across
   const BandProfile p = band_profile(frames, 0.0, 0.1, 0.0, 0.42, 21);
   std::size_t first = 21, last = 0;
@@ -50,12 +50,17 @@ TEST(Experiments, HourglassFlowsFastestOnTheCentreLineAtASteadyRate) {
   ASSERT_LT(first, last);
   const double centre = p.vy[10], edges = 0.5 * (p.vy[first] + p.vy[last]);
   EXPECT_LT(centre, -0.1) << "grains fall through the orifice";
-  // stagnant by the walls: the edge bins move at under a third of the centre's speed
-  EXPECT_LT(std::abs(edges), std::abs(centre) / 3.0) << "centre " << centre << ", edges " << edges;
+  // slow by the walls: the edge bins move at under half the centre's speed. Measured over
+  // seeds 1 to 8 (frames every 0.01 s, 80 to 115 samples in an edge bin): the centre is 2.6 to
+  // 3.4 times faster than the edges; the ratio is a property of the realization (the settled
+  // packing and the flow are chaotic), so the bound leaves room below the lowest seen.
+  EXPECT_LT(std::abs(edges), std::abs(centre) / 2.0) << "centre " << centre << ", edges " << edges;
 
   const Discharge q = discharge(frames, 0.0);
-  std::printf("hourglass: v_y centre %.3f m/s, edges %.3f m/s; %.1f grains/s (halves %.1f, %.1f)\n",
-              centre, edges, q.rate, q.rate_first_half, q.rate_second_half);
+  std::printf("hourglass: v_y centre %.3f m/s, edges %.3f m/s (%zu, %zu samples); %.1f grains/s "
+              "(halves %.1f, %.1f)\n",
+              centre, edges, p.count[first], p.count[last], q.rate, q.rate_first_half,
+              q.rate_second_half);
   EXPECT_GT(q.rate, 0.0);
   // steady: the rates over the two halves of the flow agree within 35% (some 150 grains per
   // half: counting noise alone is about 10%; the rest allows for the start of the flow)
