@@ -179,20 +179,32 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
           count += keep;
         }
       };
+      // Items ascend within a cell, so a cell holds a later particle (j > i) only if its last
+      // item is one. Cells that hold none are not scanned: where the particles' order follows
+      // space (a packing built row by row, for one), that is the row of cells below.
+      const auto any_later = [&](std::size_t c0, std::size_t c1) { // cells [c0, c1)
+        bool later = false;
+        for (std::size_t c = c0; c < c1; ++c)
+          later |= grid.cell_start[c + 1] > grid.cell_start[c] &&
+                   grid.items[grid.cell_start[c + 1] - 1] > i;
+        return later;
+      };
       for (int dy = -1; dy <= 1; ++dy) {
         int ncy = cy + dy;
         std::int8_t sy = 0;
         if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
         const std::size_t cell_row = static_cast<std::size_t>(ncy) * grid.nx;
         if (cx >= 1 && cx + 1 < grid.nx) { // three cells side by side: one stretch of items
-          scan(grid.cell_start[cell_row + cx - 1], grid.cell_start[cell_row + cx + 2], 0, sy);
+          const std::size_t c0 = cell_row + static_cast<std::size_t>(cx) - 1;
+          if (any_later(c0, c0 + 3)) scan(grid.cell_start[c0], grid.cell_start[c0 + 3], 0, sy);
           continue;
         }
         for (int dx = -1; dx <= 1; ++dx) {
           int ncx = cx + dx;
           std::int8_t sx = 0;
           if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
-          scan(grid.cell_start[cell_row + ncx], grid.cell_start[cell_row + ncx + 1], sx, sy);
+          const std::size_t c = cell_row + static_cast<std::size_t>(ncx);
+          if (any_later(c, c + 1)) scan(grid.cell_start[c], grid.cell_start[c + 1], sx, sy);
         }
       }
       // rows are short (a few entries): insertion sort beats std::sort's set-up here
