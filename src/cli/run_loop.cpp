@@ -181,6 +181,7 @@ public:
     std::string ended = "duration";
     while (sim_.step_count() < stop_) {
       sim_.step();
+      follow_renumbering();
       const std::uint64_t k = sim_.step_count();
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
       if (k % thermo_every_ == 0) {
@@ -288,6 +289,17 @@ private:
         hi.y = std::min({hi.y, w.a.y, w.b.y});
       }
     return hi;
+  }
+
+  // The engine renumbers the particles now and then (simulation.sort_every): the run's own
+  // particle indices (tracked grains, wall groups) follow.
+  void follow_renumbering() {
+    if (sim_.renumberings() == renumberings_seen_) return;
+    renumberings_seen_ = sim_.renumberings();
+    const std::vector<std::uint32_t>& to = sim_.new_indices();
+    for (std::uint32_t& i : book_.tracked) i = to[i];
+    for (auto& [name, g] : book_.groups)
+      for (std::uint32_t& i : g.particles) i = to[i];
   }
 
   void record_track() {
@@ -444,6 +456,7 @@ private:
   std::optional<FrostFront> front_;
   std::uint64_t front_every_ = 1;
   bool tty_ = false, printed_ = false;
+  std::uint64_t renumberings_seen_ = 0;
   double next_report_ = 0.1;
   double last_kinetic_ = 0.0;
   std::chrono::steady_clock::time_point last_print_{};

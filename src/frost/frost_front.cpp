@@ -195,6 +195,10 @@ bool FrostFront::is_stone(const Particles& p, std::size_t i) const {
 }
 
 void FrostFront::start_freeze(Simulation& sim) {
+  if (sim.config().sort_interval != 0)
+    throw InvalidArgument("the frost front model keeps its grains by index: it needs a run "
+                          "without renumbering (simulation.sort_every = 0; a scenario with a "
+                          "frost model sets it)");
   Particles& p = sim.world().particles;
   if (material_.size() == p.size()) // thawed fines get their own material back
     for (std::size_t i = 0; i < p.size(); ++i)

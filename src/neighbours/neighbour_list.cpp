@@ -277,4 +277,65 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
   ++list.builds;
 }
 
+void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
+                             const std::vector<std::uint32_t>& new_of_old, int threads) {
+  const std::size_t n = order.size();
+  struct Entry {
+    std::uint32_t j;
+    ImageShift image;
+    double history;
+  };
+  // every pair under its new first particle, in rows
+  std::vector<std::uint32_t> offset(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e)
+      ++offset[std::min(new_of_old[i], new_of_old[list.neighbour[e]]) + 1];
+  for (std::size_t k = 0; k < n; ++k) offset[k + 1] += offset[k];
+  std::vector<Entry> entries(offset[n]);
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
+      const std::uint32_t a = new_of_old[i], b = new_of_old[list.neighbour[e]];
+      const ImageShift s = list.image[e];
+      entries[fill[std::min(a, b)]++] =
+          a < b
+              ? Entry{b, s, list.history[e]}
+              : Entry{a,
+                      ImageShift{static_cast<std::int8_t>(-s.sx), static_cast<std::int8_t>(-s.sy)},
+                      list.history[e]};
+    }
+  for (std::size_t k = 0; k < n; ++k) // short rows: insertion sort by the second particle
+    for (std::uint32_t m = offset[k] + 1; m < offset[k + 1]; ++m)
+      for (std::uint32_t q = m; q > offset[k] && entries[q - 1].j > entries[q].j; --q)
+        std::swap(entries[q - 1], entries[q]);
+  list.row_offset = std::move(offset);
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    list.neighbour[e] = entries[e].j;
+    list.image[e] = entries[e].image;
+    list.history[e] = entries[e].history;
+  }
+  // wall rows follow their particles
+  std::vector<std::uint32_t> wall_offset(n + 1, 0), wall_segment;
+  std::vector<double> wall_history;
+  wall_segment.reserve(list.wall_segment.size());
+  wall_history.reserve(list.wall_history.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t i = order[k];
+    for (std::uint32_t e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e) {
+      wall_segment.push_back(list.wall_segment[e]);
+      wall_history.push_back(list.wall_history[e]);
+    }
+    wall_offset[k + 1] = static_cast<std::uint32_t>(wall_segment.size());
+  }
+  list.wall_offset = std::move(wall_offset);
+  list.wall_segment = std::move(wall_segment);
+  list.wall_history = std::move(wall_history);
+  if (list.reference.size() == n) {
+    std::vector<Vec2> reference(n);
+    for (std::size_t k = 0; k < n; ++k) reference[k] = list.reference[order[k]];
+    list.reference = std::move(reference);
+  }
+  index_force_blocks(list, threads);
+}
+
 } // namespace talus

@@ -80,6 +80,14 @@ bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments
 bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,
                  const std::vector<std::uint32_t>& driven);
 
+/// The same list for renumbered particles (Particles::permute with `order`; new_of_old is its
+/// inverse): every pair keeps its history, an entry whose new first particle is the later one
+/// is turned round (its image negated; the tangential spring is the same seen from either
+/// side), rows are sorted again, the wall rows and build positions follow their particles and
+/// the force blocks are indexed again.
+void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
+                             const std::vector<std::uint32_t>& new_of_old, int threads = 1);
+
 /// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
 /// two non-free particles are left out. History of pairs still within reach is carried over.
 /// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.

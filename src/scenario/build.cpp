@@ -263,6 +263,8 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   c.tangential_law = s.simulation.tangential_law;
   c.threads = s.simulation.threads;
   c.skin = s.simulation.skin;
+  // the frost models keep per-particle state of their own by index: no renumbering under them
+  c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
   if (s.simulation.timestep) {
     // the stiffest oscillation: linear k_n, or Hertz' tangent stiffness at the impact speed
@@ -322,11 +324,13 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
       }
     }
     out.settle_time = sim.time();
+    // by id: the settling run may have renumbered its particles (simulation.sort_every)
     const Particles& settled = sim.world().particles;
-    for (std::size_t i = 0; i < w.particles.size(); ++i) {
+    for (std::size_t k = 0; k < settled.size(); ++k) {
+      const std::uint32_t i = settled.id[k];
       if (!w.particles.is_free(i)) continue;
-      w.particles.position[i] = settled.position[i];
-      w.particles.angle[i] = settled.angle[i];
+      w.particles.position[i] = settled.position[k];
+      w.particles.angle[i] = settled.angle[k];
     }
   }
 

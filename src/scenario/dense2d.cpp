@@ -43,6 +43,7 @@ Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::s
   d.config.normal_law = NormalLaw::linear;
   d.config.tangential_law = TangentialLaw::cundall_strack;
   d.config.skin = 1.0e-3;
+  d.config.sort_interval = 1000; // as LAMMPS sorts its atoms (atom_modify sort, default)
   return d;
 }
 
@@ -81,7 +82,7 @@ SimulationState tile_dense2d(const SimulationState& base, std::size_t copies, do
   repeat(p.inv_mass, copies), repeat(p.inv_inertia, copies), repeat(p.material, copies);
   repeat(p.kind, copies), repeat(p.id, copies);
   repeat(p.force_previous, copies), repeat(p.torque_previous, copies);
-  for (std::size_t k = n; k < p.size(); ++k) {
+  for (std::size_t k = 0; k < p.size(); ++k) { // copy c of base particle i: index and id c n + i
     p.position[k].x += width * static_cast<double>(k / n);
     p.id[k] = static_cast<std::uint32_t>(k);
   }

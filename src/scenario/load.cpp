@@ -101,6 +101,9 @@ void read_simulation(TableReader& r, SimulationSection& s) {
                                                 std::numeric_limits<std::int64_t>::max()));
   s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
   s.skin = r.number("skin", s.skin, 0.0, inf, ">= 0 m (0: automatic)");
+  s.sort_every =
+      static_cast<std::uint64_t>(r.integer("sort_every", static_cast<std::int64_t>(s.sort_every), 0,
+                                           std::numeric_limits<std::int64_t>::max()));
   s.impact_speed = r.number("impact_speed", s.impact_speed, 1e-9, inf, "> 0 m/s");
 }
 

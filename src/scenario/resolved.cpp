@@ -41,6 +41,7 @@ std::string to_toml(const Scenario& s) {
   t.insert("seed", static_cast<std::int64_t>(sim.seed));
   t.insert("threads", sim.threads);
   t.insert("skin", sim.skin);
+  t.insert("sort_every", static_cast<std::int64_t>(sim.sort_every));
   t.insert("impact_speed", sim.impact_speed);
   root.insert("simulation", t);
 

@@ -29,9 +29,10 @@ struct SimulationSection {
   TangentialLaw tangential_law = TangentialLaw::cundall_strack;
   Vec2 gravity{0.0, -9.81}; ///< m/s^2
   std::uint64_t seed = 1;
-  int threads = 0;           ///< 0: all cores
-  double skin = 0.0;         ///< m; 0: automatic
-  double impact_speed = 1.0; ///< m/s: reference speed for Hertz collision times
+  int threads = 0;                 ///< 0: all cores
+  double skin = 0.0;               ///< m; 0: automatic
+  std::uint64_t sort_every = 1000; ///< steps between renumberings of the particles; 0: never
+  double impact_speed = 1.0;       ///< m/s: reference speed for Hertz collision times
 };
 
 struct SizeSpec {

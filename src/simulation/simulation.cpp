@@ -1,5 +1,7 @@
 #include "simulation/simulation.hpp"
 
+#include "neighbours/cell_grid.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -79,6 +81,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
 }
 
 void Simulation::step() {
+  if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
   const double dt = config_.timestep;
   Particles& p = world_.particles;
   const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
@@ -105,6 +108,25 @@ double Simulation::next_skin() const {
   return config_.skin > 0.0
              ? config_.skin
              : automatic_skin(world_.particles, world_.walls, world_.domain, config_.timestep);
+}
+
+void Simulation::sort_particles() {
+  Particles& p = world_.particles;
+  if (p.size() < 2) return;
+  // the cell grid's order: cells row by row, particles ascending within a cell (a counting sort,
+  // so the order is a function of the positions alone)
+  CellGrid grid;
+  grid.build(p.position, world_.domain, 2.0 * p.max_radius(), threads_);
+  const std::vector<std::uint32_t>& order = grid.items;
+  new_of_old_.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    new_of_old_[order[k]] = static_cast<std::uint32_t>(k);
+  p.permute(order);
+  renumber_neighbour_list(list_, order, new_of_old_, threads_);
+  for (Driver& d : world_.drivers)
+    for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];
+  list_moved();
+  ++renumberings_;
 }
 
 void Simulation::list_moved() {

@@ -28,6 +28,11 @@ struct SimulationConfig {
   /// every 16 steps; an empty box, the default, turns the check off). Periodic directions wrap.
   Vec2 escape_lo{};
   Vec2 escape_hi{};
+  /// Every this many steps (at the start of a step whose count is a multiple), the particles
+  /// are renumbered in the order of the cells they lie in (row by row of cells, bottom to top),
+  /// so that neighbours lie close in memory as flow mixes the grains; 0: never. Particle
+  /// indices change then (ids do not): see Simulation::renumberings.
+  std::uint64_t sort_interval = 0;
 };
 
 /// One touching contact, as the force stage sees it. `wall` is the segment index for a
@@ -81,6 +86,14 @@ public:
   void hold(std::uint32_t i, bool held);
   /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
   void displace_held(std::uint32_t i, Vec2 d);
+  /// Between steps: renumbers the particles in the order of the cells they lie in (as
+  /// `sort_interval` does). The neighbour list, its history, the drivers' targets and the held
+  /// particles follow; a caller that keeps particle indices maps them with new_indices().
+  void sort_particles();
+  /// How many times the particles were renumbered, and the new index of every old index at the
+  /// last time (empty before).
+  std::uint64_t renumberings() const { return renumberings_; }
+  const std::vector<std::uint32_t>& new_indices() const { return new_of_old_; }
   /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
   /// (allocated capacity, not the process' resident size).
   std::size_t footprint_bytes() const;
@@ -108,8 +121,10 @@ private:
   double max_overlap_seen_ = 0.0;     ///< largest overlap / smaller radius in the last force stage
   bool finite_ = true;                ///< every position and velocity finite after the last step
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
-  bool driven_stale_ = false;         ///< a particle was held or freed since driven_ was listed
-  bool list_stale_ = false;           ///< a held particle was freed: rebuild the list
+  std::uint64_t renumberings_ = 0;
+  std::vector<std::uint32_t> new_of_old_;
+  bool driven_stale_ = false; ///< a particle was held or freed since driven_ was listed
+  bool list_stale_ = false;   ///< a held particle was freed: rebuild the list
   std::uint32_t worst_pair_[2] = {0, 0};
 };
 

@@ -94,4 +94,25 @@ void Particles::set_held(std::size_t i, bool held) {
   if (i < force_previous.size()) force_previous[i] = {}, torque_previous[i] = 0.0;
 }
 
+namespace {
+template <class T> void permute_field(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
+  if (v.size() != order.size()) return; // an unused field (the other integrator's history)
+  std::vector<T> old = std::move(v);
+  v.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
+}
+} // namespace
+
+void Particles::permute(const std::vector<std::uint32_t>& order) {
+  permute_field(position, order), permute_field(velocity, order), permute_field(force, order);
+  permute_field(angle, order), permute_field(angular_velocity, order);
+  permute_field(torque, order), permute_field(radius, order), permute_field(mass, order);
+  permute_field(inertia, order), permute_field(inv_mass, order);
+  permute_field(inv_inertia, order), permute_field(material, order), permute_field(kind, order);
+  permute_field(id, order), permute_field(force_previous, order);
+  permute_field(torque_previous, order);
+  permute_field(gear.r2, order), permute_field(gear.r3, order), permute_field(gear.r4, order);
+  permute_field(gear.phi2, order), permute_field(gear.phi3, order), permute_field(gear.phi4, order);
+}
+
 } // namespace talus

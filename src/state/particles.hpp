@@ -79,6 +79,9 @@ struct Particles {
   /// Appends a particle with mass and inertia already resolved (> 0). Returns its index.
   std::size_t add(const ParticleSpec& spec);
   void reserve(std::size_t n);
+  /// Renumbers the particles: the new particle k is the old particle order[k] (every field,
+  /// the integrators' history included). `order` must be a permutation of 0 .. size()-1.
+  void permute(const std::vector<std::uint32_t>& order);
 };
 
 } // namespace talus

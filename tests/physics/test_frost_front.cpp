@@ -33,6 +33,7 @@ tangential_law = "cundall_strack"
 timestep_factor = 20
 threads = 1
 seed = 3
+sort_every = 0 # the front model keeps its grains by index
 [[materials]]
 name = "soil"
 density = 2650.0
