@@ -28,7 +28,8 @@ namespace {
 struct BenchOptions {
   std::size_t n = 10000;
   std::size_t tiles = 1;
-  double skin = 0.0; // m; 0: automatic (the engine's default)
+  double skin = 0.0;               // m; 0: automatic (the engine's default)
+  std::uint64_t sort_every = 1000; // steps between renumberings (the scenarios' default)
   std::uint64_t steps = 2000;
   int threads = 1;
   bool lammps = false;
@@ -146,6 +147,7 @@ void run_bench(const BenchOptions& o) {
   // the list is rebuilt at the first step, with the given skin or the automatic one (the
   // cached packing's list has the LAMMPS input's 1 mm)
   config.skin = o.skin;
+  config.sort_interval = o.sort_every;
   state.neighbours.reference.clear();
   Simulation sim = Simulation::restore(std::move(state), config);
   const double n = static_cast<double>(sim.world().particles.size());
@@ -257,6 +259,10 @@ void add_bench_command(CLI::App& app) {
          "physics is the same)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.01));
+  cmd->add_option("--sort-every", o->sort_every,
+                  "steps between renumberings of the particles in the order of their cells (0: "
+                  "never; the settled packing is cached in the order it settled into)")
+      ->capture_default_str();
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,

@@ -113,11 +113,25 @@ double Simulation::next_skin() const {
 void Simulation::sort_particles() {
   Particles& p = world_.particles;
   if (p.size() < 2) return;
-  // the cell grid's order: cells row by row, particles ascending within a cell (a counting sort,
-  // so the order is a function of the positions alone)
+  // The cells' order: bands of `band` cells side by side, each band row by row from the bottom,
+  // the particles of a cell in ascending index (the grid's counting sort): a function of the
+  // positions alone. A band's rows are at most 256 cells long, so a particle's neighbours above
+  // it follow it within a few hundred particles however wide the system is (rows across a
+  // 32000-grain-wide strip cost 55 ns per particle-step, bands of 256 cells 42, of 32 cells 51;
+  // a square of 316 x 316 grains is one band; docs/performance.md).
   CellGrid grid;
   grid.build(p.position, world_.domain, 2.0 * p.max_radius(), threads_);
-  const std::vector<std::uint32_t>& order = grid.items;
+  constexpr int band = 256;
+  std::vector<std::uint32_t> order;
+  order.reserve(p.size());
+  for (int x0 = 0; x0 < grid.nx; x0 += band)
+    for (int cy = 0; cy < grid.ny; ++cy)
+      for (int cx = x0; cx < std::min(grid.nx, x0 + band); ++cx) {
+        const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(grid.nx) +
+                              static_cast<std::size_t>(cx);
+        order.insert(order.end(), grid.items.begin() + grid.cell_start[c],
+                     grid.items.begin() + grid.cell_start[c + 1]);
+      }
   new_of_old_.resize(order.size());
   for (std::size_t k = 0; k < order.size(); ++k)
     new_of_old_[order[k]] = static_cast<std::uint32_t>(k);
