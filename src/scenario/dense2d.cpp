@@ -8,10 +8,7 @@
 
 namespace talus {
 
-Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::size_t count) {
-  require(nx >= 3 && ny >= 1, "dense2d: needs nx >= 3 (periodic in x) and ny >= 1");
-  Dense2d d;
-  World& w = d.world;
+Material dense2d_material() {
   Material m;
   m.name = "lammps_hooke_history";
   m.density = 1000.0;
@@ -20,6 +17,14 @@ Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::s
   m.normal_damping_rate = 100.0;
   m.tangential_damping = 50.0;
   m.friction = 0.5;
+  return m;
+}
+
+Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::size_t count) {
+  require(nx >= 3 && ny >= 1, "dense2d: needs nx >= 3 (periodic in x) and ny >= 1");
+  Dense2d d;
+  World& w = d.world;
+  const Material m = dense2d_material();
   w.materials = {m};
   w.gravity = {0.0, -9.81};
   const double pitch = 0.01, width = pitch * static_cast<double>(nx);

@@ -10,6 +10,10 @@ struct Dense2d {
   SimulationConfig config;
 };
 
+/// The LAMMPS input's grain material: density 1000 kg/m^3, k_n = 1e5 N/m, k_t = 2/7 k_n,
+/// gamma_n = 100 1/s, gamma_t = 50 1/s, mu = 0.5.
+Material dense2d_material();
+
 /// The unsettled lattice: diameters uniform in [8.5, 9.5] mm on a 1 cm square lattice (as the
 /// LAMMPS input's `lattice sq 0.01`), density 1000 kg/m^3 with LAMMPS' sphere mass and disc
 /// inertia (I = m r^2 / 2); k_n = 1e5 N/m, k_t = 2/7 k_n, gamma_n = 100 1/s, gamma_t = 50 1/s,

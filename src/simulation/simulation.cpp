@@ -1,7 +1,5 @@
 #include "simulation/simulation.hpp"
 
-#include "neighbours/cell_grid.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -11,6 +9,7 @@
 #include <omp.h>
 
 #include "core/error.hpp"
+#include "neighbours/cell_grid.hpp"
 #include "neighbours/skin.hpp"
 
 namespace talus {

@@ -29,7 +29,7 @@ struct SimulationConfig {
   Vec2 escape_lo{};
   Vec2 escape_hi{};
   /// Every this many steps (at the start of a step whose count is a multiple), the particles
-  /// are renumbered in the order of the cells they lie in (row by row of cells, bottom to top),
+  /// are renumbered in the order of the cells they lie in (bands of cells, each row by row),
   /// so that neighbours lie close in memory as flow mixes the grains; 0: never. Particle
   /// indices change then (ids do not): see Simulation::renumberings.
   std::uint64_t sort_interval = 0;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/random.hpp"
+#include "scenario/dense2d.hpp"
 #include "simulation/simulation.hpp"
 
 namespace talus {
@@ -15,12 +16,8 @@ namespace {
 
 World dense_periodic_box(std::uint64_t seed) {
   World w;
-  Material m;
-  m.density = 1000.0;
-  m.normal_stiffness = 1.0e5;
-  m.normal_damping_rate = 100.0;
-  m.tangential_damping = 50.0;
-  m.friction = 0.3; // low enough for some contacts to slip on the first step
+  Material m = dense2d_material(); // the benchmark's grains
+  m.friction = 0.3;                // low enough for some contacts to slip on the first step
   w.materials = {m};
   w.gravity = {0.0, -9.81};
   const int side = 92; // over 8192 grains: four force blocks (force_block_rows)
