@@ -180,7 +180,7 @@ public:
     };
     std::string ended = "duration";
     while (sim_.step_count() < stop_) {
-      sim_.step();
+      sim_.run(steps_to_next_look());
       follow_renumbering();
       const std::uint64_t k = sim_.step_count();
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
@@ -289,6 +289,25 @@ private:
         hi.y = std::min({hi.y, w.a.y, w.b.y});
       }
     return hi;
+  }
+
+  // Steps to the next one after which the loop looks at the state (a record, a snapshot, a
+  // checkpoint, the frost model, a renumbering to follow: at most one per call), at most 1000 so
+  // that a signal is answered soon. Simulation::run does the steps in between with one pass
+  // over memory less each (the correction of one and the prediction of the next together).
+  std::uint64_t steps_to_next_look() const {
+    const std::uint64_t k = sim_.step_count();
+    std::uint64_t next = std::min(stop_, k + 1000);
+    const auto look_at_multiples_of = [&](std::uint64_t every) {
+      if (every > 0) next = std::min(next, (k / every + 1) * every);
+    };
+    look_at_multiples_of(thermo_every_);
+    look_at_multiples_of(snapshot_every_);
+    look_at_multiples_of(checkpoint_every_);
+    if (!book_.tracked.empty()) look_at_multiples_of(track_every_);
+    if (front_) look_at_multiples_of(front_every_);
+    look_at_multiples_of(sim_.config().sort_interval);
+    return next - k;
   }
 
   // The engine renumbers the particles now and then (simulation.sort_every): the run's own

@@ -19,17 +19,20 @@ void gear_initialise(Particles& p) {
   }
 }
 
-bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
-  const double h2 = dt * dt / 2.0, h3 = dt * dt * dt / 6.0, h4 = dt * dt * dt * dt / 24.0;
-  auto& g = p.gear;
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const bool has_reference = drift.reference.size() == p.size();
-  bool moved = !has_reference;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (p.kind[i] != Kind::free) continue;
+namespace {
+
+// The predictor and the corrector for one particle, shared by the passes below so that a fused
+// pass does exactly the arithmetic of the two separate ones.
+struct GearPredictor {
+  double dt, h2, h3, h4;
+  explicit GearPredictor(double step)
+      : dt(step), h2(step * step / 2.0), h3(step * step * step / 6.0),
+        h4(step * step * step * step / 24.0) {}
+  // returns the drift test's answer for the predicted position
+  bool operator()(Particles& p, std::size_t i, const Vec2* reference, double limit2) const {
+    auto& g = p.gear;
     p.position[i] += dt * p.velocity[i] + h2 * g.r2[i] + h3 * g.r3[i] + h4 * g.r4[i];
-    if (has_reference) moved = moved || norm2(p.position[i] - drift.reference[i]) > drift.limit2;
+    const bool far = reference != nullptr && norm2(p.position[i] - reference[i]) > limit2;
     p.velocity[i] += dt * g.r2[i] + h2 * g.r3[i] + h3 * g.r4[i];
     g.r2[i] += dt * g.r3[i] + h2 * g.r4[i];
     g.r3[i] += dt * g.r4[i];
@@ -37,22 +40,19 @@ bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift) 
     p.angular_velocity[i] += dt * g.phi2[i] + h2 * g.phi3[i] + h3 * g.phi4[i];
     g.phi2[i] += dt * g.phi3[i] + h2 * g.phi4[i];
     g.phi3[i] += dt * g.phi4[i];
+    return far;
   }
-  return moved;
-}
+};
 
-bool gear_correct(Particles& p, double dt, int threads) {
-  // r_k += c_k k!/dt^k (dt^2/2) da, with da = F/m - a_predicted.
-  const double k0 = gear_c[0] * dt * dt / 2.0;
-  const double k1 = gear_c[1] * dt / 2.0;
-  const double k3 = gear_c[3] * 3.0 / dt;
-  const double k4 = gear_c[4] * 12.0 / (dt * dt);
-  auto& g = p.gear;
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-  bool finite = true;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (p.kind[i] != Kind::free) continue;
+// r_k += c_k k!/dt^k (dt^2/2) da, with da = F/m - a_predicted.
+struct GearCorrector {
+  double k0, k1, k3, k4;
+  explicit GearCorrector(double dt)
+      : k0(gear_c[0] * dt * dt / 2.0), k1(gear_c[1] * dt / 2.0), k3(gear_c[3] * 3.0 / dt),
+        k4(gear_c[4] * 12.0 / (dt * dt)) {}
+  // returns whether the corrected position and velocity are finite
+  bool operator()(Particles& p, std::size_t i) const {
+    auto& g = p.gear;
     const Vec2 da = p.force[i] * p.inv_mass[i] - g.r2[i];
     p.position[i] += k0 * da;
     p.velocity[i] += k1 * da;
@@ -65,10 +65,53 @@ bool gear_correct(Particles& p, double dt, int threads) {
     g.phi2[i] += dphi;
     g.phi3[i] += k3 * dphi;
     g.phi4[i] += k4 * dphi;
-    finite = finite &&
-             std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y);
+    return std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y);
   }
+};
+
+const Vec2* reference_of(const Particles& p, const DriftTest& drift) {
+  return drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
+}
+
+} // namespace
+
+bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+  const GearPredictor predict(dt);
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const Vec2* reference = reference_of(p, drift);
+  bool moved = reference == nullptr;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (p.kind[i] == Kind::free && predict(p, static_cast<std::size_t>(i), reference, drift.limit2))
+      moved = true;
+  return moved;
+}
+
+bool gear_correct(Particles& p, double dt, int threads) {
+  const GearCorrector correct(dt);
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (p.kind[i] == Kind::free) finite = correct(p, static_cast<std::size_t>(i)) && finite;
   return finite;
+}
+
+StepSeam gear_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+  const GearCorrector correct(dt);
+  const GearPredictor predict(dt);
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const Vec2* reference = reference_of(p, drift);
+  bool finite = true, moved = reference == nullptr;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
+    reduction(|| : moved)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    if (p.kind[i] != Kind::free) continue;
+    const auto k = static_cast<std::size_t>(i);
+    finite = correct(p, k) && finite;
+    if (predict(p, k, reference, drift.limit2)) moved = true;
+  }
+  return {finite, moved};
 }
 
 } // namespace talus

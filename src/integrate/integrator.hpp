@@ -36,6 +36,12 @@ struct DriftTest {
   double limit2;
 };
 
+/// What a pass that ends one step and begins the next reports.
+struct StepSeam {
+  bool finite = true; ///< every corrected position and velocity finite
+  bool moved = false; ///< the drift test of the prediction: rebuild the list
+};
+
 /// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
 void gear_initialise(Particles& p);
 /// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.
@@ -44,6 +50,26 @@ bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 /// Corrects every predicted derivative by the difference of F/m and the predicted acceleration.
 /// Returns false if a position or velocity came out non-finite.
 bool gear_correct(Particles& p, double dt, int threads);
+/// gear_correct, then gear_predict for the next step, particle by particle in one pass over
+/// memory (the same arithmetic: the results are bit-identical to the two passes).
+StepSeam gear_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift);
+
+/// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the forces
+/// in `force` and no branch on the kind: fixed and moved particles have inv_mass = 0 (no kick),
+/// fixed ones are at rest and drivers overwrite moved ones. The velocity it leaves is the
+/// prediction v(t) + dt a(t) the contact laws see. Returns whether the particle ended farther
+/// than sqrt(limit2) from its reference (none given: false).
+inline bool verlet_predict_one(Particles& p, std::size_t i, double dt, double half,
+                               const Vec2* reference, double limit2) {
+  const Vec2 kick = half * p.inv_mass[i] * p.force[i];
+  p.position[i] += dt * (p.velocity[i] + kick);
+  const bool far = reference != nullptr && norm2(p.position[i] - reference[i]) > limit2;
+  p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
+  const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
+  p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
+  p.angular_velocity[i] += 2.0 * spin_kick;
+  return far;
+}
 
 /// Velocity Verlet: half kick with the old forces, then drift; F(t) moves to force_previous (the
 /// force stage must then set every force). Returns the drift test's answer.
@@ -57,5 +83,10 @@ inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
   p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
 }
+
+/// Velocity Verlet's second half kick for every particle, then verlet_predict for the next step,
+/// particle by particle in one pass over memory (bit-identical to the separate stages). The force
+/// stage must not have applied verlet_correct_one already.
+StepSeam verlet_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 
 } // namespace talus

@@ -31,26 +31,34 @@ bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   p.force_previous.resize(p.size());
   p.torque_previous.resize(p.size());
-  const bool has_reference = drift.reference.size() == p.size();
-  const Vec2* reference = has_reference ? drift.reference.data() : nullptr;
-  bool moved = !has_reference;
-  // No branch on the kind: fixed and moved particles have inv_mass = 0 (no kick); fixed ones are
-  // at rest (the Simulation makes sure) and drivers overwrite moved ones after this stage.
+  const Vec2* reference = drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
+  bool moved = reference == nullptr;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const Vec2 kick = half * p.inv_mass[i] * p.force[i];
-    p.position[i] += dt * (p.velocity[i] + kick);
-    if (reference) moved |= norm2(p.position[i] - reference[i]) > drift.limit2;
-    p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
-    const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
-    p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
-    p.angular_velocity[i] += 2.0 * spin_kick;
-  }
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (verlet_predict_one(p, static_cast<std::size_t>(i), dt, half, reference, drift.limit2))
+      moved = true;
   // F(t) is kept by a swap, not a copy (one pass less over memory): `force` now holds stale
   // values that the force stage overwrites for every particle
   std::swap(p.force, p.force_previous);
   std::swap(p.torque, p.torque_previous);
   return moved;
+}
+
+StepSeam verlet_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+  const double half = 0.5 * dt;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  const Vec2* reference = drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
+  bool finite = true, moved = reference == nullptr;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
+    reduction(|| : moved)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    finite = verlet_correct_one(p, k, half) && finite;
+    if (verlet_predict_one(p, k, dt, half, reference, drift.limit2)) moved = true;
+  }
+  std::swap(p.force, p.force_previous); // as verlet_predict leaves them
+  std::swap(p.torque, p.torque_previous);
+  return {finite, moved};
 }
 
 } // namespace talus

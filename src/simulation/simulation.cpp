@@ -80,22 +80,39 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
 }
 
 void Simulation::step() {
-  if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
+  advance(false);
+}
+
+void Simulation::advance(bool fuse) {
   const double dt = config_.timestep;
   Particles& p = world_.particles;
-  const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
-  bool moved = config_.integrator == Integrator::gear ? gear_predict(p, dt, threads_, drift)
-                                                      : verlet_predict(p, dt, threads_, drift);
+  const bool verlet = config_.integrator == Integrator::verlet;
+  bool moved = predicted_moved_;
+  if (!predicted_) {
+    if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
+    const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
+    moved = verlet ? verlet_predict(p, dt, threads_, drift) : gear_predict(p, dt, threads_, drift);
+  }
+  predicted_ = false;
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
   if (driven_stale_) list_moved();
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
-  const bool verlet = config_.integrator == Integrator::verlet;
-  const bool finite = compute_forces(verlet); // Verlet's correction is done within
+  // Verlet's correction is done within, unless the pass below does it
+  const bool finite = compute_forces(verlet && !fuse);
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
-  finite_ = verlet ? finite : gear_correct(p, dt, threads_);
+  if (fuse) {
+    const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
+    const StepSeam seam = verlet ? verlet_correct_predict(p, dt, threads_, drift)
+                                 : gear_correct_predict(p, dt, threads_, drift);
+    finite_ = seam.finite;
+    predicted_moved_ = seam.moved;
+    predicted_ = true;
+  } else {
+    finite_ = verlet ? finite : gear_correct(p, dt, threads_);
+  }
   ++steps_;
   time_ = t_next;
   guard();
@@ -193,8 +210,17 @@ std::size_t Simulation::footprint_bytes() const {
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
                      std::uint64_t every) {
+  // Between two steps of this loop nothing looks at the state, so a step's correction and the
+  // next one's prediction are one pass (advance), except after the last step, a step the
+  // observer or the escape check sees, and before a step that renumbers (it orders the
+  // particles by the corrected positions).
+  const bool box =
+      config_.escape_hi.x > config_.escape_lo.x && config_.escape_hi.y > config_.escape_lo.y;
   for (std::uint64_t s = 0; s < steps; ++s) {
-    step();
+    const std::uint64_t next = steps_ + 1;
+    advance(s + 1 < steps && !(observer && every > 0 && next % every == 0) &&
+            !(config_.sort_interval > 0 && next % config_.sort_interval == 0) &&
+            !(box && next % 16 == 0));
     if (observer && every > 0 && steps_ % every == 0) observer(*this);
   }
 }

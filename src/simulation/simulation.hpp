@@ -105,6 +105,10 @@ private:
   /// Forces of the current state; with `verlet_correct`, also velocity Verlet's second half kick,
   /// particle by particle. Returns false if a corrected velocity came out non-finite.
   bool compute_forces(bool verlet_correct = false);
+  /// One step. With `fuse`, the correction of this step and the prediction of the next are one
+  /// pass over memory, and the state between the two steps is the predicted one: run() fuses
+  /// only where nothing looks at the state in between.
+  void advance(bool fuse);
   void guard() const;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
@@ -123,9 +127,10 @@ private:
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   std::uint64_t renumberings_ = 0;
   std::vector<std::uint32_t> new_of_old_;
-  bool driven_stale_ = false; ///< a particle was held or freed since driven_ was listed
-  bool list_stale_ = false;   ///< a held particle was freed: rebuild the list
-  std::uint32_t worst_pair_[2] = {0, 0};
+  bool driven_stale_ = false;    ///< a particle was held or freed since driven_ was listed
+  bool list_stale_ = false;      ///< a held particle was freed: rebuild the list
+  bool predicted_ = false;       ///< the next step's prediction is done (only inside run())
+  bool predicted_moved_ = false; ///< and its drift test asks for a new list
 };
 
 } // namespace talus
