@@ -1,6 +1,7 @@
 #pragma once
 // The Verlet list: every pair within reach (touching, or closer than the skin), as a half list
 // (j > i) in CSR form, with the tangential history of each pair stored beside its entry.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -67,6 +68,14 @@ struct NeighbourList {
 /// entry that crosses a block's end costs about 6 ns more than one that does not (its deferred
 /// slot and its late particle), and a block's end crosses a whole layer of the packing.
 std::uint32_t force_block_rows(std::size_t n);
+
+/// How `threads` threads share the force blocks: share t is the blocks [start[t], start[t + 1])
+/// (threads + 1 values), consecutive blocks with about an equal part of the total `work` (one
+/// figure per block, as the last force stage measured it; each block goes to the share that
+/// holds most of its work; with no work at all, equal counts of blocks). Which thread runs a
+/// block changes no result, since a block's sums are its own; an even share of the work does
+/// not follow from an even share of the rows where the packing is denser at the bottom.
+std::vector<std::ptrdiff_t> force_block_shares(const std::vector<std::uint64_t>& work, int threads);
 
 /// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
 /// calls it; a list read back from a checkpoint needs it too).

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include <omp.h>
+
 #include "contact/contact_lanes.hpp"
 #include "simulation/simulation.hpp"
 
@@ -60,7 +62,9 @@ constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 // force of its own particles to their weight, then adds each touching pair's force to both
 // partners in entry order, except that a partner beyond the block gets its share later, from a
 // deferred slot. A block writes only its own particles, so blocks run side by side, and the order
-// of every sum is fixed by the list alone: results do not depend on the thread count.
+// of every sum is fixed by the list alone: results do not depend on the thread count. Each thread
+// takes consecutive blocks with about an equal part of the last stage's work (force_block_shares:
+// the bottom of a packing has more contacts than its top).
 // A block goes through its rows by stretches of 64, in two passes. The first tests every entry
 // and writes down the touching ones, with masks instead of a branch per entry: in a disordered
 // packing which neighbours touch follows no pattern a branch predictor can learn (the
@@ -69,20 +73,32 @@ constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 // the same, in the same order, as in one pass that tests every entry and branches.
 // `done(k)` is called for every particle whose force is complete once its row is done (rows
 // after it never name it); the late ones (NeighbourList::late) are done in finish_forces.
+// The blocks of the calling thread: its shares of force_block_shares (`start`), consecutive (a
+// team smaller than asked for takes several shares per thread).
+std::pair<std::ptrdiff_t, std::ptrdiff_t>
+blocks_of_this_thread(const std::vector<std::ptrdiff_t>& start) {
+  const auto shares = start.size() - 1;
+  const auto team = static_cast<std::size_t>(omp_get_num_threads());
+  const auto t = static_cast<std::size_t>(omp_get_thread_num());
+  return {start[t * shares / team], start[(t + 1) * shares / team]};
+}
+
 template <class N, class T, class Done>
 std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs,
                                    const Domain& domain, Vec2 gravity,
                                    std::vector<PairForce>& deferred, double dt, const Done& done,
-                                   int threads) {
+                                   std::vector<std::uint64_t>& block_work, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
+  if (block_work.size() != static_cast<std::size_t>(blocks)) block_work.assign(blocks, 0);
   const Vec2 box = domain.size();
   double worst = 0.0;
   bool finite = true;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : worst) \
-    reduction(&& : finite)
-  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+  const std::vector<std::ptrdiff_t> start = force_block_shares(block_work, threads);
+#pragma omp parallel num_threads(threads) reduction(max : worst) reduction(&& : finite)
+  for (auto [b, b_end] = blocks_of_this_thread(start); b < b_end; ++b) {
+    std::uint64_t work = 0; // list entries, and touching pairs at the cost of three entries
     // per thread, kept from step to step: it grows only when a stretch has more entries than
     // any before it, so steps after the first few allocate nothing
     thread_local std::vector<TouchingEntry> touching;
@@ -136,6 +152,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
         slot += later;
       }
+      work += offset[r1] - offset[r0] + 3 * count;
       // second pass: the touching pairs' forces, two at a time (one per lane), added to the
       // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
       for (std::size_t t = 0; t < count; t += 2) {
@@ -185,6 +202,7 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
           finite = done(i) && finite;
       }
     }
+    block_work[static_cast<std::size_t>(b)] = work;
   }
   return {worst, finite};
 }
@@ -315,8 +333,9 @@ bool Simulation::compute_forces(bool verlet_correct) {
     };
     const auto nothing = [](std::size_t) { return true; };
     const auto stages = [&](const auto& done) {
-      const auto [worst_pair, finite_pairs] = pair_stage<N, T>(
-          p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt, done, threads_);
+      const auto [worst_pair, finite_pairs] =
+          pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt,
+                           done, block_work_, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
       const bool finite_late =

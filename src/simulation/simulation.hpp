@@ -119,6 +119,8 @@ private:
   NeighbourList list_;
   std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
   std::vector<PairForce> wall_force_;
+  /// each force block's work in the last force stage, for handing out blocks to threads
+  std::vector<std::uint64_t> block_work_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;
