@@ -76,17 +76,13 @@ inline bool verlet_predict_one(Particles& p, std::size_t i, double dt, double ha
 bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 /// Velocity Verlet's second half kick for particle i, with the new forces (half = dt / 2): it
 /// replaces the predicted one. The force stage calls it for each particle as soon as that
-/// particle's force is complete (one pass less over memory). Returns false if the particle's
+/// particle's force is complete (one pass less over memory), and inside Simulation::run
+/// verlet_predict_one for the next step right after it. Returns false if the particle's
 /// velocity came out non-finite (a non-finite position or force makes it so).
 inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
   p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
   p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
 }
-
-/// Velocity Verlet's second half kick for every particle, then verlet_predict for the next step,
-/// particle by particle in one pass over memory (bit-identical to the separate stages). The force
-/// stage must not have applied verlet_correct_one already.
-StepSeam verlet_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift);
 
 } // namespace talus

@@ -44,21 +44,4 @@ bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift
   return moved;
 }
 
-StepSeam verlet_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
-  const double half = 0.5 * dt;
-  const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const Vec2* reference = drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
-  bool finite = true, moved = reference == nullptr;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
-    reduction(|| : moved)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    finite = verlet_correct_one(p, k, half) && finite;
-    if (verlet_predict_one(p, k, dt, half, reference, drift.limit2)) moved = true;
-  }
-  std::swap(p.force, p.force_previous); // as verlet_predict leaves them
-  std::swap(p.torque, p.torque_previous);
-  return {finite, moved};
-}
-
 } // namespace talus

@@ -58,6 +58,39 @@ constexpr std::uint32_t no_slot = ~std::uint32_t{0};
 // Rows per stretch: their particles' data stays in the L1 cache between the two passes.
 constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 
+// What the force stage does with a particle once its force is complete: for the particles
+// [first, last), it returns flags (not_finite, drifted).
+constexpr unsigned not_finite = 1, drifted = 2;
+struct NoEnd {
+  unsigned range(std::size_t, std::size_t) const { return 0; }
+};
+// velocity Verlet's correction (single steps)
+struct VerletCorrect {
+  Particles& p;
+  double half;
+  [[gnu::noinline]] unsigned range(std::size_t first, std::size_t last) const {
+    bool finite = true;
+    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, half) && finite;
+    return finite ? 0 : not_finite;
+  }
+};
+// velocity Verlet's correction and the next step's prediction (Simulation::run): no later row
+// names these particles, so nothing in this force stage reads them any more
+struct VerletCorrectPredict {
+  Particles& p;
+  double dt, half;
+  const Vec2* reference;
+  double limit2;
+  [[gnu::noinline]] unsigned range(std::size_t first, std::size_t last) const {
+    bool finite = true, far = false;
+    for (std::size_t k = first; k < last; ++k) {
+      finite = verlet_correct_one(p, k, half) && finite;
+      if (verlet_predict_one(p, k, dt, half, reference, limit2)) far = true;
+    }
+    return (finite ? 0 : not_finite) | (far ? drifted : 0);
+  }
+};
+
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
 // force of its own particles to their weight, then adds each touching pair's force to both
 // partners in entry order, except that a partner beyond the block gets its share later, from a
@@ -71,8 +104,10 @@ constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 // settled 100 x 100 benchmark packing spent about a quarter of its force stage on wrong
 // guesses; docs/performance.md). The second computes the touching pairs' forces. The sums are
 // the same, in the same order, as in one pass that tests every entry and branches.
-// `done(k)` is called for every particle whose force is complete once its row is done (rows
-// after it never name it); the late ones (NeighbourList::late) are done in finish_forces.
+// `done.range(first, last)` is called for the particles of a stretch whose forces are complete
+// once its rows are done (rows after them never name them), by runs between late ones; the late
+// ones (NeighbourList::late) are done in finish_forces. Its flags are ORed (not_finite,
+// drifted).
 // The blocks of the calling thread: its shares of force_block_shares (`start`), consecutive (a
 // team smaller than asked for takes several shares per thread).
 std::pair<std::ptrdiff_t, std::ptrdiff_t>
@@ -84,19 +119,19 @@ blocks_of_this_thread(const std::vector<std::ptrdiff_t>& start) {
 }
 
 template <class N, class T, class Done>
-std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs,
-                                   const Domain& domain, Vec2 gravity,
-                                   std::vector<PairForce>& deferred, double dt, const Done& done,
-                                   std::vector<std::uint64_t>& block_work, int threads) {
+std::pair<double, unsigned>
+pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
+           Vec2 gravity, std::vector<PairForce>& deferred, double dt, const Done& done,
+           std::vector<std::uint64_t>& block_work, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
   if (block_work.size() != static_cast<std::size_t>(blocks)) block_work.assign(blocks, 0);
   const Vec2 box = domain.size();
   double worst = 0.0;
-  bool finite = true;
+  unsigned flags = 0;
   const std::vector<std::ptrdiff_t> start = force_block_shares(block_work, threads);
-#pragma omp parallel num_threads(threads) reduction(max : worst) reduction(&& : finite)
+#pragma omp parallel num_threads(threads) reduction(max : worst) reduction(| : flags)
   for (auto [b, b_end] = blocks_of_this_thread(start); b < b_end; ++b) {
     std::uint64_t work = 0; // list entries, and touching pairs at the cost of three entries
     // per thread, kept from step to step: it grows only when a stretch has more entries than
@@ -195,16 +230,16 @@ std::pair<double, bool> pair_stage(Particles& p, NeighbourList& list, const Pair
         worst = std::max(worst, std::max(ratio[0], ratio[1]));
       }
       // every row of the stretch is done: its particles' forces are complete, but for the late
-      for (std::ptrdiff_t i = r0; i < r1; ++i) {
-        if (next_late != list.late.end() && *next_late == i)
-          ++next_late;
-        else
-          finite = done(i) && finite;
+      for (std::ptrdiff_t a = r0; a < r1;) { // runs of rows between late ones
+        const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
+        if (z > a) flags |= done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
+        if (z < r1) ++next_late;
+        a = z + 1;
       }
     }
     block_work[static_cast<std::size_t>(b)] = work;
   }
-  return {worst, finite};
+  return {worst, flags};
 }
 
 template <class N, class T>
@@ -248,12 +283,12 @@ double wall_stage(const Particles& p, NeighbourList& list, const Segments& walls
 // Every late particle adds, in a fixed order, its deferred pair forces (in entry order), then its
 // wall contacts, and is done; then the walls sum their reactions, particle by particle.
 template <class Done>
-bool finish_forces(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
-                   const std::vector<PairForce>& wf, Segments& walls, const Done& done,
-                   int threads) {
+unsigned finish_forces(Particles& p, const NeighbourList& list,
+                       const std::vector<PairForce>& deferred, const std::vector<PairForce>& wf,
+                       Segments& walls, const Done& done, int threads) {
   const auto late = static_cast<std::ptrdiff_t>(list.late.size());
-  bool finite = true;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
+  unsigned flags = 0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(| : flags)
   for (std::ptrdiff_t q = 0; q < late; ++q) {
     const std::uint32_t k = list.late[q];
     for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
@@ -265,13 +300,13 @@ bool finish_forces(Particles& p, const NeighbourList& list, const std::vector<Pa
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
     }
-    finite = done(k) && finite;
+    flags |= done.range(k, k + 1);
   }
   for (Segment& s : walls) s.force = {};
   for (const std::uint32_t k : list.late) // particles with wall contacts are late, in order
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
-  return finite;
+  return flags;
 }
 
 } // namespace
@@ -321,28 +356,37 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
   }
 }
 
-bool Simulation::compute_forces(bool verlet_correct) {
+StepSeam Simulation::compute_forces(ForceStageEnd end) {
   Particles& p = world_.particles;
   wall_force_.resize(list_.wall_segment.size());
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
-    // velocity Verlet's correction, particle by particle as soon as its force is complete
-    const auto correct = [&p, half = 0.5 * dt](std::size_t k) {
-      return verlet_correct_one(p, k, half);
-    };
-    const auto nothing = [](std::size_t) { return true; };
     const auto stages = [&](const auto& done) {
-      const auto [worst_pair, finite_pairs] =
+      const auto [worst_pair, pair_flags] =
           pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt,
                            done, block_work_, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
-      const bool finite_late =
-          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_);
-      return finite_pairs && finite_late;
+      const unsigned flags = pair_flags | finish_forces(p, list_, deferred_force_, wall_force_,
+                                                        world_.walls, done, threads_);
+      return StepSeam{(flags & not_finite) == 0, (flags & drifted) != 0};
     };
-    return verlet_correct ? stages(correct) : stages(nothing);
+    switch (end) {
+    case ForceStageEnd::verlet_correct:
+      return stages(VerletCorrect{p, 0.5 * dt});
+    case ForceStageEnd::verlet_correct_predict: {
+      const bool no_reference = list_.reference.size() != p.size();
+      StepSeam seam = stages(VerletCorrectPredict{p, dt, 0.5 * dt,
+                                                  no_reference ? nullptr : list_.reference.data(),
+                                                  0.25 * list_.skin * list_.skin});
+      seam.moved = seam.moved || no_reference;
+      return seam;
+    }
+    case ForceStageEnd::nothing:
+      break;
+    }
+    return stages(NoEnd{});
   });
 }
 

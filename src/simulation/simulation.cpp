@@ -100,18 +100,26 @@ void Simulation::advance(bool fuse) {
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
   if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
-  // Verlet's correction is done within, unless the pass below does it
-  const bool finite = compute_forces(verlet && !fuse);
-  if (max_overlap_seen_ > config_.max_overlap_fraction) guard(); // while the overlap is there
+  const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
+                                         : fuse  ? ForceStageEnd::verlet_correct_predict
+                                                 : ForceStageEnd::verlet_correct);
+  // while the overlap is there (in a step that velocity Verlet fused, the grains are already
+  // predicted one timestep on, and the diagnosis names the deepest contact there)
+  if (max_overlap_seen_ > config_.max_overlap_fraction) guard();
   if (fuse) {
-    const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
-    const StepSeam seam = verlet ? verlet_correct_predict(p, dt, threads_, drift)
-                                 : gear_correct_predict(p, dt, threads_, drift);
+    StepSeam seam = forces;
+    if (verlet) {
+      std::swap(p.force, p.force_previous); // as verlet_predict leaves them
+      std::swap(p.torque, p.torque_previous);
+    } else {
+      const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
+      seam = gear_correct_predict(p, dt, threads_, drift);
+    }
     finite_ = seam.finite;
     predicted_moved_ = seam.moved;
     predicted_ = true;
   } else {
-    finite_ = verlet ? finite : gear_correct(p, dt, threads_);
+    finite_ = verlet ? forces.finite : gear_correct(p, dt, threads_);
   }
   ++steps_;
   time_ = t_next;

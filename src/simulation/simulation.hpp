@@ -102,12 +102,19 @@ public:
 
 private:
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
-  /// Forces of the current state; with `verlet_correct`, also velocity Verlet's second half kick,
-  /// particle by particle. Returns false if a corrected velocity came out non-finite.
-  bool compute_forces(bool verlet_correct = false);
-  /// One step. With `fuse`, the correction of this step and the prediction of the next are one
-  /// pass over memory, and the state between the two steps is the predicted one: run() fuses
-  /// only where nothing looks at the state in between.
+  /// What the force stage does to each particle as soon as its force is complete.
+  enum class ForceStageEnd {
+    nothing,
+    verlet_correct,         ///< velocity Verlet's second half kick
+    verlet_correct_predict, ///< that, then the next step's first half kick and drift
+  };
+  /// Forces of the current state, and `end` for every particle. Returns whether every corrected
+  /// velocity is finite and, with verlet_correct_predict, the drift test of the prediction.
+  StepSeam compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
+  /// One step. With `fuse`, the correction of this step and the prediction of the next are done
+  /// together (velocity Verlet: in the force stage, particle by particle; Gear: one pass), and
+  /// the state between the two steps is the predicted one: run() fuses only where nothing looks
+  /// at the state in between.
   void advance(bool fuse);
   void guard() const;
   void list_moved();        ///< driven_: every Kind::moved particle
