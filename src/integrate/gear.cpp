@@ -69,16 +69,12 @@ struct GearCorrector {
   }
 };
 
-const Vec2* reference_of(const Particles& p, const DriftTest& drift) {
-  return drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
-}
-
 } // namespace
 
 bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const Vec2* reference = reference_of(p, drift);
+  const Vec2* reference = drift.reference_for(p);
   bool moved = reference == nullptr;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
   for (std::ptrdiff_t i = 0; i < n; ++i)
@@ -101,7 +97,7 @@ StepSeam gear_correct_predict(Particles& p, double dt, int threads, const DriftT
   const GearCorrector correct(dt);
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const Vec2* reference = reference_of(p, drift);
+  const Vec2* reference = drift.reference_for(p);
   bool finite = true, moved = reference == nullptr;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
     reduction(|| : moved)

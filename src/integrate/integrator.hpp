@@ -34,6 +34,11 @@ double max_stable_timestep(Integrator integrator, double stiffness, double m_eff
 struct DriftTest {
   const std::vector<Vec2>& reference;
   double limit2;
+  /// The build positions, or nullptr when they are not those of these particles (the test then
+  /// reports true).
+  const Vec2* reference_for(const Particles& p) const {
+    return reference.size() == p.size() ? reference.data() : nullptr;
+  }
 };
 
 /// What a pass that ends one step and begins the next reports.

@@ -31,7 +31,7 @@ bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   p.force_previous.resize(p.size());
   p.torque_previous.resize(p.size());
-  const Vec2* reference = drift.reference.size() == p.size() ? drift.reference.data() : nullptr;
+  const Vec2* reference = drift.reference_for(p);
   bool moved = reference == nullptr;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
   for (std::ptrdiff_t i = 0; i < n; ++i)

@@ -385,11 +385,10 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
     case ForceStageEnd::verlet_correct:
       return stages(VerletCorrect{p, 0.5 * dt});
     case ForceStageEnd::verlet_correct_predict: {
-      const bool no_reference = list_.reference.size() != p.size();
-      StepSeam seam = stages(VerletCorrectPredict{p, dt, 0.5 * dt,
-                                                  no_reference ? nullptr : list_.reference.data(),
-                                                  0.25 * list_.skin * list_.skin});
-      seam.moved = seam.moved || no_reference;
+      const DriftTest drift = drift_test();
+      const Vec2* reference = drift.reference_for(p);
+      StepSeam seam = stages(VerletCorrectPredict{p, dt, 0.5 * dt, reference, drift.limit2});
+      seam.moved = seam.moved || reference == nullptr;
       return seam;
     }
     case ForceStageEnd::nothing:

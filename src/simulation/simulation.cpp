@@ -90,8 +90,8 @@ void Simulation::advance(bool fuse) {
   bool moved = predicted_moved_;
   if (!predicted_) {
     if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
-    const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
-    moved = verlet ? verlet_predict(p, dt, threads_, drift) : gear_predict(p, dt, threads_, drift);
+    moved = verlet ? verlet_predict(p, dt, threads_, drift_test())
+                   : gear_predict(p, dt, threads_, drift_test());
   }
   predicted_ = false;
   const double t_next = static_cast<double>(steps_ + 1) * dt;
@@ -112,8 +112,7 @@ void Simulation::advance(bool fuse) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
     } else {
-      const DriftTest drift{list_.reference, 0.25 * list_.skin * list_.skin};
-      seam = gear_correct_predict(p, dt, threads_, drift);
+      seam = gear_correct_predict(p, dt, threads_, drift_test());
     }
     finite_ = seam.finite;
     predicted_moved_ = seam.moved;

@@ -119,6 +119,8 @@ private:
   void guard() const;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
+  /// The neighbour list's drift test: has a grain moved more than half the skin since the build?
+  DriftTest drift_test() const { return {list_.reference, 0.25 * list_.skin * list_.skin}; }
 
   World world_;
   SimulationConfig config_;
