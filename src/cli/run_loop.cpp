@@ -377,7 +377,7 @@ private:
   // above the floor is multiplied by the heave factor. Returns true when it froze.
   bool freeze() {
     if (!at_rest()) return false;
-    Particles& p = sim_.world().particles;
+    Particles& p = sim_.edit_world().particles;
     const double floor = book_.bounds.lo.y;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.is_free(i)) p.position[i].y = floor + (p.position[i].y - floor) * s_.frost.heave_factor;

@@ -199,10 +199,10 @@ void FrostFront::start_freeze(Simulation& sim) {
     throw InvalidArgument("the frost front model keeps its grains by index: it needs a run "
                           "without renumbering (simulation.sort_every = 0; a scenario with a "
                           "frost model sets it)");
-  Particles& p = sim.world().particles;
+  const Particles& p = sim.world().particles;
   if (material_.size() == p.size()) // thawed fines get their own material back
     for (std::size_t i = 0; i < p.size(); ++i)
-      p.material[i] = static_cast<std::uint16_t>(material_[i]);
+      sim.set_material(static_cast<std::uint32_t>(i), static_cast<std::size_t>(material_[i]));
   material_.assign(p.material.begin(), p.material.end());
   const std::size_t n = surface_.size();
   frozen_.assign(p.size(), 0);
@@ -301,7 +301,7 @@ double FrostFront::front_at(std::size_t c, double target) const {
 }
 
 bool FrostFront::advance(Simulation& sim) {
-  Particles& p = sim.world().particles;
+  const Particles& p = sim.world().particles;
   if (phase_ == Phase::idle) return false;
   if (frozen_.size() != p.size()) frozen_.resize(p.size(), 0);
   const double elapsed = sim.time() - phase_start_;
@@ -380,9 +380,10 @@ bool FrostFront::advance(Simulation& sim) {
     sim.hold(static_cast<std::uint32_t>(i), false);
     released.push_back(static_cast<std::uint32_t>(i));
     if (p_.thawed_material >= 0 && !is_stone(p, i))
-      p.material[i] = static_cast<std::uint16_t>(p_.thawed_material);
+      sim.set_material(static_cast<std::uint32_t>(i), static_cast<std::size_t>(p_.thawed_material));
   }
-  separate_released(p, released, frozen_);
+  // it moves grains: edit_world has the next steps test the neighbour list against them
+  if (!released.empty()) separate_released(sim.edit_world().particles, released, frozen_);
   for (const std::uint32_t i : released) frozen_[i] = 0;
   if (u < 1.0 || held) return false;
   phase_ = Phase::idle;

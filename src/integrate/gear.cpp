@@ -1,5 +1,6 @@
 #include "integrate/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace talus {
@@ -28,11 +29,11 @@ struct GearPredictor {
   explicit GearPredictor(double step)
       : dt(step), h2(step * step / 2.0), h3(step * step * step / 6.0),
         h4(step * step * step * step / 24.0) {}
-  // returns the drift test's answer for the predicted position
-  bool operator()(Particles& p, std::size_t i, const Vec2* reference, double limit2) const {
+  // returns the squared displacement
+  double operator()(Particles& p, std::size_t i) const {
     auto& g = p.gear;
-    p.position[i] += dt * p.velocity[i] + h2 * g.r2[i] + h3 * g.r3[i] + h4 * g.r4[i];
-    const bool far = reference != nullptr && norm2(p.position[i] - reference[i]) > limit2;
+    const Vec2 displacement = dt * p.velocity[i] + h2 * g.r2[i] + h3 * g.r3[i] + h4 * g.r4[i];
+    p.position[i] += displacement;
     p.velocity[i] += dt * g.r2[i] + h2 * g.r3[i] + h3 * g.r4[i];
     g.r2[i] += dt * g.r3[i] + h2 * g.r4[i];
     g.r3[i] += dt * g.r4[i];
@@ -40,7 +41,7 @@ struct GearPredictor {
     p.angular_velocity[i] += dt * g.phi2[i] + h2 * g.phi3[i] + h3 * g.phi4[i];
     g.phi2[i] += dt * g.phi3[i] + h2 * g.phi4[i];
     g.phi3[i] += dt * g.phi4[i];
-    return far;
+    return norm2(displacement);
   }
 };
 
@@ -50,11 +51,12 @@ struct GearCorrector {
   explicit GearCorrector(double dt)
       : k0(gear_c[0] * dt * dt / 2.0), k1(gear_c[1] * dt / 2.0), k3(gear_c[3] * 3.0 / dt),
         k4(gear_c[4] * 12.0 / (dt * dt)) {}
-  // returns whether the corrected position and velocity are finite
-  bool operator()(Particles& p, std::size_t i) const {
+  // whether the corrected position and velocity are finite, and the squared displacement
+  StepSeam operator()(Particles& p, std::size_t i) const {
     auto& g = p.gear;
     const Vec2 da = p.force[i] * p.inv_mass[i] - g.r2[i];
-    p.position[i] += k0 * da;
+    const Vec2 displacement = k0 * da;
+    p.position[i] += displacement;
     p.velocity[i] += k1 * da;
     g.r2[i] += da;
     g.r3[i] += k3 * da;
@@ -65,49 +67,57 @@ struct GearCorrector {
     g.phi2[i] += dphi;
     g.phi3[i] += k3 * dphi;
     g.phi4[i] += k4 * dphi;
-    return std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y);
+    return {std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y),
+            norm2(displacement)};
   }
 };
 
 } // namespace
 
-bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+double gear_predict(Particles& p, double dt, int threads) {
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const Vec2* reference = drift.reference_for(p);
-  bool moved = reference == nullptr;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
+  double farthest2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    if (p.kind[i] == Kind::free && predict(p, static_cast<std::size_t>(i), reference, drift.limit2))
-      moved = true;
-  return moved;
+    if (p.kind[i] == Kind::free)
+      farthest2 = std::max(farthest2, predict(p, static_cast<std::size_t>(i)));
+  return farthest2;
 }
 
-bool gear_correct(Particles& p, double dt, int threads) {
+StepSeam gear_correct(Particles& p, double dt, int threads) {
   const GearCorrector correct(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   bool finite = true;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
+  double farthest2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
+    reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    if (p.kind[i] == Kind::free) finite = correct(p, static_cast<std::size_t>(i)) && finite;
-  return finite;
+    if (p.kind[i] == Kind::free) {
+      const StepSeam s = correct(p, static_cast<std::size_t>(i));
+      finite = s.finite && finite;
+      farthest2 = std::max(farthest2, s.displacement2);
+    }
+  return {finite, farthest2};
 }
 
-StepSeam gear_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+StepSeam gear_correct_predict(Particles& p, double dt, int threads) {
   const GearCorrector correct(dt);
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-  const Vec2* reference = drift.reference_for(p);
-  bool finite = true, moved = reference == nullptr;
+  bool finite = true;
+  double farthest2 = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
-    reduction(|| : moved)
+    reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (p.kind[i] != Kind::free) continue;
     const auto k = static_cast<std::size_t>(i);
-    finite = correct(p, k) && finite;
-    if (predict(p, k, reference, drift.limit2)) moved = true;
+    const Vec2 before = p.position[k];
+    finite = correct(p, k).finite && finite;
+    predict(p, k);
+    farthest2 = std::max(farthest2, norm2(p.position[k] - before));
   }
-  return {finite, moved};
+  return {finite, farthest2};
 }
 
 } // namespace talus

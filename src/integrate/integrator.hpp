@@ -28,57 +28,46 @@ inline constexpr double gear_c[5] = {19.0 / 90.0, 3.0 / 4.0, 1.0, 1.0 / 2.0, 1.0
 /// about 5e-6 per step and far below what contact damping removes.
 double max_stable_timestep(Integrator integrator, double stiffness, double m_eff);
 
-/// The Verlet list's drift test, done inside the predictor's loop (one pass less over memory):
-/// the predictor reports whether some particle ended farther than sqrt(limit2) from its
-/// reference (the list's build position). A reference of another size always reports true.
-struct DriftTest {
-  const std::vector<Vec2>& reference;
-  double limit2;
-  /// The build positions, or nullptr when they are not those of these particles (the test then
-  /// reports true).
-  const Vec2* reference_for(const Particles& p) const {
-    return reference.size() == p.size() ? reference.data() : nullptr;
-  }
-};
-
-/// What a pass that ends one step and begins the next reports.
+/// What a pass over the particles reports: whether it kept them finite, and how far it moved the
+/// farthest one, for the neighbour list's drift bound (Simulation: the list is tested against its
+/// build positions only when the sum of these over the passes since the build could have reached
+/// half the skin).
 struct StepSeam {
-  bool finite = true; ///< every corrected position and velocity finite
-  bool moved = false; ///< the drift test of the prediction: rebuild the list
+  bool finite = true;       ///< every corrected position and velocity finite
+  double displacement2 = 0; ///< the largest squared displacement of a free particle (m^2)
 };
 
 /// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
 void gear_initialise(Particles& p);
 /// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.
-/// Returns the drift test's answer.
-bool gear_predict(Particles& p, double dt, int threads, const DriftTest& drift);
+/// Returns the largest squared displacement.
+double gear_predict(Particles& p, double dt, int threads);
 /// Corrects every predicted derivative by the difference of F/m and the predicted acceleration.
-/// Returns false if a position or velocity came out non-finite.
-bool gear_correct(Particles& p, double dt, int threads);
+/// `finite` is false if a position or velocity came out non-finite.
+StepSeam gear_correct(Particles& p, double dt, int threads);
 /// gear_correct, then gear_predict for the next step, particle by particle in one pass over
-/// memory (the same arithmetic: the results are bit-identical to the two passes).
-StepSeam gear_correct_predict(Particles& p, double dt, int threads, const DriftTest& drift);
+/// memory (the same arithmetic: the results are bit-identical to the two passes). The
+/// displacement is that of both together.
+StepSeam gear_correct_predict(Particles& p, double dt, int threads);
 
 /// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the forces
 /// in `force` and no branch on the kind: fixed and moved particles have inv_mass = 0 (no kick),
 /// fixed ones are at rest and drivers overwrite moved ones. The velocity it leaves is the
-/// prediction v(t) + dt a(t) the contact laws see. Returns whether the particle ended farther
-/// than sqrt(limit2) from its reference (none given: false).
-inline bool verlet_predict_one(Particles& p, std::size_t i, double dt, double half,
-                               const Vec2* reference, double limit2) {
+/// prediction v(t) + dt a(t) the contact laws see. Returns the squared displacement.
+inline double verlet_predict_one(Particles& p, std::size_t i, double dt, double half) {
   const Vec2 kick = half * p.inv_mass[i] * p.force[i];
-  p.position[i] += dt * (p.velocity[i] + kick);
-  const bool far = reference != nullptr && norm2(p.position[i] - reference[i]) > limit2;
+  const Vec2 displacement = dt * (p.velocity[i] + kick);
+  p.position[i] += displacement;
   p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
   const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
   p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
   p.angular_velocity[i] += 2.0 * spin_kick;
-  return far;
+  return norm2(displacement);
 }
 
 /// Velocity Verlet: half kick with the old forces, then drift; F(t) moves to force_previous (the
-/// force stage must then set every force). Returns the drift test's answer.
-bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift);
+/// force stage must then set every force). Returns the largest squared displacement.
+double verlet_predict(Particles& p, double dt, int threads);
 /// Velocity Verlet's second half kick for particle i, with the new forces (half = dt / 2): it
 /// replaces the predicted one. The force stage calls it for each particle as soon as that
 /// particle's force is complete (one pass less over memory), and inside Simulation::run

@@ -1,5 +1,6 @@
 #include "integrate/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -26,22 +27,20 @@ double max_stable_timestep(Integrator integrator, double stiffness, double m_eff
   return (integrator == Integrator::verlet ? 2.0 : 0.2) / omega;
 }
 
-bool verlet_predict(Particles& p, double dt, int threads, const DriftTest& drift) {
+double verlet_predict(Particles& p, double dt, int threads) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   p.force_previous.resize(p.size());
   p.torque_previous.resize(p.size());
-  const Vec2* reference = drift.reference_for(p);
-  bool moved = reference == nullptr;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
+  double farthest2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    if (verlet_predict_one(p, static_cast<std::size_t>(i), dt, half, reference, drift.limit2))
-      moved = true;
+    farthest2 = std::max(farthest2, verlet_predict_one(p, static_cast<std::size_t>(i), dt, half));
   // F(t) is kept by a swap, not a copy (one pass less over memory): `force` now holds stale
   // values that the force stage overwrites for every particle
   std::swap(p.force, p.force_previous);
   std::swap(p.torque, p.torque_previous);
-  return moved;
+  return farthest2;
 }
 
 } // namespace talus

@@ -7,20 +7,19 @@
 
 namespace talus {
 
-bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls) {
-  if (list.reference.size() != p.size() || list.segment_reference.size() != 2 * walls.size())
-    return true;
+bool particles_moved(const NeighbourList& list, const Particles& p, int threads) {
+  if (list.reference.size() != p.size()) return true;
   const double limit2 = 0.25 * list.skin * list.skin;
   bool moved = false;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) reduction(|| : moved) if (n > 20000)
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     moved = moved || norm2(p.position[i] - list.reference[i]) > limit2;
-  for (std::size_t s = 0; s < walls.size(); ++s) {
-    moved |= norm2(walls[s].a - list.segment_reference[2 * s]) > limit2;
-    moved |= norm2(walls[s].b - list.segment_reference[2 * s + 1]) > limit2;
-  }
   return moved;
+}
+
+bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls) {
+  return particles_moved(list, p) || walls_moved(list, p, walls, {});
 }
 
 bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,

@@ -84,6 +84,10 @@ void index_force_blocks(NeighbourList& list, int threads = 1);
 /// True when some particle or wall end point moved more than half the skin since the last build.
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
 
+/// True when some particle moved more than half the skin since the last build, or the particles
+/// are not those of the build (another count).
+bool particles_moved(const NeighbourList& list, const Particles& p, int threads = 1);
+
 /// True when a wall end point, or one of the given (driven) particles, moved more than half the
 /// skin since the last build: the part of the drift test the integrator does not do.
 bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,

@@ -59,21 +59,21 @@ constexpr std::uint32_t no_slot = ~std::uint32_t{0};
 constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 
 // What the force stage does with a particle once its force is complete: for the particles
-// [first, last), it returns flags (not_finite, drifted). The loops are not inlined into the
-// stage: its own loops are compiled worse with them (tiled 1e6 37.9 against 35.3 ns per
-// particle-step; docs/performance.md).
-constexpr unsigned not_finite = 1, drifted = 2;
+// [first, last), it returns whether they stayed finite and the largest squared displacement. The
+// loops are not inlined into the stage: its own loops are compiled worse with them (tiled 1e6
+// 37.9 against 35.3 ns per particle-step; docs/performance.md).
 struct NoEnd {
-  unsigned range(std::size_t, std::size_t) const { return 0; }
+  StepSeam range(std::size_t, std::size_t) const { return {}; }
 };
 // velocity Verlet's correction (single steps)
 struct VerletCorrect {
   Particles& p;
   double half;
-  [[gnu::noinline]] unsigned range(std::size_t first, std::size_t last) const {
+  [[gnu::noinline]] StepSeam range(std::size_t first, std::size_t last) const {
+    const double h = half; // a local: the stores below could otherwise change the member
     bool finite = true;
-    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, half) && finite;
-    return finite ? 0 : not_finite;
+    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, h) && finite;
+    return {finite, 0.0};
   }
 };
 // velocity Verlet's correction and the next step's prediction (Simulation::run): no later row
@@ -81,15 +81,15 @@ struct VerletCorrect {
 struct VerletCorrectPredict {
   Particles& p;
   double dt, half;
-  const Vec2* reference;
-  double limit2;
-  [[gnu::noinline]] unsigned range(std::size_t first, std::size_t last) const {
-    bool finite = true, far = false;
+  [[gnu::noinline]] StepSeam range(std::size_t first, std::size_t last) const {
+    const double step = dt, h = half;
+    bool finite = true;
+    double farthest2 = 0.0;
     for (std::size_t k = first; k < last; ++k) {
-      finite = verlet_correct_one(p, k, half) && finite;
-      if (verlet_predict_one(p, k, dt, half, reference, limit2)) far = true;
+      finite = verlet_correct_one(p, k, h) && finite;
+      farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h));
     }
-    return (finite ? 0 : not_finite) | (far ? drifted : 0);
+    return {finite, farthest2};
   }
 };
 
@@ -108,8 +108,7 @@ struct VerletCorrectPredict {
 // the same, in the same order, as in one pass that tests every entry and branches.
 // `done.range(first, last)` is called for the particles of a stretch whose forces are complete
 // once its rows are done (rows after them never name them), by runs between late ones; the late
-// ones (NeighbourList::late) are done in finish_forces. Its flags are ORed (not_finite,
-// drifted).
+// ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
 // The blocks of the calling thread: its shares of force_block_shares (`start`), consecutive (a
 // team smaller than asked for takes several shares per thread).
 std::pair<std::ptrdiff_t, std::ptrdiff_t>
@@ -121,7 +120,7 @@ blocks_of_this_thread(const std::vector<std::ptrdiff_t>& start) {
 }
 
 template <class N, class T, class Done>
-std::pair<double, unsigned>
+std::pair<double, StepSeam>
 pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
            Vec2 gravity, std::vector<PairForce>& deferred, double dt, const Done& done,
            std::vector<std::uint64_t>& block_work, int threads) {
@@ -135,10 +134,10 @@ pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Doma
   const bool one_material = pairs.material_count() == 1;
   const PairLanes uniform = one_material ? PairLanes(pairs(0, 0), pairs(0, 0))
                                          : PairLanes(PairParameters{}, PairParameters{});
-  double worst = 0.0;
-  unsigned flags = 0;
+  double worst = 0.0, farthest2 = 0.0;
+  bool finite = true;
   const std::vector<std::ptrdiff_t> start = force_block_shares(block_work, threads);
-#pragma omp parallel num_threads(threads) reduction(max : worst) reduction(| : flags)
+#pragma omp parallel num_threads(threads) reduction(max : worst, farthest2) reduction(&& : finite)
   for (auto [b, b_end] = blocks_of_this_thread(start); b < b_end; ++b) {
     std::uint64_t work = 0; // list entries, and touching pairs at the cost of three entries
     // per thread, kept from step to step: it grows only when a stretch has more entries than
@@ -241,14 +240,18 @@ pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Doma
       // every row of the stretch is done: its particles' forces are complete, but for the late
       for (std::ptrdiff_t a = r0; a < r1;) { // runs of rows between late ones
         const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
-        if (z > a) flags |= done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
+        if (z > a) {
+          const StepSeam s = done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
+          finite = finite && s.finite;
+          farthest2 = std::max(farthest2, s.displacement2);
+        }
         if (z < r1) ++next_late;
         a = z + 1;
       }
     }
     block_work[static_cast<std::size_t>(b)] = work;
   }
-  return {worst, flags};
+  return {worst, StepSeam{finite, farthest2}};
 }
 
 template <class N, class T>
@@ -292,12 +295,14 @@ double wall_stage(const Particles& p, NeighbourList& list, const Segments& walls
 // Every late particle adds, in a fixed order, its deferred pair forces (in entry order), then its
 // wall contacts, and is done; then the walls sum their reactions, particle by particle.
 template <class Done>
-unsigned finish_forces(Particles& p, const NeighbourList& list,
+StepSeam finish_forces(Particles& p, const NeighbourList& list,
                        const std::vector<PairForce>& deferred, const std::vector<PairForce>& wf,
                        Segments& walls, const Done& done, int threads) {
   const auto late = static_cast<std::ptrdiff_t>(list.late.size());
-  unsigned flags = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(| : flags)
+  bool finite = true;
+  double farthest2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
+    reduction(max : farthest2)
   for (std::ptrdiff_t q = 0; q < late; ++q) {
     const std::uint32_t k = list.late[q];
     for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
@@ -309,13 +314,15 @@ unsigned finish_forces(Particles& p, const NeighbourList& list,
       p.force[k] += wf[e].force;
       p.torque[k] += wf[e].torque_i;
     }
-    flags |= done.range(k, k + 1);
+    const StepSeam s = done.range(k, k + 1);
+    finite = finite && s.finite;
+    farthest2 = std::max(farthest2, s.displacement2);
   }
   for (Segment& s : walls) s.force = {};
   for (const std::uint32_t k : list.late) // particles with wall contacts are late, in order
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
       walls[list.wall_segment[e]].force -= wf[e].force;
-  return flags;
+  return {finite, farthest2};
 }
 
 } // namespace
@@ -372,25 +379,21 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
   const double dt = config_.timestep;
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
     const auto stages = [&](const auto& done) {
-      const auto [worst_pair, pair_flags] =
+      const auto [worst_pair, pair_seam] =
           pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt,
                            done, block_work_, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
-      const unsigned flags = pair_flags | finish_forces(p, list_, deferred_force_, wall_force_,
-                                                        world_.walls, done, threads_);
-      return StepSeam{(flags & not_finite) == 0, (flags & drifted) != 0};
+      const StepSeam late =
+          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_);
+      return StepSeam{pair_seam.finite && late.finite,
+                      std::max(pair_seam.displacement2, late.displacement2)};
     };
     switch (end) {
     case ForceStageEnd::verlet_correct:
       return stages(VerletCorrect{p, 0.5 * dt});
-    case ForceStageEnd::verlet_correct_predict: {
-      const DriftTest drift = drift_test();
-      const Vec2* reference = drift.reference_for(p);
-      StepSeam seam = stages(VerletCorrectPredict{p, dt, 0.5 * dt, reference, drift.limit2});
-      seam.moved = seam.moved || reference == nullptr;
-      return seam;
-    }
+    case ForceStageEnd::verlet_correct_predict:
+      return stages(VerletCorrectPredict{p, dt, 0.5 * dt});
     case ForceStageEnd::nothing:
       break;
     }

@@ -75,6 +75,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     apply(d, 0.0, world_.particles, world_.walls);
   }
   build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin());
+  drift_bound_ = 0.0;
   compute_forces();
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
@@ -87,19 +88,22 @@ void Simulation::advance(bool fuse) {
   const double dt = config_.timestep;
   Particles& p = world_.particles;
   const bool verlet = config_.integrator == Integrator::verlet;
-  bool moved = predicted_moved_;
+  double displacement2 = predicted_displacement2_;
   if (!predicted_) {
     if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
-    moved = verlet ? verlet_predict(p, dt, threads_, drift_test())
-                   : gear_predict(p, dt, threads_, drift_test());
+    displacement2 = verlet ? verlet_predict(p, dt, threads_) : gear_predict(p, dt, threads_);
   }
   predicted_ = false;
+  bool moved = drifted(displacement2);
   const double t_next = static_cast<double>(steps_ + 1) * dt;
   for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
   if (driven_stale_) list_moved();
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
-  if (moved) build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
+  if (moved) {
+    build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
+    drift_bound_ = 0.0;
+  }
   const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
                                          : fuse  ? ForceStageEnd::verlet_correct_predict
                                                  : ForceStageEnd::verlet_correct);
@@ -112,17 +116,30 @@ void Simulation::advance(bool fuse) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
     } else {
-      seam = gear_correct_predict(p, dt, threads_, drift_test());
+      seam = gear_correct_predict(p, dt, threads_);
     }
     finite_ = seam.finite;
-    predicted_moved_ = seam.moved;
+    predicted_displacement2_ = seam.displacement2;
     predicted_ = true;
+  } else if (verlet) {
+    finite_ = forces.finite;
   } else {
-    finite_ = verlet ? forces.finite : gear_correct(p, dt, threads_);
+    const StepSeam corrected = gear_correct(p, dt, threads_);
+    finite_ = corrected.finite;
+    drift_bound_ += std::sqrt(corrected.displacement2);
   }
   ++steps_;
   time_ = t_next;
   guard();
+}
+
+bool Simulation::drifted(double displacement2) {
+  drift_bound_ += std::sqrt(displacement2);
+  // A tenth of the limit for rounding: each pass's displacement is rounded once more when it is
+  // added to a position (half a unit in the last place of the coordinate), which over the
+  // hundreds of steps a list lasts stays far below a tenth of half the skin.
+  if (drift_bound_ <= 0.9 * 0.5 * list_.skin) return false;
+  return particles_moved(list_, world_.particles, threads_);
 }
 
 double Simulation::next_skin() const {
@@ -185,6 +202,14 @@ void Simulation::hold(std::uint32_t i, bool held) {
   if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
   world_.particles.set_held(i, held);
   driven_stale_ = true;
+}
+
+void Simulation::set_material(std::uint32_t i, std::size_t m) {
+  require(i < world_.particles.size(), "set_material: no particle " + std::to_string(i));
+  require(m < world_.materials.size(), "set_material: material index " + std::to_string(m) +
+                                           " out of range; allowed: 0 to " +
+                                           std::to_string(world_.materials.size() - 1));
+  world_.particles.material[i] = static_cast<std::uint16_t>(m);
 }
 
 void Simulation::displace_held(std::uint32_t i, Vec2 d) {

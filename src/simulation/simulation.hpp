@@ -2,6 +2,7 @@
 // The facade a user drives: owns the World, runs the stages of a step, calls observers.
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "contact/contact_law.hpp"
@@ -74,8 +75,13 @@ public:
   double time() const { return time_; }
   std::uint64_t step_count() const { return steps_; }
   const World& world() const { return world_; }
-  /// Mutable access, for setting up between steps (not while stepping).
-  World& world() { return world_; }
+  /// Mutable access, for setting up or changing the world between steps (not while stepping).
+  /// The next steps test the neighbour list against every particle's build position, since
+  /// the caller may have moved particles.
+  World& edit_world() {
+    drift_bound_ = unknown_drift;
+    return world_;
+  }
   const SimulationConfig& config() const { return config_; }
   const PairTable& pairs() const { return pairs_; }
   const NeighbourList& neighbours() const { return list_; }
@@ -84,6 +90,9 @@ public:
   /// (not integrated; free grains still feel it) or frees it. Its drift is then checked against
   /// the neighbour list like a driven particle's.
   void hold(std::uint32_t i, bool held);
+  /// Between steps: particle i is made of material m from now on (frost: a thawed fine);
+  /// throws InvalidArgument for a material index out of range.
+  void set_material(std::uint32_t i, std::size_t m);
   /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
   void displace_held(std::uint32_t i, Vec2 d);
   /// Between steps: renumbers the particles in the order of the cells they lie in (as
@@ -119,8 +128,11 @@ private:
   void guard() const;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
-  /// The neighbour list's drift test: has a grain moved more than half the skin since the build?
-  DriftTest drift_test() const { return {list_.reference, 0.25 * list_.skin * list_.skin}; }
+  /// The neighbour list's drift test for the particles, after a pass that moved them at most
+  /// sqrt(displacement2): has a grain moved more than half the skin since the build? Adds the
+  /// displacement to drift_bound_ and compares the positions with the build's only when the
+  /// bound could have reached half the skin.
+  bool drifted(double displacement2);
 
   World world_;
   SimulationConfig config_;
@@ -140,8 +152,15 @@ private:
   std::vector<std::uint32_t> new_of_old_;
   bool driven_stale_ = false;    ///< a particle was held or freed since driven_ was listed
   bool list_stale_ = false;      ///< a held particle was freed: rebuild the list
-  bool predicted_ = false;       ///< the next step's prediction is done (only inside run())
-  bool predicted_moved_ = false; ///< and its drift test asks for a new list
+  bool predicted_ = false;        ///< the next step's prediction is done (only inside run())
+  double predicted_displacement2_ = 0.0; ///< and how far it moved the farthest particle
+  /// An upper bound of how far any free particle moved since the list's build (m): the sum of
+  /// the largest displacement of every pass over the particles since then. Every particle is
+  /// compared with its build position only once this bound could have reached half the skin,
+  /// which gives the same answers as comparing them at every step. Unknown (infinite) after a
+  /// restore and after edit_world, until the next build. Driven particles are tested apart.
+  static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
+  double drift_bound_ = unknown_drift;
 };
 
 } // namespace talus

@@ -219,7 +219,7 @@ TEST(FrostFront, GrainsFrozenIntoEachOtherThawOutGently) {
   FrostFront front(q);
   front.start_freeze(sim);
   while (!front.advance(sim)) sim.run(20);
-  Particles& p = sim.world().particles;
+  const Particles& p = sim.world().particles;
   std::size_t top = 0; // the highest frozen fine, pressed into the frozen one below it
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!p.is_free(i) && p.position[i].y > p.position[top].y) top = i;
