@@ -153,9 +153,13 @@ void run_bench(const BenchOptions& o) {
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
   const std::uint64_t builds_before = sim.neighbours().builds;
+  const std::uint64_t choices_before = sim.candidate_choices();
+  const std::uint64_t tests_before = sim.drift_tests();
   const auto start = std::chrono::steady_clock::now();
   sim.run(o.steps);
   const std::uint64_t builds = sim.neighbours().builds - builds_before;
+  const std::uint64_t choices = sim.candidate_choices() - choices_before;
+  const std::uint64_t tests = sim.drift_tests() - tests_before;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double per = seconds / (n * static_cast<double>(o.steps));
@@ -177,6 +181,8 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",
              bytes);
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
+  fmt::print("  contact candidates chosen:  {} times; drift tested against the build {} times\n",
+             choices, tests);
   fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
              o.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
   double lammps = 0.0;

@@ -62,6 +62,21 @@ struct NeighbourList {
   }
 };
 
+/// The entries of a neighbour list that can come to touch soon: those whose gap was below `skin`
+/// when they were chosen, and those that name a particle that is not free (drivers and holds
+/// move those, not the integrator). While no two grains can have closed a gap of `skin` since
+/// then (Simulation keeps the bound), the force stage tests only these: the others cannot touch,
+/// and their history stays 0. Derived from the list by the force stage, not saved.
+struct ContactCandidates {
+  std::vector<std::uint32_t> entry; ///< per stretch of rows, from the stretch's first entry on
+  std::vector<std::uint32_t> slot;  ///< each candidate's deferred slot, or ~0 (none)
+  std::vector<std::uint32_t> count; ///< candidates per stretch of rows
+  double skin = 0.0;                ///< m
+  /// `skin` as a fraction of the list's skin: they are chosen again about five times in a
+  /// list's life. 0.1 to 0.5 measured alike (docs/performance.md, "Candidates").
+  static constexpr double skin_fraction = 0.2;
+};
+
 /// Rows per force block for n particles: n cut into 2, 4, 8 or 16 blocks (a power of two, so that
 /// 2, 4, 8 or 16 threads share them evenly) of at least 2048 rows each where n allows. A function
 /// of n only, so that results do not depend on the thread count. Not more blocks than that: an

@@ -106,6 +106,10 @@ struct VerletCorrectPredict {
 // settled 100 x 100 benchmark packing spent about a quarter of its force stage on wrong
 // guesses; docs/performance.md). The second computes the touching pairs' forces. The sums are
 // the same, in the same order, as in one pass that tests every entry and branches.
+// The first pass tests only the candidates (ContactCandidates: entries that may touch before the
+// grains move on; the others cannot touch and keep a zero history); with `refresh` it tests
+// every entry and writes the candidates down again, by stretch, from the stretch's first entry
+// on. The touching entries found, and so the results, are the same either way.
 // `done.range(first, last)` is called for the particles of a stretch whose forces are complete
 // once its rows are done (rows after them never name them), by runs between late ones; the late
 // ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
@@ -119,14 +123,33 @@ blocks_of_this_thread(const std::vector<std::ptrdiff_t>& start) {
   return {start[t * shares / team], start[(t + 1) * shares / team]};
 }
 
+// What the first pass learns of an entry, for the candidates.
+struct Gap {
+  double dist2, reach;
+  std::uint32_t i, j;
+};
+
 template <class N, class T, class Done>
-std::pair<double, StepSeam>
-pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Domain& domain,
-           Vec2 gravity, std::vector<PairForce>& deferred, double dt, const Done& done,
-           std::vector<std::uint64_t>& block_work, int threads) {
+std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, ContactCandidates& near,
+                                       bool refresh, const PairTable& pairs, const Domain& domain,
+                                       Vec2 gravity, std::vector<PairForce>& deferred, double dt,
+                                       const Done& done, std::vector<std::uint64_t>& block_work,
+                                       int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
+  const std::size_t stretches_per_block =
+      static_cast<std::size_t>((rows + stretch_rows - 1) / stretch_rows);
+  if (refresh) {
+    near.entry.resize(list.pair_count());
+    near.slot.resize(list.pair_count());
+    near.count.resize(static_cast<std::size_t>(blocks) * stretches_per_block);
+  }
+  std::uint32_t* near_entry = near.entry.data();
+  std::uint32_t* near_slot = near.slot.data();
+  std::uint32_t* near_count = near.count.data();
+  const double near_skin = near.skin;
+  const Kind* kind = p.kind.data();
   if (block_work.size() != static_cast<std::size_t>(blocks)) block_work.assign(blocks, 0);
   const Vec2 box = domain.size();
   // With one material every contact has the same pair parameters: they are put in lanes once,
@@ -172,7 +195,8 @@ pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Doma
       TouchingEntry* found = touching.data();
       // first pass: the touching entries; the others lose their history (masks, no branches)
       std::size_t count = 0;
-      for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
+      // entry e's geometry; it is written down if it touches (its deferred slot is `to`)
+      const auto test = [&](std::uint32_t e, std::uint32_t to) {
         const auto i = static_cast<std::uint32_t>(r0 + row_in_stretch[e]);
         const std::uint32_t j = neighbour[e];
         Vec2 rj = position[j];
@@ -185,15 +209,37 @@ pair_stage(Particles& p, NeighbourList& list, const PairTable& pairs, const Doma
         // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
         // that it reaches the forces and the finite check (as with the one-pass stage)
         const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
-        const auto later = static_cast<std::uint32_t>(j >= last); // j is in a later block
-        const std::uint32_t later_mask = 0u - later;
-        found[count] = {d, e, (slot & later_mask) | ~later_mask};
+        found[count] = {d, e, to};
         count += touches;
         const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
         history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
-        slot += later;
+        return Gap{dist2, reach, i, j};
+      };
+      const std::uint32_t base = offset[r0]; // the stretch's candidates are kept from here on
+      const std::size_t stretch = static_cast<std::size_t>(b) * stretches_per_block +
+                                  static_cast<std::size_t>((r0 - first) / stretch_rows);
+      if (refresh) { // every entry, and the candidates written down
+        std::uint32_t kept = 0;
+        for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
+          const auto later = static_cast<std::uint32_t>(neighbour[e] >= last); // a later block
+          const std::uint32_t later_mask = 0u - later;
+          const std::uint32_t to = (slot & later_mask) | ~later_mask;
+          const Gap g = test(e, to);
+          const double cut = g.reach + near_skin;
+          near_entry[base + kept] = e;
+          near_slot[base + kept] = to;
+          const bool pinned = (kind[g.i] != Kind::free) | (kind[g.j] != Kind::free);
+          kept += !(g.dist2 >= cut * cut) | pinned;
+          slot += later;
+        }
+        near_count[stretch] = kept;
+        work += offset[r1] - offset[r0];
+      } else { // the candidates only
+        const std::uint32_t end = base + near_count[stretch];
+        for (std::uint32_t c = base; c < end; ++c) test(near_entry[c], near_slot[c]);
+        work += end - base;
       }
-      work += offset[r1] - offset[r0] + 3 * count;
+      work += 3 * count;
       // second pass: the touching pairs' forces, two at a time (one per lane), added to the
       // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
       for (std::size_t t = 0; t < count; t += 2) {
@@ -377,11 +423,21 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
   wall_force_.resize(list_.wall_segment.size());
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
+  // The candidates stay valid while two grains cannot have closed their gap: each moved at most
+  // drift_bound_ - near_base_ (a tenth kept for rounding, as in drifted()). An unknown bound
+  // (infinite, or NaN as infinity less infinity) chooses them again at every step.
+  const bool refresh = near_stale_ || !(2.0 * (drift_bound_ - near_base_) <= 0.9 * near_.skin);
+  if (refresh) {
+    near_.skin = ContactCandidates::skin_fraction * list_.skin;
+    near_base_ = drift_bound_;
+    near_stale_ = false;
+    ++candidate_choices_;
+  }
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
     const auto stages = [&](const auto& done) {
       const auto [worst_pair, pair_seam] =
-          pair_stage<N, T>(p, list_, pairs_, world_.domain, world_.gravity, deferred_force_, dt,
-                           done, block_work_, threads_);
+          pair_stage<N, T>(p, list_, near_, refresh, pairs_, world_.domain, world_.gravity,
+                           deferred_force_, dt, done, block_work_, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
       const StepSeam late =

@@ -76,6 +76,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   }
   build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin());
   drift_bound_ = 0.0;
+  near_stale_ = true;
   compute_forces();
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
@@ -103,6 +104,7 @@ void Simulation::advance(bool fuse) {
   if (moved) {
     build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
     drift_bound_ = 0.0;
+    near_stale_ = true;
   }
   const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
                                          : fuse  ? ForceStageEnd::verlet_correct_predict
@@ -139,6 +141,7 @@ bool Simulation::drifted(double displacement2) {
   // added to a position (half a unit in the last place of the coordinate), which over the
   // hundreds of steps a list lasts stays far below a tenth of half the skin.
   if (drift_bound_ <= 0.9 * 0.5 * list_.skin) return false;
+  ++drift_tests_;
   return particles_moved(list_, world_.particles, threads_);
 }
 
@@ -180,6 +183,7 @@ void Simulation::sort_particles() {
   for (Driver& d : world_.drivers)
     for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];
   list_moved();
+  near_stale_ = true;
   ++renumberings_;
 }
 
@@ -201,6 +205,7 @@ void Simulation::hold(std::uint32_t i, bool held) {
   // be shot out by the overlap it had reached by then.
   if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
   world_.particles.set_held(i, held);
+  near_stale_ = true; // a held grain moves by displace_held: its entries are all candidates
   driven_stale_ = true;
 }
 
@@ -237,7 +242,8 @@ std::size_t Simulation::footprint_bytes() const {
          bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
          bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
          bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
-         bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_);
+         bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_) +
+         bytes(near_.entry) + bytes(near_.slot) + bytes(near_.count);
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,

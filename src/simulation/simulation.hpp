@@ -103,6 +103,11 @@ public:
   /// last time (empty before).
   std::uint64_t renumberings() const { return renumberings_; }
   const std::vector<std::uint32_t>& new_indices() const { return new_of_old_; }
+  /// How many times every particle was compared with its position at the neighbour list's build
+  /// (only when the drift bound could have reached half the skin), and how many force stages
+  /// chose the contact candidates again (ContactCandidates), since construction.
+  std::uint64_t drift_tests() const { return drift_tests_; }
+  std::uint64_t candidate_choices() const { return candidate_choices_; }
   /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
   /// (allocated capacity, not the process' resident size).
   std::size_t footprint_bytes() const;
@@ -139,6 +144,9 @@ private:
   PairTable pairs_;
   NeighbourList list_;
   std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
+  ContactCandidates near_;                ///< the entries the force stage tests
+  double near_base_ = 0.0;                ///< drift_bound_ when near_ was chosen
+  bool near_stale_ = true; ///< near_ must be chosen again (new list, renumbered, a grain held)
   std::vector<PairForce> wall_force_;
   /// each force block's work in the last force stage, for handing out blocks to threads
   std::vector<std::uint64_t> block_work_;
@@ -150,9 +158,9 @@ private:
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   std::uint64_t renumberings_ = 0;
   std::vector<std::uint32_t> new_of_old_;
-  bool driven_stale_ = false;    ///< a particle was held or freed since driven_ was listed
-  bool list_stale_ = false;      ///< a held particle was freed: rebuild the list
-  bool predicted_ = false;        ///< the next step's prediction is done (only inside run())
+  bool driven_stale_ = false;            ///< a particle was held or freed since driven_ was listed
+  bool list_stale_ = false;              ///< a held particle was freed: rebuild the list
+  bool predicted_ = false;               ///< the next step's prediction is done (only inside run())
   double predicted_displacement2_ = 0.0; ///< and how far it moved the farthest particle
   /// An upper bound of how far any free particle moved since the list's build (m): the sum of
   /// the largest displacement of every pass over the particles since then. Every particle is
@@ -161,6 +169,8 @@ private:
   /// restore and after edit_world, until the next build. Driven particles are tested apart.
   static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
   double drift_bound_ = unknown_drift;
+  std::uint64_t drift_tests_ = 0;
+  std::uint64_t candidate_choices_ = 0;
 };
 
 } // namespace talus
