@@ -8,10 +8,13 @@
 namespace talus {
 
 namespace {
-// rebuild cost (in entry tests) / packing fraction: 27 / 0.85 = 32 from the stage timings
-// (a rebuild about 110 ns per particle, an entry's test about 4 ns), and 64 measured best
-// (dense2d at 1e5, where the list is rebuilt every 17 steps at 1 mm: docs/performance.md)
-constexpr double rebuild_cost_over_packing_fraction = 64.0;
+// rebuild cost (in entry tests per step) / packing fraction: 27 / 0.85 = 32 from the stage
+// timings when every entry was tested every step (a rebuild about 110 ns per particle, an entry's
+// test about 4 ns), 64 measured best then (dense2d at 1e5, where the list is rebuilt every 17
+// steps at 1 mm); since the force stage tests only the contact candidates, an entry beyond them
+// costs a test about every fifth of a list's life, and 256 measured best (docs/performance.md,
+// "Contact candidates")
+constexpr double rebuild_cost_over_packing_fraction = 256.0;
 } // namespace
 
 double automatic_skin(double speed, double dt, double mean_radius, double max_radius,

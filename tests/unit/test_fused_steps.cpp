@@ -37,8 +37,8 @@ TEST_P(FusedSteps, ARunIsBitIdenticalToSingleSteps) {
   fused.run(500);
   for (int k = 0; k < 500; ++k) single.step();
   // the prediction's drift test decided some rebuilds, and renumberings happened in between
-  ASSERT_GT(single.neighbours().builds, 3U);
-  ASSERT_EQ(single.renumberings(), 10U); // at steps 0, 50, ..., 450
+  ASSERT_GE(single.neighbours().builds, 3U); // the constructor's, and two or more of the test's
+  ASSERT_EQ(single.renumberings(), 10U);     // at steps 0, 50, ..., 450
   expect_same_state(fused, single);
 }
 

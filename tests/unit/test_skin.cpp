@@ -15,9 +15,9 @@ constexpr double radius = 1e-3, dt = 1e-5;
 TEST(AutomaticSkin, GrowsAsTheSquareRootOfTheSpeedBetweenATenthAndOneRadius) {
   const Domain open;
   EXPECT_DOUBLE_EQ(automatic_skin(0.0, dt, radius, radius, open), 0.1 * radius); // at rest
-  // sqrt(64 v dt R) = 0.4 R at v = 0.25 m/s; four times faster, twice the skin
-  EXPECT_NEAR(automatic_skin(0.25, dt, radius, radius, open), 0.4 * radius, 1e-12);
-  EXPECT_NEAR(automatic_skin(1.0, dt, radius, radius, open), 0.8 * radius, 1e-12);
+  // sqrt(256 v dt R) = 0.4 R at v = 0.0625 m/s; four times faster, twice the skin
+  EXPECT_NEAR(automatic_skin(0.0625, dt, radius, radius, open), 0.4 * radius, 1e-12);
+  EXPECT_NEAR(automatic_skin(0.25, dt, radius, radius, open), 0.8 * radius, 1e-12);
   EXPECT_DOUBLE_EQ(automatic_skin(100.0, dt, radius, radius, open), radius); // capped
 }
 
@@ -26,32 +26,32 @@ TEST(AutomaticSkin, LeavesAPeriodicBoxItsThreeInteractionRanges) {
   const double period = 3.0 * (2.0 * radius + 0.5 * radius);
   const Domain box{{0.0, 0.0}, {period, 1.0}, true, false};
   EXPECT_NEAR(automatic_skin(100.0, dt, radius, radius, box), 0.99 * 0.5 * radius, 1e-15);
-  EXPECT_NEAR(automatic_skin(0.25, dt, radius, radius, box), 0.4 * radius, 1e-12); // room left
+  EXPECT_NEAR(automatic_skin(0.0625, dt, radius, radius, box), 0.4 * radius, 1e-12); // room
 }
 
 // Two grains far apart, one moving: the list is built with the skin the rule gives for
-// 0.25 m/s, and the configuration still says "automatic".
+// 0.0625 m/s, and the configuration still says "automatic".
 TEST(AutomaticSkin, ASimulationBuildsItsListsWithIt) {
   World w;
   Material m;
   m.normal_stiffness = 1.0e4;
   w.materials = {m};
-  w.add_particle({.position = {0.0, 0.0}, .radius = radius, .velocity = {0.25, 0.0}});
+  w.add_particle({.position = {0.0, 0.0}, .radius = radius, .velocity = {0.0625, 0.0}});
   w.add_particle({.position = {0.5, 0.0}, .radius = radius});
   SimulationConfig c;
   c.timestep = dt;
   Simulation s(std::move(w), c);
   EXPECT_NEAR(s.neighbours().skin, 0.4 * radius, 1e-12);
   EXPECT_EQ(s.config().skin, 0.0);
-  // it moves half the skin (0.2 mm) in 80 steps: rebuilt, with the same rule
+  // it moves half the skin (0.2 mm) in 320 steps: rebuilt, with the same rule
   const auto builds = s.neighbours().builds;
-  s.run(100);
+  s.run(400);
   EXPECT_EQ(s.neighbours().builds, builds + 1);
   EXPECT_NEAR(s.neighbours().skin, 0.4 * radius, 1e-12);
 }
 
 // A grain at rest beside a wall that moves: the wall's ends set off rebuilds, so its speed
-// chooses the skin (0.25 m/s: 0.4 R, as for a grain that fast).
+// chooses the skin (0.0625 m/s: 0.4 R, as for a grain that fast).
 TEST(AutomaticSkin, FollowsAMovingWall) {
   Particles p;
   p.add({.position = {0.0, 0.0}, .radius = radius, .mass = 1.0, .inertia = 1.0});
@@ -59,10 +59,10 @@ TEST(AutomaticSkin, FollowsAMovingWall) {
   walls[0].a = {-0.1, -0.01};
   walls[0].b = {0.1, -0.01};
   EXPECT_DOUBLE_EQ(automatic_skin(p, walls, Domain{}, dt), 0.1 * radius); // all at rest
-  walls[0].velocity = {0.25, 0.0};
+  walls[0].velocity = {0.0625, 0.0};
   EXPECT_NEAR(automatic_skin(p, walls, Domain{}, dt), 0.4 * radius, 1e-12);
   walls[0].velocity = {};
-  walls[0].angular_velocity = 2.5; // about its pivot at the origin: 0.25 m/s at the ends
+  walls[0].angular_velocity = 0.625; // about its pivot at the origin: 0.0625 m/s at the ends
   EXPECT_NEAR(automatic_skin(p, walls, Domain{}, dt), 0.4 * radius * std::sqrt(std::sqrt(1.01)),
               1e-12);
 }
