@@ -1,10 +1,10 @@
 #pragma once
-// Two particle-particle contacts computed side by side, one per lane (contact/lanes.hpp): the
+// Two particle-particle contacts computed side by side, one per lane (core/lanes.hpp): the
 // force stage's form of pair_geometry and contact_force. The laws are the same code as for one
 // contact; the geometry and the assembly below repeat the scalar lines of contact/geometry.hpp and
 // contact/contact_law.hpp operation for operation, so each lane gives the scalar result to the
 // bit (tests/unit/test_contact_lanes.cpp checks every law pair).
-#include "contact/lanes.hpp"
+#include "core/lanes.hpp"
 #include "materials/pair_table.hpp"
 
 namespace talus {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "contact/geometry.hpp"
-#include "contact/lanes.hpp"
+#include "core/lanes.hpp"
 #include "materials/pair_table.hpp"
 
 namespace talus {

@@ -2,11 +2,11 @@
 // Tangential contact laws: friction force along t from the slip velocity and, for the spring
 // laws, the stored tangential displacement (the contact's history, a scalar along the current
 // tangent, so it is always kept in the current tangent direction). Like the normal laws, they
-// take one contact or two side by side (contact/lanes.hpp).
+// take one contact or two side by side (core/lanes.hpp).
 #include <cmath>
 
 #include "contact/geometry.hpp"
-#include "contact/lanes.hpp"
+#include "core/lanes.hpp"
 #include "materials/pair_table.hpp"
 
 namespace talus {

@@ -1,9 +1,9 @@
 #pragma once
-// Two contacts side by side: a pair of doubles in one SSE2 register (GCC's vector extension, so
-// that + - * / and comparisons read as they do for double), and the few functions the contact
-// laws need, written once for double and once for Lanes. Each lane rounds exactly as the scalar
-// code does, so a law written with these functions gives the same bits either way
-// (docs/performance.md: "Two contacts per register").
+// Two contacts, or two particles, side by side: a pair of doubles in one SSE2 register (GCC's
+// vector extension, so that + - * / and comparisons read as they do for double), and the few
+// functions the contact laws need, written once for double and once for Lanes. Each lane rounds
+// exactly as the scalar code does, so a law written with these functions gives the same bits
+// either way (docs/performance.md: "Two contacts per register").
 #include <cmath>
 #include <cstdint>
 #include <limits>

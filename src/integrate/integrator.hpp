@@ -2,9 +2,11 @@
 // Time integration of the free particles. Each scheme is split into the stage before the force
 // evaluation (predict) and the stage after it (correct); fixed and moved particles are skipped.
 #include <cmath>
+#include <limits>
 #include <string_view>
 #include <vector>
 
+#include "core/lanes.hpp"
 #include "state/particles.hpp"
 
 namespace talus {
@@ -77,6 +79,50 @@ inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
   p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
   p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
+}
+
+/// verlet_correct_one, then verlet_predict_one, for particles k and l side by side, one per lane
+/// of an SSE2 register (core/lanes.hpp): operation for operation the same arithmetic, so the
+/// same bits (tests FusedSteps.*), with about a fifth fewer instructions than two particles one
+/// by one (docs/performance.md). Clears a lane of `finite` for a non-finite corrected velocity;
+/// returns the squared displacements.
+inline Lanes verlet_correct_predict_two(Particles& p, std::size_t k, std::size_t l, double dt,
+                                        double half, LaneMask& finite) {
+  Vec2* position = p.position.data();
+  Vec2* velocity = p.velocity.data();
+  const Vec2* force = p.force.data();
+  const Vec2* force_previous = p.force_previous.data();
+  // every load before the first store: the stores cannot change what is still to be read
+  const Lanes hm = half * Lanes{p.inv_mass[k], p.inv_mass[l]};
+  const Lanes hi = half * Lanes{p.inv_inertia[k], p.inv_inertia[l]};
+  const Lanes fx{force[k].x, force[l].x}, fy{force[k].y, force[l].y};
+  const Lanes torque{p.torque[k], p.torque[l]};
+  // the correction
+  const Lanes vx = Lanes{velocity[k].x, velocity[l].x} +
+                   hm * (fx - Lanes{force_previous[k].x, force_previous[l].x});
+  const Lanes vy = Lanes{velocity[k].y, velocity[l].y} +
+                   hm * (fy - Lanes{force_previous[k].y, force_previous[l].y});
+  const Lanes w = Lanes{p.angular_velocity[k], p.angular_velocity[l]} +
+                  hi * (torque - Lanes{p.torque_previous[k], p.torque_previous[l]});
+  finite &= magnitude(vx + vy + w) <= std::numeric_limits<double>::max();
+  // the prediction
+  const Lanes kick_x = hm * fx, kick_y = hm * fy;
+  const Lanes dx = dt * (vx + kick_x), dy = dt * (vy + kick_y);
+  const Lanes x = Lanes{position[k].x, position[l].x} + dx;
+  const Lanes y = Lanes{position[k].y, position[l].y} + dy;
+  const Lanes ux = vx + 2.0 * kick_x, uy = vy + 2.0 * kick_y;
+  const Lanes spin_kick = hi * torque;
+  const Lanes angle = Lanes{p.angle[k], p.angle[l]} + dt * (w + spin_kick);
+  const Lanes spin = w + 2.0 * spin_kick;
+  position[k] = {x[0], y[0]};
+  position[l] = {x[1], y[1]};
+  velocity[k] = {ux[0], uy[0]};
+  velocity[l] = {ux[1], uy[1]};
+  p.angle[k] = angle[0];
+  p.angle[l] = angle[1];
+  p.angular_velocity[k] = spin[0];
+  p.angular_velocity[l] = spin[1];
+  return dx * dx + dy * dy;
 }
 
 } // namespace talus
