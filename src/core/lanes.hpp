@@ -6,7 +6,10 @@
 // either way (docs/performance.md: "Two contacts per register").
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -18,6 +21,32 @@ using Lanes = double __attribute__((vector_size(16)));
 using LaneMask = std::int64_t __attribute__((vector_size(16))); // a comparison's result
 inline constexpr LaneMask lane_sign_bit = {std::numeric_limits<std::int64_t>::min(),
                                            std::numeric_limits<std::int64_t>::min()};
+
+/// a[0] and a[1] as lanes, and back.
+inline Lanes lanes_at(const double* a) {
+  Lanes v;
+  std::memcpy(&v, a, sizeof v);
+  return v;
+}
+inline void store_lanes(double* a, Lanes v) {
+  std::memcpy(a, &v, sizeof v);
+}
+
+/// The x and the y of a[0] and a[1] (two {x, y} pairs of doubles, such as Vec2) as lanes, and
+/// back.
+template <class XY> std::pair<Lanes, Lanes> components_at(const XY* a) {
+  static_assert(sizeof(XY) == 2 * sizeof(double) && std::is_trivially_copyable_v<XY>);
+  Lanes first, second;
+  std::memcpy(&first, a, sizeof first);
+  std::memcpy(&second, a + 1, sizeof second);
+  return {Lanes{first[0], second[0]}, Lanes{first[1], second[1]}};
+}
+template <class XY> void store_components(XY* a, Lanes x, Lanes y) {
+  static_assert(sizeof(XY) == 2 * sizeof(double) && std::is_trivially_copyable_v<XY>);
+  const Lanes first{x[0], y[0]}, second{x[1], y[1]};
+  std::memcpy(static_cast<void*>(a), &first, sizeof first);
+  std::memcpy(static_cast<void*>(a + 1), &second, sizeof second);
+}
 
 inline double square_root(double x) {
   return std::sqrt(x);

@@ -81,47 +81,36 @@ inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
 }
 
-/// verlet_correct_one, then verlet_predict_one, for particles k and l side by side, one per lane
-/// of an SSE2 register (core/lanes.hpp): operation for operation the same arithmetic, so the
-/// same bits (tests FusedSteps.*), with about a fifth fewer instructions than two particles one
-/// by one (docs/performance.md). Clears a lane of `finite` for a non-finite corrected velocity;
-/// returns the squared displacements.
-inline Lanes verlet_correct_predict_two(Particles& p, std::size_t k, std::size_t l, double dt,
-                                        double half, LaneMask& finite) {
-  Vec2* position = p.position.data();
-  Vec2* velocity = p.velocity.data();
-  const Vec2* force = p.force.data();
-  const Vec2* force_previous = p.force_previous.data();
+/// verlet_correct_one, then verlet_predict_one, for particles k and k + 1 side by side, one per
+/// lane of an SSE2 register (core/lanes.hpp): operation for operation the same arithmetic, so
+/// the same bits (tests FusedSteps.*), with the two particles' values loaded and stored together
+/// (docs/performance.md). Clears a lane of `finite` for a non-finite corrected velocity; returns
+/// the squared displacements.
+inline Lanes verlet_correct_predict_two(Particles& p, std::size_t k, double dt, double half,
+                                        LaneMask& finite) {
   // every load before the first store: the stores cannot change what is still to be read
-  const Lanes hm = half * Lanes{p.inv_mass[k], p.inv_mass[l]};
-  const Lanes hi = half * Lanes{p.inv_inertia[k], p.inv_inertia[l]};
-  const Lanes fx{force[k].x, force[l].x}, fy{force[k].y, force[l].y};
-  const Lanes torque{p.torque[k], p.torque[l]};
+  const Lanes hm = half * lanes_at(p.inv_mass.data() + k);
+  const Lanes hi = half * lanes_at(p.inv_inertia.data() + k);
+  const auto [fx, fy] = components_at(p.force.data() + k);
+  const auto [gx, gy] = components_at(p.force_previous.data() + k);
+  const auto [vx0, vy0] = components_at(p.velocity.data() + k);
+  const auto [x0, y0] = components_at(p.position.data() + k);
+  const Lanes torque = lanes_at(p.torque.data() + k);
+  const Lanes torque_previous = lanes_at(p.torque_previous.data() + k);
+  const Lanes w0 = lanes_at(p.angular_velocity.data() + k);
+  const Lanes angle0 = lanes_at(p.angle.data() + k);
   // the correction
-  const Lanes vx = Lanes{velocity[k].x, velocity[l].x} +
-                   hm * (fx - Lanes{force_previous[k].x, force_previous[l].x});
-  const Lanes vy = Lanes{velocity[k].y, velocity[l].y} +
-                   hm * (fy - Lanes{force_previous[k].y, force_previous[l].y});
-  const Lanes w = Lanes{p.angular_velocity[k], p.angular_velocity[l]} +
-                  hi * (torque - Lanes{p.torque_previous[k], p.torque_previous[l]});
+  const Lanes vx = vx0 + hm * (fx - gx), vy = vy0 + hm * (fy - gy);
+  const Lanes w = w0 + hi * (torque - torque_previous);
   finite &= magnitude(vx + vy + w) <= std::numeric_limits<double>::max();
   // the prediction
   const Lanes kick_x = hm * fx, kick_y = hm * fy;
   const Lanes dx = dt * (vx + kick_x), dy = dt * (vy + kick_y);
-  const Lanes x = Lanes{position[k].x, position[l].x} + dx;
-  const Lanes y = Lanes{position[k].y, position[l].y} + dy;
-  const Lanes ux = vx + 2.0 * kick_x, uy = vy + 2.0 * kick_y;
   const Lanes spin_kick = hi * torque;
-  const Lanes angle = Lanes{p.angle[k], p.angle[l]} + dt * (w + spin_kick);
-  const Lanes spin = w + 2.0 * spin_kick;
-  position[k] = {x[0], y[0]};
-  position[l] = {x[1], y[1]};
-  velocity[k] = {ux[0], uy[0]};
-  velocity[l] = {ux[1], uy[1]};
-  p.angle[k] = angle[0];
-  p.angle[l] = angle[1];
-  p.angular_velocity[k] = spin[0];
-  p.angular_velocity[l] = spin[1];
+  store_components(p.position.data() + k, x0 + dx, y0 + dy);
+  store_components(p.velocity.data() + k, vx + 2.0 * kick_x, vy + 2.0 * kick_y);
+  store_lanes(p.angle.data() + k, angle0 + dt * (w + spin_kick));
+  store_lanes(p.angular_velocity.data() + k, w + 2.0 * spin_kick);
   return dx * dx + dy * dy;
 }
 

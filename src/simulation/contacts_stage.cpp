@@ -88,7 +88,7 @@ struct VerletCorrectPredict {
     Lanes far{0.0, 0.0};
     std::size_t k = first;
     for (; k + 1 < last; k += 2) {
-      const Lanes d2 = verlet_correct_predict_two(p, k, k + 1, step, h, finite_lanes);
+      const Lanes d2 = verlet_correct_predict_two(p, k, step, h, finite_lanes);
       far = select(d2 > far, d2, far);
     }
     bool finite = finite_lanes[0] != 0 && finite_lanes[1] != 0;
