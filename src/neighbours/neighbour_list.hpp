@@ -73,7 +73,7 @@ struct ContactCandidates {
   std::vector<std::uint32_t> count; ///< candidates per stretch of rows
   double skin = 0.0;                ///< m
   /// `skin` as a fraction of the list's skin: they are chosen again about five times in a
-  /// list's life. 0.1 to 0.5 measured alike (docs/performance.md, "Candidates").
+  /// list's life. 0.1 to 0.5 measured alike (docs/performance.md, "Contact candidates").
   static constexpr double skin_fraction = 0.2;
 };
 
