@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace talus {
 
@@ -72,6 +73,72 @@ struct GearCorrector {
   }
 };
 
+// GearCorrector, then GearPredictor, for two free particles k and k + 1 side by side, one per
+// lane of an SSE2 register (core/lanes.hpp): operation for operation the same arithmetic, so
+// the same bits (tests FusedSteps.*, state hashes). Clears a lane of `finite` for a non-finite
+// corrected position or velocity; returns the squared displacements of both together.
+Lanes correct_predict_two(Particles& p, std::size_t k, const GearCorrector& c,
+                          const GearPredictor& q, LaneMask& finite) {
+  auto& g = p.gear;
+  // every load before the first store: the stores cannot change what is still to be read
+  const Lanes inv_mass = lanes_at(p.inv_mass.data() + k);
+  const Lanes inv_inertia = lanes_at(p.inv_inertia.data() + k);
+  const auto [fx, fy] = components_at(p.force.data() + k);
+  const auto [x0, y0] = components_at(p.position.data() + k);
+  auto [vx, vy] = components_at(p.velocity.data() + k);
+  auto [ax, ay] = components_at(g.r2.data() + k);
+  auto [bx, by] = components_at(g.r3.data() + k);
+  auto [cx, cy] = components_at(g.r4.data() + k);
+  const Lanes torque = lanes_at(p.torque.data() + k);
+  Lanes angle = lanes_at(p.angle.data() + k);
+  Lanes spin = lanes_at(p.angular_velocity.data() + k);
+  Lanes phi2 = lanes_at(g.phi2.data() + k), phi3 = lanes_at(g.phi3.data() + k);
+  Lanes phi4 = lanes_at(g.phi4.data() + k);
+  // the correction
+  const Lanes dax = inv_mass * fx - ax, day = inv_mass * fy - ay;
+  Lanes x = x0 + c.k0 * dax, y = y0 + c.k0 * day;
+  vx += c.k1 * dax;
+  vy += c.k1 * day;
+  ax += dax;
+  ay += day;
+  bx += c.k3 * dax;
+  by += c.k3 * day;
+  cx += c.k4 * dax;
+  cy += c.k4 * day;
+  const Lanes dphi = torque * inv_inertia - phi2;
+  angle += c.k0 * dphi;
+  spin += c.k1 * dphi;
+  phi2 += dphi;
+  phi3 += c.k3 * dphi;
+  phi4 += c.k4 * dphi;
+  finite &= magnitude(x + y + vx + vy) <= std::numeric_limits<double>::max();
+  // the prediction
+  x += q.dt * vx + q.h2 * ax + q.h3 * bx + q.h4 * cx;
+  y += q.dt * vy + q.h2 * ay + q.h3 * by + q.h4 * cy;
+  vx += q.dt * ax + q.h2 * bx + q.h3 * cx;
+  vy += q.dt * ay + q.h2 * by + q.h3 * cy;
+  ax += q.dt * bx + q.h2 * cx;
+  ay += q.dt * by + q.h2 * cy;
+  bx += q.dt * cx;
+  by += q.dt * cy;
+  angle += q.dt * spin + q.h2 * phi2 + q.h3 * phi3 + q.h4 * phi4;
+  spin += q.dt * phi2 + q.h2 * phi3 + q.h3 * phi4;
+  phi2 += q.dt * phi3 + q.h2 * phi4;
+  phi3 += q.dt * phi4;
+  store_components(p.position.data() + k, x, y);
+  store_components(p.velocity.data() + k, vx, vy);
+  store_components(g.r2.data() + k, ax, ay);
+  store_components(g.r3.data() + k, bx, by);
+  store_components(g.r4.data() + k, cx, cy);
+  store_lanes(p.angle.data() + k, angle);
+  store_lanes(p.angular_velocity.data() + k, spin);
+  store_lanes(g.phi2.data() + k, phi2);
+  store_lanes(g.phi3.data() + k, phi3);
+  store_lanes(g.phi4.data() + k, phi4);
+  const Lanes dx = x - x0, dy = y - y0;
+  return dx * dx + dy * dy;
+}
+
 } // namespace
 
 double gear_predict(Particles& p, double dt, int threads) {
@@ -107,15 +174,26 @@ StepSeam gear_correct_predict(Particles& p, double dt, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   bool finite = true;
   double farthest2 = 0.0;
+  const std::ptrdiff_t pairs = n / 2;
+  // two free particles at a time, one per lane; a pair with a wall particle one by one
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
     reduction(max : farthest2)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    if (p.kind[i] != Kind::free) continue;
-    const auto k = static_cast<std::size_t>(i);
-    const Vec2 before = p.position[k];
-    finite = correct(p, k).finite && finite;
-    predict(p, k);
-    farthest2 = std::max(farthest2, norm2(p.position[k] - before));
+  for (std::ptrdiff_t h = 0; h < pairs + n % 2; ++h) {
+    const auto k = static_cast<std::size_t>(2 * h);
+    if (h < pairs && p.kind[k] == Kind::free && p.kind[k + 1] == Kind::free) {
+      LaneMask finite_lanes = {-1, -1};
+      const Lanes d2 = correct_predict_two(p, k, correct, predict, finite_lanes);
+      finite = finite && finite_lanes[0] != 0 && finite_lanes[1] != 0;
+      farthest2 = std::max(farthest2, std::max(d2[0], d2[1]));
+      continue;
+    }
+    for (std::size_t i = k; i < std::min(k + 2, static_cast<std::size_t>(n)); ++i) {
+      if (p.kind[i] != Kind::free) continue;
+      const Vec2 before = p.position[i];
+      finite = correct(p, i).finite && finite;
+      predict(p, i);
+      farthest2 = std::max(farthest2, norm2(p.position[i] - before));
+    }
   }
   return {finite, farthest2};
 }
