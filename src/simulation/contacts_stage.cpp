@@ -101,26 +101,6 @@ struct VerletCorrectPredict {
   }
 };
 
-// Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
-// force of its own particles to their weight, then adds each touching pair's force to both
-// partners in entry order, except that a partner beyond the block gets its share later, from a
-// deferred slot. A block writes only its own particles, so blocks run side by side, and the order
-// of every sum is fixed by the list alone: results do not depend on the thread count. Each thread
-// takes consecutive blocks with about an equal part of the last stage's work (force_block_shares:
-// the bottom of a packing has more contacts than its top).
-// A block goes through its rows by stretches of 64, in two passes. The first tests every entry
-// and writes down the touching ones, with masks instead of a branch per entry: in a disordered
-// packing which neighbours touch follows no pattern a branch predictor can learn (the
-// settled 100 x 100 benchmark packing spent about a quarter of its force stage on wrong
-// guesses; docs/performance.md). The second computes the touching pairs' forces. The sums are
-// the same, in the same order, as in one pass that tests every entry and branches.
-// The first pass tests only the candidates (ContactCandidates: entries that may touch before the
-// grains move on; the others cannot touch and keep a zero history); with `refresh` it tests
-// every entry and writes the candidates down again, by stretch, from the stretch's first entry
-// on. The touching entries found, and so the results, are the same either way.
-// `done.range(first, last)` is called for the particles of a stretch whose forces are complete
-// once its rows are done (rows after them never name them), by runs between late ones; the late
-// ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
 // The blocks of the calling thread: its shares of force_block_shares (`start`), consecutive (a
 // team smaller than asked for takes several shares per thread).
 std::pair<std::ptrdiff_t, std::ptrdiff_t>
@@ -137,6 +117,26 @@ struct Gap {
   std::uint32_t i, j;
 };
 
+// Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
+// force of its own particles to their weight, then adds each touching pair's force to both
+// partners in entry order, except that a partner beyond the block gets its share later, from a
+// deferred slot. A block writes only its own particles, so blocks run side by side, and the order
+// of every sum is fixed by the list alone: results do not depend on the thread count. Each thread
+// takes consecutive blocks with about an equal part of the last stage's work (force_block_shares:
+// the bottom of a packing has more contacts than its top).
+// A block goes through its rows by stretches of 64, in two passes. The first tests the entries
+// and writes down the touching ones, with masks instead of a branch per entry: in a disordered
+// packing which neighbours touch follows no pattern a branch predictor can learn (the
+// settled 100 x 100 benchmark packing spent about a quarter of its force stage on wrong
+// guesses; docs/performance.md). The second computes the touching pairs' forces. The sums are
+// the same, in the same order, as in one pass that tests every entry and branches.
+// The first pass tests only the candidates (ContactCandidates: entries that may touch before the
+// grains move on; the others cannot touch and keep a zero history); with `refresh` it tests
+// every entry and writes the candidates down again, by stretch, from the stretch's first entry
+// on. The touching entries found, and so the results, are the same either way.
+// `done.range(first, last)` is called for the particles of a stretch whose forces are complete
+// once its rows are done (rows after them never name them), by runs between late ones; the late
+// ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
 template <class N, class T, class Done>
 std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, ContactCandidates& near,
                                        bool refresh, const PairTable& pairs, const Domain& domain,
@@ -432,9 +432,10 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
   // The candidates stay valid while two grains cannot have closed their gap: each moved at most
-  // drift_bound_ - near_base_ (a tenth kept for rounding, as in drifted()). An unknown bound
-  // (infinite, or NaN as infinity less infinity) chooses them again at every step.
-  const bool refresh = near_stale_ || !(2.0 * (drift_bound_ - near_base_) <= 0.9 * near_.skin);
+  // drift_bound_ - near_base_ (drift_margin kept for rounding). An unknown bound (infinite, or
+  // NaN as infinity less infinity) chooses them again at every step.
+  const bool refresh =
+      near_stale_ || !(2.0 * (drift_bound_ - near_base_) <= drift_margin * near_.skin);
   if (refresh) {
     near_.skin = ContactCandidates::skin_fraction * list_.skin;
     near_base_ = drift_bound_;

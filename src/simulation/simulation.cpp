@@ -74,9 +74,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     attach(d, world_.particles, world_.walls);
     apply(d, 0.0, world_.particles, world_.walls);
   }
-  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin());
-  drift_bound_ = 0.0;
-  near_stale_ = true;
+  rebuild_list(1);
   compute_forces();
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
@@ -101,11 +99,7 @@ void Simulation::advance(bool fuse) {
   if (driven_stale_) list_moved();
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
-  if (moved) {
-    build_neighbour_list(list_, p, world_.walls, world_.domain, next_skin(), threads_);
-    drift_bound_ = 0.0;
-    near_stale_ = true;
-  }
+  if (moved) rebuild_list(threads_);
   const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
                                          : fuse  ? ForceStageEnd::verlet_correct_predict
                                                  : ForceStageEnd::verlet_correct);
@@ -135,12 +129,15 @@ void Simulation::advance(bool fuse) {
   guard();
 }
 
+void Simulation::rebuild_list(int threads) {
+  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
+  drift_bound_ = 0.0;
+  near_stale_ = true;
+}
+
 bool Simulation::drifted(double displacement2) {
   drift_bound_ += std::sqrt(displacement2);
-  // A tenth of the limit for rounding: each pass's displacement is rounded once more when it is
-  // added to a position (half a unit in the last place of the coordinate), which over the
-  // hundreds of steps a list lasts stays far below a tenth of half the skin.
-  if (drift_bound_ <= 0.9 * 0.5 * list_.skin) return false;
+  if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
   ++drift_tests_;
   return particles_moved(list_, world_.particles, threads_);
 }

@@ -123,7 +123,7 @@ private:
     verlet_correct_predict, ///< that, then the next step's first half kick and drift
   };
   /// Forces of the current state, and `end` for every particle. Returns whether every corrected
-  /// velocity is finite and, with verlet_correct_predict, the drift test of the prediction.
+  /// velocity is finite and, with verlet_correct_predict, the prediction's largest displacement.
   StepSeam compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
   /// One step. With `fuse`, the correction of this step and the prediction of the next are done
   /// together (velocity Verlet: in the force stage, particle by particle; Gear: one pass), and
@@ -138,6 +138,14 @@ private:
   /// displacement to drift_bound_ and compares the positions with the build's only when the
   /// bound could have reached half the skin.
   bool drifted(double displacement2);
+  /// Builds the neighbour list again; the drift bound starts from 0 and the contact candidates
+  /// are chosen again.
+  void rebuild_list(int threads);
+  /// The share of a drift limit the drift bound may reach before the shortcuts it allows stop:
+  /// the rest is for rounding (each pass's displacement is rounded once more when it is added to
+  /// a position, half a unit in the last place of the coordinate, which over the hundreds of
+  /// steps a list lasts stays far below a tenth of the limit).
+  static constexpr double drift_margin = 0.9;
 
   World world_;
   SimulationConfig config_;
