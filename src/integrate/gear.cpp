@@ -168,7 +168,7 @@ StepSeam gear_correct(Particles& p, double dt, int threads) {
   return {finite, farthest2};
 }
 
-StepSeam gear_correct_predict(Particles& p, double dt, int threads) {
+StepSeam gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads) {
   const GearCorrector correct(dt);
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
@@ -185,14 +185,18 @@ StepSeam gear_correct_predict(Particles& p, double dt, int threads) {
       const Lanes d2 = correct_predict_two(p, k, correct, predict, finite_lanes);
       finite = finite && finite_lanes[0] != 0 && finite_lanes[1] != 0;
       farthest2 = std::max(farthest2, std::max(d2[0], d2[1]));
+      start_forces(p, k, gravity, p.force.data(), p.torque.data());
+      start_forces(p, k + 1, gravity, p.force.data(), p.torque.data());
       continue;
     }
     for (std::size_t i = k; i < std::min(k + 2, static_cast<std::size_t>(n)); ++i) {
-      if (p.kind[i] != Kind::free) continue;
-      const Vec2 before = p.position[i];
-      finite = correct(p, i).finite && finite;
-      predict(p, i);
-      farthest2 = std::max(farthest2, norm2(p.position[i] - before));
+      if (p.kind[i] == Kind::free) {
+        const Vec2 before = p.position[i];
+        finite = correct(p, i).finite && finite;
+        predict(p, i);
+        farthest2 = std::max(farthest2, norm2(p.position[i] - before));
+      }
+      start_forces(p, i, gravity, p.force.data(), p.torque.data());
     }
   }
   return {finite, farthest2};

@@ -39,6 +39,16 @@ struct StepSeam {
   double displacement2 = 0; ///< the largest squared displacement of a free particle (m^2)
 };
 
+/// The force and torque every force stage starts particle k from, before the contacts add to
+/// them: its weight if it is free, else none. The fused passes (velocity Verlet's in the force
+/// stage, gear_correct_predict) write them for the next step while the lines are in cache, so
+/// that the next force stage needs no pass of its own over memory to set them.
+inline void start_forces(const Particles& p, std::size_t k, Vec2 gravity, Vec2* force,
+                         double* torque) {
+  force[k] = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
+  torque[k] = 0.0;
+}
+
 /// Sets the Gear derivatives from the current forces (acceleration = F/m, higher ones 0).
 void gear_initialise(Particles& p);
 /// Taylor prediction of position, velocity, acceleration and higher derivatives to t + dt.
@@ -49,8 +59,9 @@ double gear_predict(Particles& p, double dt, int threads);
 StepSeam gear_correct(Particles& p, double dt, int threads);
 /// gear_correct, then gear_predict for the next step, particle by particle in one pass over
 /// memory (the same arithmetic: the results are bit-identical to the two passes). The
-/// displacement is that of both together.
-StepSeam gear_correct_predict(Particles& p, double dt, int threads);
+/// displacement is that of both together. It leaves every force and torque as the next force
+/// stage starts them (start_forces, with `gravity`).
+StepSeam gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads);
 
 /// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the forces
 /// in `force` and no branch on the kind: fixed and moved particles have inv_mass = 0 (no kick),

@@ -77,12 +77,18 @@ struct VerletCorrect {
   }
 };
 // velocity Verlet's correction and the next step's prediction (Simulation::run): no later row
-// names these particles, so nothing in this force stage reads them any more
+// names these particles, so nothing in this force stage reads them any more. It also starts the
+// next step's forces (start_forces) in force_previous and torque_previous, which the swap after
+// this stage makes the next step's force and torque: their lines were just read, so the next
+// force stage needs no pass of its own to set them (about 3.5 ns per particle-step at 1e6, where
+// that pass waited on memory; docs/performance.md).
 struct VerletCorrectPredict {
   Particles& p;
   double dt, half;
+  Vec2 gravity;
   [[gnu::noinline]] StepSeam range(std::size_t first, std::size_t last) const {
     const double step = dt, h = half;
+    const Vec2 g = gravity;
     // two particles at a time, one per lane (about 3% of a step at 1e4, 8% at 1e6)
     LaneMask finite_lanes = {-1, -1};
     Lanes far{0.0, 0.0};
@@ -90,12 +96,15 @@ struct VerletCorrectPredict {
     for (; k + 1 < last; k += 2) {
       const Lanes d2 = verlet_correct_predict_two(p, k, step, h, finite_lanes);
       far = select(d2 > far, d2, far);
+      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
+      start_forces(p, k + 1, g, p.force_previous.data(), p.torque_previous.data());
     }
     bool finite = finite_lanes[0] != 0 && finite_lanes[1] != 0;
     double farthest2 = std::max(far[0], far[1]);
     for (; k < last; ++k) {
       finite = verlet_correct_one(p, k, h) && finite;
       farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h));
+      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
     }
     return {finite, farthest2};
   }
@@ -142,7 +151,7 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
                                        bool refresh, const PairTable& pairs, const Domain& domain,
                                        Vec2 gravity, std::vector<PairForce>& deferred, double dt,
                                        const Done& done, std::vector<std::uint64_t>& block_work,
-                                       int threads) {
+                                       bool forces_started, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
@@ -175,10 +184,9 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
     // any before it, so steps after the first few allocate nothing
     thread_local std::vector<TouchingEntry> touching;
     const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
-    for (std::ptrdiff_t k = first; k < last; ++k) {
-      p.force[k] = p.kind[k] == Kind::free ? p.mass[k] * gravity : Vec2{};
-      p.torque[k] = 0.0;
-    }
+    if (!forces_started) // else the last stage's `done` started them
+      for (std::ptrdiff_t k = first; k < last; ++k)
+        start_forces(p, k, gravity, p.force.data(), p.torque.data());
     std::uint32_t slot = list.block_first_slot[b];
     // the block's late particles, walked alongside the rows (no per-row lookup)
     auto next_late = std::lower_bound(list.late.begin(), list.late.end(), first);
@@ -442,11 +450,15 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
     near_stale_ = false;
     ++candidate_choices_;
   }
+  // the last stage started this one's forces (ForceStageEnd::verlet_correct_predict), or the
+  // fused Gear pass did (advance)
+  const bool started = forces_started_;
+  forces_started_ = false;
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
     const auto stages = [&](const auto& done) {
       const auto [worst_pair, pair_seam] =
           pair_stage<N, T>(p, list_, near_, refresh, pairs_, world_.domain, world_.gravity,
-                           deferred_force_, dt, done, block_work_, threads_);
+                           deferred_force_, dt, done, block_work_, started, threads_);
       max_overlap_seen_ = std::max(
           worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
       const StepSeam late =
@@ -458,7 +470,7 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
     case ForceStageEnd::verlet_correct:
       return stages(VerletCorrect{p, 0.5 * dt});
     case ForceStageEnd::verlet_correct_predict:
-      return stages(VerletCorrectPredict{p, dt, 0.5 * dt});
+      return stages(VerletCorrectPredict{p, dt, 0.5 * dt, world_.gravity});
     case ForceStageEnd::nothing:
       break;
     }

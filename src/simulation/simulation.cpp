@@ -88,6 +88,9 @@ void Simulation::advance(bool fuse) {
   Particles& p = world_.particles;
   const bool verlet = config_.integrator == Integrator::verlet;
   double displacement2 = predicted_displacement2_;
+  // forces started by the last stage count only between two steps of one run() (a fused step
+  // that finished): anything a caller does between run() calls may change them
+  if (!predicted_) forces_started_ = false;
   if (!predicted_) {
     if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
     displacement2 = verlet ? verlet_predict(p, dt, threads_) : gear_predict(p, dt, threads_);
@@ -112,8 +115,9 @@ void Simulation::advance(bool fuse) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
     } else {
-      seam = gear_correct_predict(p, dt, threads_);
+      seam = gear_correct_predict(p, dt, world_.gravity, threads_);
     }
+    forces_started_ = true; // by the fused pass, for the next force stage
     finite_ = seam.finite;
     predicted_displacement2_ = seam.displacement2;
     predicted_ = true;

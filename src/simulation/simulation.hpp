@@ -170,6 +170,9 @@ private:
   bool list_stale_ = false;              ///< a held particle was freed: rebuild the list
   bool predicted_ = false;               ///< the next step's prediction is done (only inside run())
   double predicted_displacement2_ = 0.0; ///< and how far it moved the farthest particle
+  /// The next force stage's forces and torques are started already (each free particle's
+  /// weight, no torque): a fused pass did it while it had them in cache (only inside run()).
+  bool forces_started_ = false;
   /// An upper bound of how far any free particle moved since the list's build (m): the sum of
   /// the largest displacement of every pass over the particles since then. Every particle is
   /// compared with its build position only once this bound could have reached half the skin,

@@ -91,7 +91,7 @@ TEST(ListReuse, EveryPassReportsHowFarItMovedTheFarthestGrain) {
     EXPECT_GT(std::sqrt(corrected.displacement2), 1e-12);
     EXPECT_NEAR(std::sqrt(corrected.displacement2), farthest(before_correction, p), rounding);
     Particles q = before_correction;
-    const StepSeam both = gear_correct_predict(q, dt, 1);
+    const StepSeam both = gear_correct_predict(q, dt, s.world().gravity, 1);
     EXPECT_NEAR(std::sqrt(both.displacement2), farthest(before_correction, q), rounding);
   }
 }
