@@ -4,16 +4,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
-#include <sys/resource.h>
-#include <thread>
-#include <unistd.h>
 
-#include <fmt/chrono.h>
 #include <fmt/core.h>
 
 #include "analysis/observables.hpp"
+#include "cli/bench_system.hpp"
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
@@ -26,68 +22,12 @@ namespace talus::cli {
 namespace {
 
 struct BenchOptions {
-  std::size_t n = 10000;
-  std::size_t tiles = 1;
-  double skin = 0.0;               // m; 0: automatic (the engine's default)
-  std::uint64_t sort_every = 1000; // steps between renumberings (the scenarios' default)
+  BenchSystem system;
   std::uint64_t steps = 2000;
-  int threads = 1;
   bool lammps = false;
-  double settle_time = 0.6; // s, as dense2d-settle.in
-  std::string cache = "bench/cache";
   std::string results = "bench/results";
   std::string lammps_inputs;
 };
-
-std::string machine_name() {
-  std::ifstream cpu("/proc/cpuinfo");
-  std::string line, model = "unknown-cpu";
-  while (std::getline(cpu, line))
-    if (line.rfind("model name", 0) == 0) {
-      model = line.substr(line.find(':') + 2);
-      break;
-    }
-  std::string name = model + "-" + std::to_string(std::thread::hardware_concurrency()) + "cores";
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
-  return name;
-}
-
-double peak_rss_bytes() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) * 1024.0;
-}
-
-std::size_t side(std::size_t n) {
-  return static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(n))));
-}
-
-// The settled system, from the cache or settled now (and cached).
-SimulationState settled_state(const BenchOptions& o, std::size_t nx, std::size_t ny,
-                              SimulationConfig& config) {
-  Dense2d d = build_dense2d(nx, ny);
-  config = d.config;
-  config.threads = o.threads;
-  const fs::path file = fs::path(o.cache) / fmt::format("dense2d_{}x{}.ckpt", nx, ny);
-  if (fs::exists(file)) {
-    try {
-      Checkpoint c = decode_checkpoint(read_file(file.string()), file.string());
-      fmt::print("settled packing from {}\n", file.string());
-      return std::move(c.state);
-    } catch (const CheckpointError& e) {
-      fmt::print("cache unusable ({}); settling again\n", e.what());
-    }
-  }
-  fmt::print("settling {} x {} disks for {} s ({} steps)...\n", nx, ny, o.settle_time,
-             static_cast<std::uint64_t>(o.settle_time / config.timestep));
-  std::fflush(stdout);
-  Simulation sim(std::move(d.world), config);
-  sim.run(static_cast<std::uint64_t>(std::llround(o.settle_time / config.timestep)));
-  fs::create_directories(o.cache);
-  write_file_atomically(file.string(), encode_checkpoint({sim.state(), sim.config(), ""}));
-  return sim.state();
-}
 
 // Runs LAMMPS on the same system; returns its seconds per particle-step (0 if it failed).
 double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
@@ -95,7 +35,7 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
     fmt::print("lammps: `lmp` is not on the PATH (apt-get install lammps); skipped\n");
     return 0.0;
   }
-  const fs::path dir = fs::absolute(fs::path(o.cache) / "lammps");
+  const fs::path dir = fs::absolute(fs::path(o.system.cache) / "lammps");
   fs::create_directories(dir);
   for (const char* f : {"dense2d-settle.in", "dense2d-bench.in"})
     fs::copy_file(fs::path(o.lammps_inputs) / f, dir / f, fs::copy_options::overwrite_existing);
@@ -135,21 +75,8 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
 }
 
 void run_bench(const BenchOptions& o) {
-  // with tiles: copies side by side of the settled square packing of n / tiles disks
-  const std::size_t ny = side(o.n / o.tiles), nx = ny * o.tiles;
-  require(ny >= 3,
-          fmt::format("bench dense2d: --n {} / --tiles {} leaves a base packing of {} x {} "
-                      "disks; allowed: n / tiles >= 9",
-                      o.n, o.tiles, ny, ny));
-  SimulationConfig config;
-  SimulationState state = settled_state(o, ny, ny, config);
-  if (o.tiles > 1) state = tile_dense2d(state, o.tiles, config.skin);
-  // the list is rebuilt at the first step, with the given skin or the automatic one (the
-  // cached packing's list has the LAMMPS input's 1 mm)
-  config.skin = o.skin;
-  config.sort_interval = o.sort_every;
-  state.neighbours.reference.clear();
-  Simulation sim = Simulation::restore(std::move(state), config);
+  const std::size_t ny = bench_base_side(o.system, "bench dense2d"), nx = ny * o.system.tiles;
+  Simulation sim = bench_simulation(o.system, "bench dense2d");
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
   const std::uint64_t builds_before = sim.neighbours().builds;
@@ -184,9 +111,9 @@ void run_bench(const BenchOptions& o) {
   fmt::print("  contact candidates chosen:  {} times; drift tested against the build {} times\n",
              choices, tests);
   fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
-             o.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
+             o.system.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
   double lammps = 0.0;
-  if (o.lammps && o.tiles > 1) {
+  if (o.lammps && o.system.tiles > 1) {
     fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
   } else if (o.lammps) {
     lammps = run_lammps(o, nx, ny);
@@ -195,22 +122,18 @@ void run_bench(const BenchOptions& o) {
       fmt::print("  LAMMPS time / talus time:    {:.2f}\n", lammps / per);
     }
   }
-  fs::create_directories(o.results);
-  const fs::path csv = fs::path(o.results) / (machine_name() + ".csv");
-  const bool fresh = !fs::exists(csv);
-  std::ofstream out(csv, std::ios::app);
-  if (fresh)
-    out << "date,talus_version,benchmark,n,steps,threads,ns_per_particle_step,"
-           "particle_steps_per_second,contacts_per_particle,bytes_per_particle,"
-           "lammps_ns_per_particle_step,lammps_over_talus,nx,ny,engine_bytes_per_particle,skin_m\n";
-  out << fmt::format("{:%Y-%m-%dT%H:%M:%S},{},dense2d,{},{},{},{:.3f},{:.6g},{:.3f},{:.0f},{},{},{}"
-                     ",{},{:.0f},{}\n",
-                     fmt::gmtime(std::time(nullptr)), TALUS_VERSION, sim.world().particles.size(),
-                     o.steps, sim.threads(), per * 1e9, 1.0 / per, contacts, bytes,
-                     lammps > 0 ? fmt::format("{:.3f}", lammps * 1e9) : "",
-                     lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "", nx, ny, engine_bytes,
-                     sim.neighbours().skin);
-  fmt::print("appended to {}\n", csv.string());
+  const std::string csv = append_result(o.results, {.n = sim.world().particles.size(),
+                                                    .steps = o.steps,
+                                                    .threads = sim.threads(),
+                                                    .seconds_per_particle_step = per,
+                                                    .contacts_per_particle = contacts,
+                                                    .peak_bytes_per_particle = bytes,
+                                                    .lammps_seconds_per_particle_step = lammps,
+                                                    .nx = nx,
+                                                    .ny = ny,
+                                                    .engine_bytes_per_particle = engine_bytes,
+                                                    .skin = sim.neighbours().skin});
+  fmt::print("appended to {}\n", csv);
 }
 
 // The thesis' table 2.2: 1000 steps at dt = 1e-6 s for 382 to 3885 disks, Verlet-list column.
@@ -251,35 +174,38 @@ void add_bench_command(CLI::App& app) {
   CLI::App* cmd = bench->add_subcommand(
       "dense2d",
       "a settled polydisperse packing on a floor, periodic in x (bench/lammps/README.md)");
-  cmd->add_option("--n", o->n, "number of disks (rounded to a square)")
+  cmd->add_option("--n", o->system.n, "number of disks (rounded to a square)")
       ->capture_default_str()
       ->check(CLI::Range(9, 100000000));
-  cmd->add_option("--tiles", o->tiles,
+  cmd->add_option("--tiles", o->system.tiles,
                   "copies side by side of the settled square packing of n / tiles disks (a "
                   "large system without settling it)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd->add_option(
-         "--skin", o->skin,
+         "--skin", o->system.skin,
          "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the LAMMPS input's; the "
          "physics is the same)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 0.01));
-  cmd->add_option("--sort-every", o->sort_every,
+  cmd->add_option("--sort-every", o->system.sort_every,
                   "steps between renumberings of the particles in the order of their cells (0: "
                   "never; the settled packing is cached in the order it settled into)")
       ->capture_default_str();
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
-  cmd->add_option("--threads", o->threads, "threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", o->system.threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,
                 "also run LAMMPS (lmp) on the same system and print the ratio");
-  cmd->add_option("--cache", o->cache, "folder for settled packings")->capture_default_str();
+  cmd->add_option("--cache", o->system.cache, "folder for settled packings")->capture_default_str();
   cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
   cmd->add_option("--lammps-inputs", o->lammps_inputs,
                   "folder with dense2d-settle.in and dense2d-bench.in")
       ->capture_default_str();
-  cmd->add_option("--settle-time", o->settle_time, "settling time, s")->capture_default_str();
+  cmd->add_option("--settle-time", o->system.settle_time, "settling time, s")
+      ->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
+
+  add_bench_linear_command(*bench);
 
   auto threads = std::make_shared<int>(1);
   CLI::App* thesis = bench->add_subcommand(

@@ -22,4 +22,20 @@ head -1 "$csv" | grep -q "ns_per_particle_step.*engine_bytes_per_particle,skin_m
 [ "$(wc -l < "$csv")" -eq 3 ] || { echo "expected a header and two rows"; cat "$csv"; exit 1; }
 run --n 100 --tiles 50 2> "$dir/err.txt" && { echo "a 1 x 1 base was accepted"; exit 1; }
 grep -q "allowed: n / tiles >= 9" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
+# bench linear: every size timed in turns, round by round, its median in the table and the CSV;
+# a base settled for another time is cached apart
+"$talus" bench linear --base 4 --tiles 1,3 --rounds 3 --particle-steps 2000 --min-steps 10 \
+  --settle-time 0.05 --cache "$dir/cache" --results "$dir/results" > "$dir/linear.txt" ||
+  { cat "$dir/linear.txt"; exit 1; }
+cat "$dir/linear.txt"
+grep -q "settling 4 x 4 disks for 0.05 s" "$dir/linear.txt" || { echo "no settling"; exit 1; }
+[ -s "$dir/cache/dense2d_4x4_0.05s.ckpt" ] || { echo "no cached base packing"; exit 1; }
+[ "$(grep -c '^  round ' "$dir/linear.txt")" -eq 3 ] || { echo "expected 3 rounds"; exit 1; }
+grep -q "^| 16 | 125 |" "$dir/linear.txt" || { echo "no row for 16 disks, 125 steps"; exit 1; }
+grep -q "^| 48 | 42 |" "$dir/linear.txt" || { echo "no row for 48 disks, 42 steps"; exit 1; }
+grep -q "largest / smallest median: " "$dir/linear.txt" || exit 1
+[ "$(grep -c ',dense2d_linear,' "$csv")" -eq 2 ] || { echo "expected two linear rows"; exit 1; }
+"$talus" bench linear --tiles 0 --cache "$dir/cache" 2> "$dir/err.txt" &&
+  { echo "--tiles 0 was accepted"; exit 1; }
+grep -q -- "--tiles" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 exit 0
