@@ -3,6 +3,7 @@
 // floating-point atomics are needed.
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -127,12 +128,13 @@ struct Gap {
 };
 
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
-// force of its own particles to their weight, then adds each touching pair's force to both
+// force of its own particles to their weight (unless the last stage did: `forces_started`), then
+// adds each touching pair's force to both
 // partners in entry order, except that a partner beyond the block gets its share later, from a
 // deferred slot. A block writes only its own particles, so blocks run side by side, and the order
 // of every sum is fixed by the list alone: results do not depend on the thread count. Each thread
-// takes consecutive blocks with about an equal part of the last stage's work (force_block_shares:
-// the bottom of a packing has more contacts than its top).
+// takes consecutive blocks with about an equal part of the time the blocks took in the last
+// stages (force_block_shares: the bottom of a packing has more contacts than its top).
 // A block goes through its rows by stretches of 64, in two passes. The first tests the entries
 // and writes down the touching ones, with masks instead of a branch per entry: in a disordered
 // packing which neighbours touch follows no pattern a branch predictor can learn (the
@@ -179,7 +181,7 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
   const std::vector<std::ptrdiff_t> start = force_block_shares(block_work, threads);
 #pragma omp parallel num_threads(threads) reduction(max : worst, farthest2) reduction(&& : finite)
   for (auto [b, b_end] = blocks_of_this_thread(start); b < b_end; ++b) {
-    std::uint64_t work = 0; // list entries, and touching pairs at the cost of three entries
+    const auto block_start = std::chrono::steady_clock::now();
     // per thread, kept from step to step: it grows only when a stretch has more entries than
     // any before it, so steps after the first few allocate nothing
     thread_local std::vector<TouchingEntry> touching;
@@ -249,13 +251,10 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
           slot += later;
         }
         near_count[stretch] = kept;
-        work += offset[r1] - offset[r0];
       } else { // the candidates only
         const std::uint32_t end = base + near_count[stretch];
         for (std::uint32_t c = base; c < end; ++c) test(near_entry[c], near_slot[c]);
-        work += end - base;
       }
-      work += 3 * count;
       // second pass: the touching pairs' forces, two at a time (one per lane), added to the
       // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
       for (std::size_t t = 0; t < count; t += 2) {
@@ -311,7 +310,15 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
         a = z + 1;
       }
     }
-    block_work[static_cast<std::size_t>(b)] = work;
+    // the block's time, smoothed over steps (a quarter of the newest): it counts what a count
+    // of entries and contacts missed, the correction and prediction of its particles and the
+    // memory it waits on (2 threads at 1e5: the two threads' force stages within 1% of each
+    // other instead of 4 to 17%; docs/performance.md)
+    const auto ns = static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                                   std::chrono::steady_clock::now() - block_start)
+                                                   .count());
+    std::uint64_t& w = block_work[static_cast<std::size_t>(b)];
+    w = w == 0 ? ns + 1 : (3 * w + ns) / 4 + 1;
   }
   return {worst, StepSeam{finite, farthest2}};
 }
