@@ -206,6 +206,7 @@ void add_bench_command(CLI::App& app) {
   cmd->callback([o] { run_bench(*o); });
 
   add_bench_linear_command(*bench);
+  add_bench_threads_command(*bench);
 
   auto threads = std::make_shared<int>(1);
   CLI::App* thesis = bench->add_subcommand(

@@ -4,7 +4,6 @@
 // minute to minute (a shared host: 3 to 8% from run to run, sometimes 30%) slows every size
 // alike; the figure of a size is the median of its rounds.
 #include <algorithm>
-#include <chrono>
 #include <memory>
 #include <vector>
 
@@ -31,32 +30,17 @@ struct LinearOptions {
   std::string results = "bench/results";
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
-struct Size {
-  std::size_t tiles = 1;
-  std::unique_ptr<Simulation> sim;
-  std::uint64_t steps = 0;
-  std::vector<double> ns; // per round
-  std::uint64_t builds = 0;
-};
-
 void run_linear(const LinearOptions& o) {
   require(o.base >= 3, fmt::format("bench linear: --base {}; allowed: >= 3", o.base));
   require(o.rounds >= 1, fmt::format("bench linear: --rounds {}; allowed: >= 1", o.rounds));
   require(!o.tiles.empty(), "bench linear: --tiles is empty; allowed: one or more counts >= 1");
-  std::vector<Size> sizes;
+  std::vector<TimedRun> sizes;
   for (const std::size_t k : o.tiles) {
     require(k >= 1, "bench linear: --tiles holds 0; allowed: counts >= 1");
     BenchSystem s = o.system;
     s.tiles = k;
     s.n = o.base * o.base * k;
-    Size z;
-    z.tiles = k;
+    TimedRun z;
     z.sim = std::make_unique<Simulation>(bench_simulation(s, "bench linear"));
     const double n = static_cast<double>(z.sim->world().particles.size());
     z.steps = std::max<std::uint64_t>(
@@ -66,32 +50,18 @@ void run_linear(const LinearOptions& o) {
   }
   fmt::print("bench linear: copies of the settled {} x {} packing, {} thread(s), {} round(s)\n",
              o.base, o.base, sizes.front().sim->threads(), o.rounds);
-  for (int r = 0; r < o.rounds; ++r) {
-    // every other round in the opposite order, so that a drift of the machine's speed within a
-    // round does not favour the sizes timed first
-    for (std::size_t q = 0; q < sizes.size(); ++q) {
-      Size& z = sizes[r % 2 == 0 ? q : sizes.size() - 1 - q];
-      const std::uint64_t builds = z.sim->neighbours().builds;
-      const auto start = std::chrono::steady_clock::now();
-      z.sim->run(z.steps);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      z.builds += z.sim->neighbours().builds - builds;
-      z.ns.push_back(
-          1e9 * seconds /
-          (static_cast<double>(z.sim->world().particles.size()) * static_cast<double>(z.steps)));
-    }
-    fmt::print("  round {}:", r + 1);
-    for (const Size& z : sizes) fmt::print(" {:.2f}", z.ns.back());
-    fmt::print(" ns per particle-step\n");
-    std::fflush(stdout);
-  }
+  fmt::print("  (each round: ");
+  for (std::size_t q = 0; q < sizes.size(); ++q)
+    fmt::print("{}{}", q > 0 ? ", " : "", sizes[q].sim->world().particles.size());
+  fmt::print(" disks)\n");
+  time_in_turns(sizes, o.rounds);
   fmt::print(
       "| N | steps per round | ns per particle-step (median) | min | max | rebuilds per 1000 "
       "steps | contacts per particle |\n|---|---|---|---|---|---|---|\n");
   double lo = 0.0, hi = 0.0;
   std::string csv;
-  for (const Size& z : sizes) {
+  for (std::size_t q = 0; q < sizes.size(); ++q) {
+    const TimedRun& z = sizes[q];
     const double n = static_cast<double>(z.sim->world().particles.size());
     const double m = median(z.ns);
     lo = lo == 0.0 ? m : std::min(lo, m);
@@ -111,7 +81,7 @@ void run_linear(const LinearOptions& o) {
                     .threads = z.sim->threads(),
                     .seconds_per_particle_step = 1e-9 * m,
                     .contacts_per_particle = contacts,
-                    .nx = o.base * z.tiles,
+                    .nx = o.base * o.tiles[q],
                     .ny = o.base,
                     .engine_bytes_per_particle = static_cast<double>(z.sim->footprint_bytes()) / n,
                     .skin = z.sim->neighbours().skin});

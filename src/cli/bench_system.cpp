@@ -1,5 +1,7 @@
 #include "cli/bench_system.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -116,6 +118,33 @@ std::string append_result(const std::string& folder, const ResultRow& r) {
                      lammps > 0 ? fmt::format("{:.3f}", lammps / per) : "", r.nx, r.ny,
                      r.engine_bytes_per_particle, r.skin);
   return csv.string();
+}
+
+void time_in_turns(std::vector<TimedRun>& runs, int rounds) {
+  for (int r = 0; r < rounds; ++r) {
+    for (std::size_t q = 0; q < runs.size(); ++q) {
+      TimedRun& z = runs[r % 2 == 0 ? q : runs.size() - 1 - q];
+      const std::uint64_t builds = z.sim->neighbours().builds;
+      const auto start = std::chrono::steady_clock::now();
+      z.sim->run(z.steps);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      z.builds += z.sim->neighbours().builds - builds;
+      z.ns.push_back(
+          1e9 * seconds /
+          (static_cast<double>(z.sim->world().particles.size()) * static_cast<double>(z.steps)));
+    }
+    fmt::print("  round {}:", r + 1);
+    for (const TimedRun& z : runs) fmt::print(" {:.2f}", z.ns.back());
+    fmt::print(" ns per particle-step\n");
+    std::fflush(stdout);
+  }
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 } // namespace talus::cli

@@ -2,7 +2,9 @@
 // What the benchmarks share: the settled dense2d system (cached between runs, tiled for large
 // N), the machine's name and the results CSV of bench/results/<machine>.csv.
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -53,7 +55,26 @@ struct ResultRow {
 /// Appends `row` to folder/<machine>.csv (with a header if the file is new); returns the path.
 std::string append_result(const std::string& folder, const ResultRow& row);
 
-/// `talus bench linear` (cli/bench_linear.cpp), under the `bench` command.
+/// One of the systems that time_in_turns times.
+struct TimedRun {
+  std::unique_ptr<Simulation> sim;
+  std::uint64_t steps = 0;  ///< per round
+  std::vector<double> ns;   ///< ns per particle-step, one figure per round
+  std::uint64_t builds = 0; ///< neighbour-list builds while timed
+};
+
+/// Times every run for its steps, in turns, `rounds` times (every other round in the opposite
+/// order, so that a drift of the machine's speed within a round does not favour the runs timed
+/// first), and prints each round's figures on a line. On a shared host whose speed moves from
+/// minute to minute this slows every run alike, where separate invocations would not.
+void time_in_turns(std::vector<TimedRun>& runs, int rounds);
+
+/// The median of v (not empty).
+double median(std::vector<double> v);
+
+/// `talus bench linear` (cli/bench_linear.cpp) and `talus bench threads` (cli/bench_threads.cpp),
+/// under the `bench` command.
 void add_bench_linear_command(CLI::App& bench);
+void add_bench_threads_command(CLI::App& bench);
 
 } // namespace talus::cli

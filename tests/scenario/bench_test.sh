@@ -35,6 +35,14 @@ grep -q "^| 16 | 125 |" "$dir/linear.txt" || { echo "no row for 16 disks, 125 st
 grep -q "^| 48 | 42 |" "$dir/linear.txt" || { echo "no row for 48 disks, 42 steps"; exit 1; }
 grep -q "largest / smallest median: " "$dir/linear.txt" || exit 1
 [ "$(grep -c ',dense2d_linear,' "$csv")" -eq 2 ] || { echo "expected two linear rows"; exit 1; }
+# bench threads: one system, a copy per thread count timed in turns, the states compared
+"$talus" bench threads --n 100 --threads 1,2 --steps 20 --rounds 2 --cache "$dir/cache" \
+  --results "$dir/results" > "$dir/threads.txt" || { cat "$dir/threads.txt"; exit 1; }
+cat "$dir/threads.txt"
+grep -q "^| 1 | .* | 1.00 |$" "$dir/threads.txt" || { echo "no row for 1 thread"; exit 1; }
+grep -q "^| 2 | " "$dir/threads.txt" || { echo "no row for 2 threads"; exit 1; }
+grep -q "bit-identical for every thread count: yes" "$dir/threads.txt" || exit 1
+[ "$(grep -c ',dense2d_threads,' "$csv")" -eq 2 ] || { echo "expected two threads rows"; exit 1; }
 "$talus" bench linear --tiles 0 --cache "$dir/cache" 2> "$dir/err.txt" &&
   { echo "--tiles 0 was accepted"; exit 1; }
 grep -q -- "--tiles" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
