@@ -129,12 +129,12 @@ struct Gap {
 
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
 // force of its own particles to their weight (unless the last stage did: `forces_started`), then
-// adds each touching pair's force to both
-// partners in entry order, except that a partner beyond the block gets its share later, from a
-// deferred slot. A block writes only its own particles, so blocks run side by side, and the order
-// of every sum is fixed by the list alone: results do not depend on the thread count. Each thread
-// takes consecutive blocks with about an equal part of the time the blocks took in the last
-// stages (force_block_shares: the bottom of a packing has more contacts than its top).
+// adds each touching pair's force to both partners in entry order, except that a partner beyond
+// the block gets its share later, from a deferred slot. A block writes only its own particles,
+// so blocks run side by side, and the order of every sum is fixed by the list alone: results do
+// not depend on the thread count. Each thread takes consecutive blocks with about an equal part
+// of the time the blocks took in the last stages (force_block_shares: the bottom of a packing
+// has more contacts than its top).
 // A block goes through its rows by stretches of 64, in two passes. The first tests the entries
 // and writes down the touching ones, with masks instead of a branch per entry: in a disordered
 // packing which neighbours touch follows no pattern a branch predictor can learn (the
