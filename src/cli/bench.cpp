@@ -182,12 +182,6 @@ void add_bench_command(CLI::App& app) {
                   "large system without settling it)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option(
-         "--skin", o->system.skin,
-         "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the LAMMPS input's; the "
-         "physics is the same)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.01));
   cmd->add_option("--sort-every", o->system.sort_every,
                   "steps between renumberings of the particles in the order of their cells (0: "
                   "never; the settled packing is cached in the order it settled into)")
@@ -196,8 +190,9 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--threads", o->system.threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,
                 "also run LAMMPS (lmp) on the same system and print the ratio");
-  cmd->add_option("--cache", o->system.cache, "folder for settled packings")->capture_default_str();
-  cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
+  add_shared_bench_options(*cmd, o->system, o->results,
+                           "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the "
+                           "LAMMPS input's; the physics is the same)");
   cmd->add_option("--lammps-inputs", o->lammps_inputs,
                   "folder with dense2d-settle.in and dense2d-bench.in")
       ->capture_default_str();

@@ -120,15 +120,11 @@ void add_bench_linear_command(CLI::App& bench) {
   cmd->add_option("--threads", o->system.threads, "threads (0: all cores)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
-  cmd->add_option("--skin", o->system.skin, "neighbour-list skin, m (0: automatic)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.01));
   cmd->add_option("--settle-time", o->system.settle_time,
                   "settling time of the base packing, s (from 0.8 s on it no longer compacts)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 100.0));
-  cmd->add_option("--cache", o->system.cache, "folder for settled packings")->capture_default_str();
-  cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
+  add_shared_bench_options(*cmd, o->system, o->results);
   cmd->callback([o] { run_linear(*o); });
 }
 

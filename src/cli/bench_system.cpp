@@ -120,6 +120,13 @@ std::string append_result(const std::string& folder, const ResultRow& r) {
   return csv.string();
 }
 
+void add_shared_bench_options(CLI::App& cmd, BenchSystem& s, std::string& results,
+                              const std::string& skin_help) {
+  cmd.add_option("--skin", s.skin, skin_help)->capture_default_str()->check(CLI::Range(0.0, 0.01));
+  cmd.add_option("--cache", s.cache, "folder for settled packings")->capture_default_str();
+  cmd.add_option("--results", results, "folder for the results CSV")->capture_default_str();
+}
+
 void time_in_turns(std::vector<TimedRun>& runs, int rounds) {
   for (int r = 0; r < rounds; ++r) {
     for (std::size_t q = 0; q < runs.size(); ++q) {

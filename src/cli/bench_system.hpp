@@ -72,6 +72,12 @@ void time_in_turns(std::vector<TimedRun>& runs, int rounds);
 /// The median of v (not empty).
 double median(std::vector<double> v);
 
+/// Registers the options every dense2d benchmark takes: --skin (with `skin_help`), --cache and
+/// --results.
+void add_shared_bench_options(
+    CLI::App& cmd, BenchSystem& s, std::string& results,
+    const std::string& skin_help = "neighbour-list skin, m (0: automatic)");
+
 /// `talus bench linear` (cli/bench_linear.cpp) and `talus bench threads` (cli/bench_threads.cpp),
 /// under the `bench` command.
 void add_bench_linear_command(CLI::App& bench);

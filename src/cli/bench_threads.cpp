@@ -115,11 +115,7 @@ void add_bench_threads_command(CLI::App& bench) {
   cmd->add_option("--rounds", o->rounds, "times every copy is timed, in turns")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--skin", o->system.skin, "neighbour-list skin, m (0: automatic)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 0.01));
-  cmd->add_option("--cache", o->system.cache, "folder for settled packings")->capture_default_str();
-  cmd->add_option("--results", o->results, "folder for the results CSV")->capture_default_str();
+  add_shared_bench_options(*cmd, o->system, o->results);
   cmd->callback([o] { run_threads(*o); });
 }
 
