@@ -41,27 +41,12 @@ std::uint32_t force_block_rows(std::size_t n) {
   return static_cast<std::uint32_t>(std::max<std::size_t>(1, (n + blocks - 1) / blocks));
 }
 
-std::vector<std::ptrdiff_t> force_block_shares(const std::vector<std::uint64_t>& work,
-                                               int threads) {
-  const auto blocks = static_cast<std::ptrdiff_t>(work.size());
-  const auto shares = static_cast<std::uint64_t>(threads);
-  std::uint64_t total = 0;
-  for (const std::uint64_t w : work) total += w;
-  std::vector<std::ptrdiff_t> start(static_cast<std::size_t>(threads) + 1, blocks);
-  std::uint64_t sum = 0;
-  std::ptrdiff_t b = 0;
-  for (std::uint64_t k = 0; k < shares; ++k) {
-    if (total == 0) {
-      start[k] = blocks * static_cast<std::ptrdiff_t>(k) / threads;
-      continue;
-    }
-    const std::uint64_t target = total / shares * k + total % shares * k / shares;
-    // a block goes to the share that holds most of its work
-    while (b < blocks && sum + work[static_cast<std::size_t>(b)] / 2 < target)
-      sum += work[static_cast<std::size_t>(b++)];
-    start[k] = b;
-  }
-  return start;
+void force_block_order(const std::vector<std::uint64_t>& work, std::vector<std::ptrdiff_t>& order) {
+  order.resize(work.size());
+  for (std::size_t b = 0; b < order.size(); ++b) order[b] = static_cast<std::ptrdiff_t>(b);
+  std::stable_sort(order.begin(), order.end(), [&](std::ptrdiff_t x, std::ptrdiff_t y) {
+    return work[static_cast<std::size_t>(x)] > work[static_cast<std::size_t>(y)];
+  });
 }
 
 void index_force_blocks(NeighbourList& list, int threads) {

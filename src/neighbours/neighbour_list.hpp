@@ -84,13 +84,13 @@ struct ContactCandidates {
 /// slot and its late particle), and a block's end crosses a whole layer of the packing.
 std::uint32_t force_block_rows(std::size_t n);
 
-/// How `threads` threads share the force blocks: share t is the blocks [start[t], start[t + 1])
-/// (threads + 1 values), consecutive blocks with about an equal part of the total `work` (one
-/// figure per block, as the last force stage measured it; each block goes to the share that
-/// holds most of its work; with no work at all, equal counts of blocks). Which thread runs a
-/// block changes no result, since a block's sums are its own; an even share of the work does
-/// not follow from an even share of the rows where the packing is denser at the bottom.
-std::vector<std::ptrdiff_t> force_block_shares(const std::vector<std::uint64_t>& work, int threads);
+/// The order in which the threads take the force blocks (into `order`, resized; no allocation
+/// once it has the size): the block indices by decreasing `work`
+/// (one figure per block, as the last force stage measured it), equal ones by index. The threads
+/// take the next block of this order whenever they finish one, so that the last blocks taken,
+/// when one thread may wait for another, are the shortest. Which thread runs a block changes no
+/// result, since a block's sums are its own.
+void force_block_order(const std::vector<std::uint64_t>& work, std::vector<std::ptrdiff_t>& order);
 
 /// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
 /// calls it; a list read back from a checkpoint needs it too).

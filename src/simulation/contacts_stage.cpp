@@ -111,30 +111,91 @@ struct VerletCorrectPredict {
   }
 };
 
-// The blocks of the calling thread: its shares of force_block_shares (`start`), consecutive (a
-// team smaller than asked for takes several shares per thread).
-std::pair<std::ptrdiff_t, std::ptrdiff_t>
-blocks_of_this_thread(const std::vector<std::ptrdiff_t>& start) {
-  const auto shares = start.size() - 1;
-  const auto team = static_cast<std::size_t>(omp_get_num_threads());
-  const auto t = static_cast<std::size_t>(omp_get_thread_num());
-  return {start[t * shares / team], start[(t + 1) * shares / team]};
-}
-
 // What the first pass learns of an entry, for the candidates.
 struct Gap {
   double dist2, reach;
   std::uint32_t i, j;
 };
 
+// Late particles per chunk that a thread takes at a time in the wall contacts and the late pass
+// (about 17 chunks at 1e5): a particle's sums are its own, so which thread takes a chunk changes
+// no result. Chunks taken one at a time, not an equal split: the wall contacts gather in a few
+// places (a floor's particles come first), which an equal split gives to one thread.
+constexpr int late_chunk = 256;
+
+// The wall contacts of late particle i (particles with wall contacts are late): their forces into
+// `out`, one per entry of its wall row (0 if not touching); returns the largest overlap / radius.
+// Not inlined into the stage (its loops are compiled worse with more code in them).
+template <class N, class T>
+[[gnu::noinline]] double wall_contacts(const Particles& p, NeighbourList& list,
+                                       const Segments& walls, const PairTable& pairs,
+                                       std::vector<PairForce>& out, double dt, std::uint32_t i,
+                                       std::vector<WallHit>& hits) {
+  const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
+  double worst = 0.0;
+  if (w0 == w1) return worst;
+  const Vec2 ri = p.position[i];
+  const double Ri = p.radius[i];
+  hits.clear();
+  for (std::uint32_t e = w0; e < w1; ++e)
+    hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
+  for (std::uint32_t e = w0; e < w1; ++e) {
+    const WallHit& h = hits[e - w0];
+    if (!h.touching ||
+        (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
+      out[e] = {};
+      list.wall_history[e] = 0.0;
+      continue;
+    }
+    const Segment& s = walls[list.wall_segment[e]];
+    const Vec2 d = ri - h.point;
+    const ContactGeometry g = wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i],
+                                            p.angular_velocity[i], s.velocity_at(h.point));
+    out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
+    worst = std::max(worst, g.overlap / Ri);
+  }
+  return worst;
+}
+
+// Late particle k adds, in a fixed order, its deferred pair forces (in entry order), then its
+// wall contacts, and is done.
+template <class Done>
+[[gnu::noinline]] StepSeam
+finish_late(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
+            const std::vector<PairForce>& wf, const Done& done, std::uint32_t k) {
+  for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
+    const PairForce& f = deferred[list.deferred_slot[c]];
+    p.force[k] -= f.force;
+    p.torque[k] += f.torque_j;
+  }
+  for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
+    p.force[k] += wf[e].force;
+    p.torque[k] += wf[e].torque_i;
+  }
+  return done.range(k, k + 1);
+}
+
+// The walls' reactions, particle by particle (particles with wall contacts are late, in order).
+void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>& wf,
+                        Segments& walls) {
+  for (Segment& s : walls) s.force = {};
+  for (const std::uint32_t k : list.late)
+    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
+      walls[list.wall_segment[e]].force -= wf[e].force;
+}
+
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
 // force of its own particles to their weight (unless the last stage did: `forces_started`), then
 // adds each touching pair's force to both partners in entry order, except that a partner beyond
 // the block gets its share later, from a deferred slot. A block writes only its own particles,
 // so blocks run side by side, and the order of every sum is fixed by the list alone: results do
-// not depend on the thread count. Each thread takes consecutive blocks with about an equal part
-// of the time the blocks took in the last stages (force_block_shares: the bottom of a packing
-// has more contacts than its top).
+// not depend on the thread count. The threads take the blocks one at a time, the longest first
+// by the time each took in the last stages (force_block_order), so that a thread that finishes
+// early takes more and the last ones, when a thread may wait, are short. A fixed share per thread
+// (consecutive blocks with an equal part of the measured time) left the two threads of a 1e5
+// step 0.25 ms apart on average, 14% of the stage: the blocks' times change from step to step
+// by more than the share could follow; taken one at a time, longest first, 0.055 ms
+// (docs/performance.md).
 // A block goes through its rows by stretches of 64, in two passes. The first tests the entries
 // and writes down the touching ones, with masks instead of a branch per entry: in a disordered
 // packing which neighbours touch follows no pattern a branch predictor can learn (the
@@ -149,11 +210,12 @@ struct Gap {
 // once its rows are done (rows after them never name them), by runs between late ones; the late
 // ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
 template <class N, class T, class Done>
-std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, ContactCandidates& near,
-                                       bool refresh, const PairTable& pairs, const Domain& domain,
-                                       Vec2 gravity, std::vector<PairForce>& deferred, double dt,
-                                       const Done& done, std::vector<std::uint64_t>& block_work,
-                                       bool forces_started, int threads) {
+std::pair<double, StepSeam>
+force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool refresh,
+            const PairTable& pairs, const Domain& domain, Vec2 gravity, Segments& walls,
+            std::vector<PairForce>& deferred, std::vector<PairForce>& wall_force, double dt,
+            const Done& done, std::vector<std::uint64_t>& block_work,
+            std::vector<std::ptrdiff_t>& order, bool forces_started, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const auto rows = static_cast<std::ptrdiff_t>(list.block_rows);
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
@@ -178,220 +240,171 @@ std::pair<double, StepSeam> pair_stage(Particles& p, NeighbourList& list, Contac
                                          : PairLanes(PairParameters{}, PairParameters{});
   double worst = 0.0, farthest2 = 0.0;
   bool finite = true;
-  const std::vector<std::ptrdiff_t> start = force_block_shares(block_work, threads);
+  force_block_order(block_work, order);
+  const auto late = static_cast<std::ptrdiff_t>(list.late.size());
 #pragma omp parallel num_threads(threads) reduction(max : worst, farthest2) reduction(&& : finite)
-  for (auto [b, b_end] = blocks_of_this_thread(start); b < b_end; ++b) {
-    const auto block_start = std::chrono::steady_clock::now();
-    // per thread, kept from step to step: it grows only when a stretch has more entries than
-    // any before it, so steps after the first few allocate nothing
-    thread_local std::vector<TouchingEntry> touching;
-    const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
-    if (!forces_started) // else the last stage's `done` started them
-      for (std::ptrdiff_t k = first; k < last; ++k)
-        start_forces(p, k, gravity, p.force.data(), p.torque.data());
-    std::uint32_t slot = list.block_first_slot[b];
-    // the block's late particles, walked alongside the rows (no per-row lookup)
-    auto next_late = std::lower_bound(list.late.begin(), list.late.end(), first);
-    // the arrays by plain pointers: stores through one cannot move another (no reloads)
-    const Vec2* position = p.position.data();
-    const double* radius = p.radius.data();
-    const std::uint32_t* offset = list.row_offset.data();
-    const std::uint32_t* neighbour = list.neighbour.data();
-    const ImageShift* images = list.image.data();
-    double* history = list.history.data();
-    PairForce* slots = deferred.data();
-    const std::uint8_t* row_in_stretch = list.entry_row.data();
-    const double* mass = p.mass.data();
-    const Vec2* velocity = p.velocity.data();
-    const double* spin = p.angular_velocity.data();
-    const std::uint16_t* material = p.material.data();
-    // a deferred entry that does not touch leaves a zero in its slot
-    std::fill(slots + slot, slots + list.block_first_slot[b + 1], PairForce{});
-    for (std::ptrdiff_t r0 = first; r0 < last; r0 += stretch_rows) {
-      const std::ptrdiff_t r1 = std::min(last, r0 + stretch_rows);
-      if (touching.size() < offset[r1] - offset[r0]) touching.resize(offset[r1] - offset[r0]);
-      TouchingEntry* found = touching.data();
-      // first pass: the touching entries; the others lose their history (masks, no branches)
-      std::size_t count = 0;
-      // entry e's geometry; it is written down if it touches (its deferred slot is `to`)
-      const auto test = [&](std::uint32_t e, std::uint32_t to) {
-        const auto i = static_cast<std::uint32_t>(r0 + row_in_stretch[e]);
-        const std::uint32_t j = neighbour[e];
-        Vec2 rj = position[j];
-        const ImageShift image = images[e];
-        if (image.sx != 0 || image.sy != 0) [[unlikely]] // across a periodic boundary
-          rj += Vec2{image.sx * box.x, image.sy * box.y};
-        const Vec2 d = position[i] - rj;
-        const double dist2 = norm2(d);
-        const double reach = radius[i] + radius[j];
-        // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
-        // that it reaches the forces and the finite check (as with the one-pass stage)
-        const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
-        found[count] = {d, e, to};
-        count += touches;
-        const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
-        history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
-        return Gap{dist2, reach, i, j};
-      };
-      const std::uint32_t base = offset[r0]; // the stretch's candidates are kept from here on
-      const std::size_t stretch = static_cast<std::size_t>(b) * stretches_per_block +
-                                  static_cast<std::size_t>((r0 - first) / stretch_rows);
-      if (refresh) { // every entry, and the candidates written down
-        std::uint32_t kept = 0;
-        for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
-          const auto later = static_cast<std::uint32_t>(neighbour[e] >= last); // a later block
-          const std::uint32_t later_mask = 0u - later;
-          const std::uint32_t to = (slot & later_mask) | ~later_mask;
-          const Gap g = test(e, to);
-          const double cut = g.reach + near_skin;
-          near_entry[base + kept] = e;
-          near_slot[base + kept] = to;
-          const bool pinned = (kind[g.i] != Kind::free) | (kind[g.j] != Kind::free);
-          kept += !(g.dist2 >= cut * cut) | pinned;
-          slot += later;
-        }
-        near_count[stretch] = kept;
-      } else { // the candidates only
-        const std::uint32_t end = base + near_count[stretch];
-        for (std::uint32_t c = base; c < end; ++c) test(near_entry[c], near_slot[c]);
-      }
-      // second pass: the touching pairs' forces, two at a time (one per lane), added to the
-      // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
-      for (std::size_t t = 0; t < count; t += 2) {
-        const TouchingEntry& c0 = found[t];
-        const bool two = t + 1 < count;
-        const TouchingEntry& c1 = found[two ? t + 1 : t];
-        // the entries' particles, from the list (the stretch's entries are in the L1 cache)
-        const auto i0 = static_cast<std::uint32_t>(r0 + row_in_stretch[c0.entry]);
-        const auto i1 = static_cast<std::uint32_t>(r0 + row_in_stretch[c1.entry]);
-        const std::uint32_t j0 = neighbour[c0.entry], j1 = neighbour[c1.entry];
-        const Lanes ri{radius[i0], radius[i1]}, rj{radius[j0], radius[j1]};
-        const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
-        const ContactLanes g = pair_geometry(
-            dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{mass[i0], mass[i1]},
-            Lanes{mass[j0], mass[j1]}, Lanes{velocity[i0].x, velocity[i1].x},
-            Lanes{velocity[i0].y, velocity[i1].y}, Lanes{velocity[j0].x, velocity[j1].x},
-            Lanes{velocity[j0].y, velocity[j1].y}, Lanes{spin[i0], spin[i1]},
-            Lanes{spin[j0], spin[j1]}, N::uses_r_eff || T::uses_r_eff);
-        Lanes spring{history[c0.entry], history[c1.entry]};
-        const ForceLanes f = one_material
-                                 ? contact_force<N, T>(uniform, g, spring, dt)
-                                 : contact_force<N, T>(PairLanes(pairs(material[i0], material[j0]),
-                                                                 pairs(material[i1], material[j1])),
-                                                       g, spring, dt);
-        const auto add = [&](const TouchingEntry& c, std::uint32_t i, std::uint32_t j, int lane) {
-          const Vec2 force{f.force_x[lane], f.force_y[lane]};
-          history[c.entry] = spring[lane];
-          p.force[i] += force;
-          p.torque[i] += f.torque_i[lane];
-          if (c.slot != no_slot) [[unlikely]] {
-            slots[c.slot].force = force;
-            slots[c.slot].torque_i = f.torque_i[lane];
-            slots[c.slot].torque_j = f.torque_j[lane];
-          } else {
-            p.force[j] -= force;
-            p.torque[j] += f.torque_j[lane];
-          }
-        };
-        add(c0, i0, j0, 0);
-        if (two) add(c1, i1, j1, 1);
-        const Lanes ratio = g.overlap / smaller(ri, rj);
-        worst = std::max(worst, std::max(ratio[0], ratio[1]));
-      }
-      // every row of the stretch is done: its particles' forces are complete, but for the late
-      for (std::ptrdiff_t a = r0; a < r1;) { // runs of rows between late ones
-        const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
-        if (z > a) {
-          const StepSeam s = done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
-          finite = finite && s.finite;
-          farthest2 = std::max(farthest2, s.displacement2);
-        }
-        if (z < r1) ++next_late;
-        a = z + 1;
-      }
-    }
-    // the block's time, smoothed over steps (a quarter of the newest): it counts what a count
-    // of entries and contacts missed, the correction and prediction of its particles and the
-    // memory it waits on (2 threads at 1e5: the two threads' force stages within 1% of each
-    // other instead of 4 to 17%; docs/performance.md)
-    const auto ns = static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                                   std::chrono::steady_clock::now() - block_start)
-                                                   .count());
-    std::uint64_t& w = block_work[static_cast<std::size_t>(b)];
-    w = w == 0 ? ns + 1 : (3 * w + ns) / 4 + 1;
-  }
-  return {worst, StepSeam{finite, farthest2}};
-}
-
-template <class N, class T>
-double wall_stage(const Particles& p, NeighbourList& list, const Segments& walls,
-                  const PairTable& pairs, std::vector<PairForce>& out, double dt, int threads) {
-  const auto late = static_cast<std::ptrdiff_t>(list.late.size());
-  double worst = 0.0;
-#pragma omp parallel num_threads(threads) reduction(max : worst)
   {
-    std::vector<WallHit> hits;
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t q = 0; q < late; ++q) { // particles with wall contacts are late
-      const std::uint32_t i = list.late[q];
-      const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
-      if (w0 == w1) continue;
-      const Vec2 ri = p.position[i];
-      const double Ri = p.radius[i];
-      hits.clear();
-      for (std::uint32_t e = w0; e < w1; ++e)
-        hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
-      for (std::uint32_t e = w0; e < w1; ++e) {
-        const WallHit& h = hits[e - w0];
-        if (!h.touching ||
-            (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
-          out[e] = {};
-          list.wall_history[e] = 0.0;
-          continue;
+#pragma omp for schedule(dynamic, 1) nowait
+    for (std::ptrdiff_t taken = 0; taken < blocks; ++taken) {
+      const std::ptrdiff_t b = order[static_cast<std::size_t>(taken)];
+      const auto block_start = std::chrono::steady_clock::now();
+      // per thread, kept from step to step: it grows only when a stretch has more entries than
+      // any before it, so steps after the first few allocate nothing
+      thread_local std::vector<TouchingEntry> touching;
+      const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
+      if (!forces_started) // else the last stage's `done` started them
+        for (std::ptrdiff_t k = first; k < last; ++k)
+          start_forces(p, k, gravity, p.force.data(), p.torque.data());
+      std::uint32_t slot = list.block_first_slot[b];
+      // the block's late particles, walked alongside the rows (no per-row lookup)
+      auto next_late = std::lower_bound(list.late.begin(), list.late.end(), first);
+      // the arrays by plain pointers: stores through one cannot move another (no reloads)
+      const Vec2* position = p.position.data();
+      const double* radius = p.radius.data();
+      const std::uint32_t* offset = list.row_offset.data();
+      const std::uint32_t* neighbour = list.neighbour.data();
+      const ImageShift* images = list.image.data();
+      double* history = list.history.data();
+      PairForce* slots = deferred.data();
+      const std::uint8_t* row_in_stretch = list.entry_row.data();
+      const double* mass = p.mass.data();
+      const Vec2* velocity = p.velocity.data();
+      const double* spin = p.angular_velocity.data();
+      const std::uint16_t* material = p.material.data();
+      // a deferred entry that does not touch leaves a zero in its slot
+      std::fill(slots + slot, slots + list.block_first_slot[b + 1], PairForce{});
+      for (std::ptrdiff_t r0 = first; r0 < last; r0 += stretch_rows) {
+        const std::ptrdiff_t r1 = std::min(last, r0 + stretch_rows);
+        if (touching.size() < offset[r1] - offset[r0]) touching.resize(offset[r1] - offset[r0]);
+        TouchingEntry* found = touching.data();
+        // first pass: the touching entries; the others lose their history (masks, no branches)
+        std::size_t count = 0;
+        // entry e's geometry; it is written down if it touches (its deferred slot is `to`)
+        const auto test = [&](std::uint32_t e, std::uint32_t to) {
+          const auto i = static_cast<std::uint32_t>(r0 + row_in_stretch[e]);
+          const std::uint32_t j = neighbour[e];
+          Vec2 rj = position[j];
+          const ImageShift image = images[e];
+          if (image.sx != 0 || image.sy != 0) [[unlikely]] // across a periodic boundary
+            rj += Vec2{image.sx * box.x, image.sy * box.y};
+          const Vec2 d = position[i] - rj;
+          const double dist2 = norm2(d);
+          const double reach = radius[i] + radius[j];
+          // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
+          // that it reaches the forces and the finite check (as with the one-pass stage)
+          const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
+          found[count] = {d, e, to};
+          count += touches;
+          const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
+          history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
+          return Gap{dist2, reach, i, j};
+        };
+        const std::uint32_t base = offset[r0]; // the stretch's candidates are kept from here on
+        const std::size_t stretch = static_cast<std::size_t>(b) * stretches_per_block +
+                                    static_cast<std::size_t>((r0 - first) / stretch_rows);
+        if (refresh) { // every entry, and the candidates written down
+          std::uint32_t kept = 0;
+          for (std::uint32_t e = offset[r0]; e < offset[r1]; ++e) {
+            const auto later = static_cast<std::uint32_t>(neighbour[e] >= last); // a later block
+            const std::uint32_t later_mask = 0u - later;
+            const std::uint32_t to = (slot & later_mask) | ~later_mask;
+            const Gap g = test(e, to);
+            const double cut = g.reach + near_skin;
+            near_entry[base + kept] = e;
+            near_slot[base + kept] = to;
+            const bool pinned = (kind[g.i] != Kind::free) | (kind[g.j] != Kind::free);
+            kept += !(g.dist2 >= cut * cut) | pinned;
+            slot += later;
+          }
+          near_count[stretch] = kept;
+        } else { // the candidates only
+          const std::uint32_t end = base + near_count[stretch];
+          for (std::uint32_t c = base; c < end; ++c) test(near_entry[c], near_slot[c]);
         }
-        const Segment& s = walls[list.wall_segment[e]];
-        const Vec2 d = ri - h.point;
-        const ContactGeometry g = wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i],
-                                                p.angular_velocity[i], s.velocity_at(h.point));
-        out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
-        worst = std::max(worst, g.overlap / Ri);
+        // second pass: the touching pairs' forces, two at a time (one per lane), added to the
+        // particles in entry order (c0 in lane 0, c1 in lane 1); an odd last contact fills both
+        for (std::size_t t = 0; t < count; t += 2) {
+          const TouchingEntry& c0 = found[t];
+          const bool two = t + 1 < count;
+          const TouchingEntry& c1 = found[two ? t + 1 : t];
+          // the entries' particles, from the list (the stretch's entries are in the L1 cache)
+          const auto i0 = static_cast<std::uint32_t>(r0 + row_in_stretch[c0.entry]);
+          const auto i1 = static_cast<std::uint32_t>(r0 + row_in_stretch[c1.entry]);
+          const std::uint32_t j0 = neighbour[c0.entry], j1 = neighbour[c1.entry];
+          const Lanes ri{radius[i0], radius[i1]}, rj{radius[j0], radius[j1]};
+          const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
+          const ContactLanes g = pair_geometry(
+              dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{mass[i0], mass[i1]},
+              Lanes{mass[j0], mass[j1]}, Lanes{velocity[i0].x, velocity[i1].x},
+              Lanes{velocity[i0].y, velocity[i1].y}, Lanes{velocity[j0].x, velocity[j1].x},
+              Lanes{velocity[j0].y, velocity[j1].y}, Lanes{spin[i0], spin[i1]},
+              Lanes{spin[j0], spin[j1]}, N::uses_r_eff || T::uses_r_eff);
+          Lanes spring{history[c0.entry], history[c1.entry]};
+          const ForceLanes f =
+              one_material ? contact_force<N, T>(uniform, g, spring, dt)
+                           : contact_force<N, T>(PairLanes(pairs(material[i0], material[j0]),
+                                                           pairs(material[i1], material[j1])),
+                                                 g, spring, dt);
+          const auto add = [&](const TouchingEntry& c, std::uint32_t i, std::uint32_t j, int lane) {
+            const Vec2 force{f.force_x[lane], f.force_y[lane]};
+            history[c.entry] = spring[lane];
+            p.force[i] += force;
+            p.torque[i] += f.torque_i[lane];
+            if (c.slot != no_slot) [[unlikely]] {
+              slots[c.slot].force = force;
+              slots[c.slot].torque_i = f.torque_i[lane];
+              slots[c.slot].torque_j = f.torque_j[lane];
+            } else {
+              p.force[j] -= force;
+              p.torque[j] += f.torque_j[lane];
+            }
+          };
+          add(c0, i0, j0, 0);
+          if (two) add(c1, i1, j1, 1);
+          const Lanes ratio = g.overlap / smaller(ri, rj);
+          worst = std::max(worst, std::max(ratio[0], ratio[1]));
+        }
+        // every row of the stretch is done: its particles' forces are complete, but for the late
+        for (std::ptrdiff_t a = r0; a < r1;) { // runs of rows between late ones
+          const std::ptrdiff_t z =
+              next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
+          if (z > a) {
+            const StepSeam s = done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
+            finite = finite && s.finite;
+            farthest2 = std::max(farthest2, s.displacement2);
+          }
+          if (z < r1) ++next_late;
+          a = z + 1;
+        }
       }
+      // the block's time, smoothed over steps (a quarter of the newest): it counts what a count
+      // of entries and contacts missed, the correction and prediction of its particles and the
+      // memory it waits on
+      const auto ns =
+          static_cast<std::uint64_t>(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                         std::chrono::steady_clock::now() - block_start)
+                                         .count());
+      std::uint64_t& w = block_work[static_cast<std::size_t>(b)];
+      w = w == 0 ? ns + 1 : (3 * w + ns) / 4 + 1;
+    }
+    // the wall contacts need no pair force: a thread takes them when no block is left to take,
+    // while the others finish theirs
+    thread_local std::vector<WallHit> hits; // kept from step to step: no allocation in a step
+#pragma omp for schedule(dynamic, late_chunk)
+    for (std::ptrdiff_t q = 0; q < late; ++q)
+      worst = std::max(worst, wall_contacts<N, T>(p, list, walls, pairs, wall_force, dt,
+                                                  list.late[static_cast<std::size_t>(q)], hits));
+      // every block and wall contact is done (the loop's barrier): the late particles
+#pragma omp for schedule(dynamic, late_chunk) nowait
+    for (std::ptrdiff_t q = 0; q < late; ++q) {
+      const StepSeam s =
+          finish_late(p, list, deferred, wall_force, done, list.late[static_cast<std::size_t>(q)]);
+      finite = finite && s.finite;
+      farthest2 = std::max(farthest2, s.displacement2);
     }
   }
-  return worst;
-}
-
-// Every late particle adds, in a fixed order, its deferred pair forces (in entry order), then its
-// wall contacts, and is done; then the walls sum their reactions, particle by particle.
-template <class Done>
-StepSeam finish_forces(Particles& p, const NeighbourList& list,
-                       const std::vector<PairForce>& deferred, const std::vector<PairForce>& wf,
-                       Segments& walls, const Done& done, int threads) {
-  const auto late = static_cast<std::ptrdiff_t>(list.late.size());
-  bool finite = true;
-  double farthest2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite) \
-    reduction(max : farthest2)
-  for (std::ptrdiff_t q = 0; q < late; ++q) {
-    const std::uint32_t k = list.late[q];
-    for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
-      const PairForce& f = deferred[list.deferred_slot[c]];
-      p.force[k] -= f.force;
-      p.torque[k] += f.torque_j;
-    }
-    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
-      p.force[k] += wf[e].force;
-      p.torque[k] += wf[e].torque_i;
-    }
-    const StepSeam s = done.range(k, k + 1);
-    finite = finite && s.finite;
-    farthest2 = std::max(farthest2, s.displacement2);
-  }
-  for (Segment& s : walls) s.force = {};
-  for (const std::uint32_t k : list.late) // particles with wall contacts are late, in order
-    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
-      walls[list.wall_segment[e]].force -= wf[e].force;
-  return {finite, farthest2};
+  sum_wall_reactions(list, wall_force, walls);
+  return {worst, StepSeam{finite, farthest2}};
 }
 
 } // namespace
@@ -463,15 +476,11 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
   forces_started_ = false;
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
     const auto stages = [&](const auto& done) {
-      const auto [worst_pair, pair_seam] =
-          pair_stage<N, T>(p, list_, near_, refresh, pairs_, world_.domain, world_.gravity,
-                           deferred_force_, dt, done, block_work_, started, threads_);
-      max_overlap_seen_ = std::max(
-          worst_pair, wall_stage<N, T>(p, list_, world_.walls, pairs_, wall_force_, dt, threads_));
-      const StepSeam late =
-          finish_forces(p, list_, deferred_force_, wall_force_, world_.walls, done, threads_);
-      return StepSeam{pair_seam.finite && late.finite,
-                      std::max(pair_seam.displacement2, late.displacement2)};
+      const auto [worst, seam] = force_stage<N, T>(
+          p, list_, near_, refresh, pairs_, world_.domain, world_.gravity, world_.walls,
+          deferred_force_, wall_force_, dt, done, block_work_, block_order_, started, threads_);
+      max_overlap_seen_ = worst;
+      return seam;
     };
     switch (end) {
     case ForceStageEnd::verlet_correct:

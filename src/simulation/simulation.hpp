@@ -156,9 +156,10 @@ private:
   double near_base_ = 0.0;                ///< drift_bound_ when near_ was chosen
   bool near_stale_ = true; ///< near_ must be chosen again (new list, renumbered, a grain held)
   std::vector<PairForce> wall_force_;
-  /// each force block's time in the last force stages (ns, smoothed), for handing out blocks to
-  /// threads
+  /// each force block's time in the last force stages (ns, smoothed), and the order in which the
+  /// threads take the blocks (force_block_order)
   std::vector<std::uint64_t> block_work_;
+  std::vector<std::ptrdiff_t> block_order_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;

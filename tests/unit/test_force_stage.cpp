@@ -123,44 +123,35 @@ TEST(ForceStage, AddsEveryTouchingPairOnceToEachPartner) {
   }
 }
 
-// The force blocks' shares of the threads: every block in exactly one share, in order, and about
-// an equal part of the work in each (within one block's work of the even part).
-void expect_fair_shares(const std::vector<std::uint64_t>& work, int threads) {
-  const std::vector<std::ptrdiff_t> start = force_block_shares(work, threads);
-  ASSERT_EQ(start.size(), static_cast<std::size_t>(threads) + 1);
-  EXPECT_EQ(start.front(), 0);
-  EXPECT_EQ(start.back(), static_cast<std::ptrdiff_t>(work.size()));
-  std::uint64_t total = 0, largest = 0;
-  for (const std::uint64_t w : work) total += w, largest = std::max(largest, w);
-  for (std::size_t t = 0; t < static_cast<std::size_t>(threads); ++t) {
-    ASSERT_LE(start[t], start[t + 1]) << "share " << t;
-    std::uint64_t share = 0;
-    for (auto b = start[t]; b < start[t + 1]; ++b) share += work[static_cast<std::size_t>(b)];
-    const double even = static_cast<double>(total) / threads;
-    EXPECT_LE(std::abs(static_cast<double>(share) - even), static_cast<double>(largest))
-        << "share " << t;
-  }
-}
-
-TEST(ForceBlockShares, EqualCountsWithoutWorkAndEvenWorkWithIt) {
-  // nothing measured yet: equal counts of blocks
-  EXPECT_EQ(force_block_shares(std::vector<std::uint64_t>(16, 0), 2),
-            (std::vector<std::ptrdiff_t>{0, 8, 16}));
-  EXPECT_EQ(force_block_shares(std::vector<std::uint64_t>(4, 0), 3),
-            (std::vector<std::ptrdiff_t>{0, 1, 2, 4}));
-  // a packing denser at the bottom: the first blocks hold twice the work of the last ones, so
-  // the first thread takes 6 of 16 blocks, not 8
-  std::vector<std::uint64_t> dense_below(16, 5);
-  std::fill(dense_below.begin(), dense_below.begin() + 8, 10);
-  EXPECT_EQ(force_block_shares(dense_below, 2), (std::vector<std::ptrdiff_t>{0, 6, 16}));
-  expect_fair_shares(dense_below, 2);
-  // more threads than blocks: some shares are empty, every block is in one
-  expect_fair_shares({7, 3}, 4);
+// The order in which the threads take the force blocks: every block once, by decreasing
+// measured time, equal times by index (so that nothing measured yet means the list's order).
+TEST(ForceBlockOrder, LongestFirstEveryBlockOnce) {
+  std::vector<std::ptrdiff_t> order;
+  force_block_order(std::vector<std::uint64_t>(4, 0), order);
+  EXPECT_EQ(order, (std::vector<std::ptrdiff_t>{0, 1, 2, 3}));
+  // a packing denser at the bottom: its first blocks take longer
+  force_block_order({10, 12, 5, 10, 7}, order);
+  EXPECT_EQ(order, (std::vector<std::ptrdiff_t>{1, 0, 3, 4, 2}));
+  // the buffer is resized to the block count, whatever it held
+  force_block_order({3}, order);
+  EXPECT_EQ(order, (std::vector<std::ptrdiff_t>{0}));
   RandomStream rng(11, 2);
   for (int trial = 0; trial < 50; ++trial) {
     std::vector<std::uint64_t> work(16);
-    for (auto& w : work) w = static_cast<std::uint64_t>(1000.0 * rng.uniform());
-    expect_fair_shares(work, 1 + trial % 5);
+    for (auto& w : work) w = static_cast<std::uint64_t>(100.0 * rng.uniform());
+    force_block_order(work, order);
+    std::vector<std::ptrdiff_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t b = 0; b < sorted.size(); ++b)
+      ASSERT_EQ(sorted[b], static_cast<std::ptrdiff_t>(b)) << "every block once";
+    for (std::size_t k = 1; k < order.size(); ++k) {
+      const std::uint64_t before = work[static_cast<std::size_t>(order[k - 1])],
+                          after = work[static_cast<std::size_t>(order[k])];
+      ASSERT_GE(before, after);
+      if (before == after) {
+        ASSERT_LT(order[k - 1], order[k]);
+      }
+    }
   }
 }
 
