@@ -132,7 +132,8 @@ bool neighbour_cell(int cells, bool periodic, int& c, std::int8_t& shift) {
 }
 
 // Rows [first, last) in blocks of contiguous particles, one block per thread, joined in order.
-struct RowBlock {
+// A cache line each: threads push onto neighbouring blocks at the same time.
+struct alignas(64) RowBlock {
   std::vector<std::uint32_t> neighbour;
   std::vector<ImageShift> image;
   std::vector<std::uint32_t> count; // entries of each row
@@ -149,11 +150,14 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   std::vector<std::uint32_t> old_neighbour = std::move(list.neighbour);
   std::vector<double> old_history = std::move(list.history);
 
-  list.row_offset.assign(n + 1, 0);
-  const int blocks = std::max(1, std::min<int>(threads, static_cast<int>(n / 256) + 1));
+  list.row_offset.resize(n + 1);
+  list.row_offset[0] = 0;
+  // four blocks per thread, taken one at a time (rows at the bottom of a packing have more
+  // neighbours than those at the top), joined in order: the list does not depend on the count
+  const int blocks =
+      threads == 1 ? 1 : std::max(1, std::min<int>(4 * threads, static_cast<int>(n / 256) + 1));
   std::vector<RowBlock> block(static_cast<std::size_t>(blocks));
-  // one block per iteration: every block is built however many threads OpenMP grants
-#pragma omp parallel for schedule(static, 1) num_threads(blocks)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int bi = 0; bi < blocks; ++bi) {
     const auto b = static_cast<std::size_t>(bi);
     const std::size_t first = n * b / static_cast<std::size_t>(blocks),
@@ -225,21 +229,31 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
       out.count.push_back(static_cast<std::uint32_t>(count));
     }
   }
-  // join the blocks in order
-  list.neighbour.clear();
-  list.image.clear();
-  std::size_t i = 0;
-  for (const RowBlock& b : block) {
-    for (const std::uint32_t c : b.count) list.row_offset[i + 1] = list.row_offset[i] + c, ++i;
-    list.neighbour.insert(list.neighbour.end(), b.neighbour.begin(), b.neighbour.end());
-    list.image.insert(list.image.end(), b.image.begin(), b.image.end());
+  // join the blocks in order, each into its place
+  std::vector<std::size_t> block_entry(block.size() + 1, 0);
+  for (std::size_t b = 0; b < block.size(); ++b)
+    block_entry[b + 1] = block_entry[b] + block[b].neighbour.size();
+  list.neighbour.resize(block_entry.back());
+  list.image.resize(block_entry.back());
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int bi = 0; bi < blocks; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    const RowBlock& from = block[b];
+    std::copy(from.neighbour.begin(), from.neighbour.end(),
+              list.neighbour.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
+    std::copy(from.image.begin(), from.image.end(),
+              list.image.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
+    std::size_t i = n * b / static_cast<std::size_t>(blocks);
+    auto offset = static_cast<std::uint32_t>(block_entry[b]);
+    for (const std::uint32_t c : from.count) list.row_offset[++i] = offset += c;
   }
 
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, threads);
 }
 
-void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin) {
+void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin,
+                 int threads) {
   const std::size_t n = p.size();
   std::vector<std::uint32_t> old_offset = std::move(list.wall_offset);
   std::vector<std::uint32_t> old_segment = std::move(list.wall_segment);
@@ -247,17 +261,37 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
 
   list.wall_offset.assign(n + 1, 0);
   list.wall_segment.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.is_free(i)) {
-      const double reach = p.radius[i] + skin;
-      for (std::size_t s = 0; s < walls.size(); ++s)
-        if (norm2(p.position[i] - closest_point(walls[s], p.position[i])) < reach * reach)
-          list.wall_segment.push_back(static_cast<std::uint32_t>(s));
+  if (walls.empty()) {
+    list.wall_history.clear();
+    return;
+  }
+  // rows in blocks of contiguous particles, side by side, joined in order (a few segments each)
+  const int blocks = std::max(1, std::min<int>(threads, static_cast<int>(n / 4096) + 1));
+  std::vector<std::vector<std::uint32_t>> segment(static_cast<std::size_t>(blocks));
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int bi = 0; bi < blocks; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    const std::size_t first = n * b / static_cast<std::size_t>(blocks),
+                      last = n * (b + 1) / static_cast<std::size_t>(blocks);
+    for (std::size_t i = first; i < last; ++i) {
+      if (p.is_free(i)) {
+        const double reach = p.radius[i] + skin;
+        for (std::size_t s = 0; s < walls.size(); ++s)
+          if (norm2(p.position[i] - closest_point(walls[s], p.position[i])) < reach * reach)
+            segment[b].push_back(static_cast<std::uint32_t>(s));
+      }
+      list.wall_offset[i + 1] = static_cast<std::uint32_t>(segment[b].size()); // within the block
     }
-    list.wall_offset[i + 1] = static_cast<std::uint32_t>(list.wall_segment.size());
+  }
+  std::uint32_t base = 0;
+  for (std::size_t b = 0; b < segment.size(); ++b) {
+    const std::size_t first = n * b / segment.size(), last = n * (b + 1) / segment.size();
+    for (std::size_t i = first; i < last; ++i) list.wall_offset[i + 1] += base;
+    base += static_cast<std::uint32_t>(segment[b].size());
+    list.wall_segment.insert(list.wall_segment.end(), segment[b].begin(), segment[b].end());
   }
   carry_history({old_offset, old_segment, old_history}, list.wall_offset, list.wall_segment,
-                list.wall_history, 1);
+                list.wall_history, threads);
 }
 
 } // namespace
@@ -271,7 +305,7 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
   }
   list.skin = skin;
   build_pairs(list, p, domain, skin, threads);
-  build_walls(list, p, walls, skin);
+  build_walls(list, p, walls, skin, threads);
   index_force_blocks(list, threads);
   list.reference.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(threads)

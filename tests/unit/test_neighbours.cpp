@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/random.hpp"
+#include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "simulation/simulation.hpp"
 
@@ -102,6 +103,49 @@ INSTANTIATE_TEST_SUITE_P(
                       Config{"periodic_xy", 600, 0.005, 0.03, 1.0, true, true},
                       Config{"periodic_dense", 900, 0.015, 0.025, 0.8, true, true}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Large enough that the cell sort and the wall rows are built by several threads: the same grid
+// and list, entry for entry, whatever the thread count (a box with a floor and a slanted wall,
+// periodic in x, some particles outside the box to spread the cells unevenly).
+TEST(NeighbourList, ManyThreadsBuildTheSameGridAndList) {
+  Particles p;
+  RandomStream rng(7, 3);
+  for (std::size_t k = 0; k < 30000; ++k) {
+    ParticleSpec s;
+    const double y = k % 10 == 0 ? rng.uniform(0.0, 0.1) : rng.uniform(0.0, 1.0); // dense below
+    s.position = {rng.uniform(0.0, 2.0), y};
+    s.radius = rng.uniform(0.002, 0.006);
+    s.mass = s.inertia = 1.0;
+    s.kind = k % 23 == 0 ? Kind::fixed : Kind::free;
+    p.add(s);
+  }
+  const Domain d{{0.0, 0.0}, {2.0, 1.0}, true, false};
+  const Segments walls = {Segment{.a = {0.0, 0.003}, .b = {2.0, 0.003}},
+                          Segment{.a = {0.5, 0.0}, .b = {0.9, 0.5}}};
+  CellGrid one;
+  one.build(p.position, d, 0.013, 1);
+  NeighbourList l;
+  build_neighbour_list(l, p, walls, d, 0.001, 1);
+  ASSERT_GT(l.wall_segment.size(), 100U) << "the walls touch some grains";
+  for (std::size_t c = 0; c + 1 < one.cell_start.size(); ++c)
+    for (std::uint32_t k = one.cell_start[c]; k + 1 < one.cell_start[c + 1]; ++k)
+      ASSERT_LT(one.items[k], one.items[k + 1]) << "ascending within cell " << c;
+  for (const int threads : {2, 3, 5}) {
+    CellGrid many;
+    many.build(p.position, d, 0.013, threads);
+    EXPECT_EQ(many.cell_start, one.cell_start) << threads << " threads";
+    EXPECT_EQ(many.items, one.items) << threads << " threads";
+    EXPECT_EQ(many.cell_of, one.cell_of) << threads << " threads";
+    NeighbourList m;
+    build_neighbour_list(m, p, walls, d, 0.001, threads);
+    EXPECT_EQ(m.row_offset, l.row_offset) << threads << " threads";
+    EXPECT_EQ(m.neighbour, l.neighbour) << threads << " threads";
+    EXPECT_EQ(m.image, l.image) << threads << " threads";
+    EXPECT_EQ(m.wall_offset, l.wall_offset) << threads << " threads";
+    EXPECT_EQ(m.wall_segment, l.wall_segment) << threads << " threads";
+    EXPECT_EQ(m.late, l.late) << threads << " threads";
+  }
+}
 
 TEST(NeighbourList, RebuildsOnlyAfterHalfTheSkin) {
   Particles p;
