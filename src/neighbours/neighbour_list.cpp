@@ -345,12 +345,16 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
                       ImageShift{static_cast<std::int8_t>(-s.sx), static_cast<std::int8_t>(-s.sy)},
                       list.history[e]};
     }
-  for (std::size_t k = 0; k < n; ++k) // short rows: insertion sort by the second particle
+  const auto rows = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < rows; ++k) // short rows: insertion sort by the second particle
     for (std::uint32_t m = offset[k] + 1; m < offset[k + 1]; ++m)
       for (std::uint32_t q = m; q > offset[k] && entries[q - 1].j > entries[q].j; --q)
         std::swap(entries[q - 1], entries[q]);
   list.row_offset = std::move(offset);
-  for (std::size_t e = 0; e < entries.size(); ++e) {
+  const auto count = static_cast<std::ptrdiff_t>(entries.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t e = 0; e < count; ++e) {
     list.neighbour[e] = entries[e].j;
     list.image[e] = entries[e].image;
     list.history[e] = entries[e].history;
@@ -373,7 +377,8 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
   list.wall_history = std::move(wall_history);
   if (list.reference.size() == n) {
     std::vector<Vec2> reference(n);
-    for (std::size_t k = 0; k < n; ++k) reference[k] = list.reference[order[k]];
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::ptrdiff_t k = 0; k < rows; ++k) reference[k] = list.reference[order[k]];
     list.reference = std::move(reference);
   }
   index_force_blocks(list, threads);

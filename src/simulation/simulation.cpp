@@ -179,7 +179,7 @@ void Simulation::sort_particles() {
   new_of_old_.resize(order.size());
   for (std::size_t k = 0; k < order.size(); ++k)
     new_of_old_[order[k]] = static_cast<std::uint32_t>(k);
-  p.permute(order);
+  p.permute(order, threads_);
   renumber_neighbour_list(list_, order, new_of_old_, threads_);
   for (Driver& d : world_.drivers)
     for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];

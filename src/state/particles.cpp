@@ -95,24 +95,24 @@ void Particles::set_held(std::size_t i, bool held) {
 }
 
 namespace {
-template <class T> void permute_field(std::vector<T>& v, const std::vector<std::uint32_t>& order) {
+template <class T>
+void permute_field(std::vector<T>& v, const std::vector<std::uint32_t>& order, int threads) {
   if (v.size() != order.size()) return; // an unused field (the other integrator's history)
   std::vector<T> old = std::move(v);
   v.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) v[k] = old[order[k]];
+  const auto n = static_cast<std::ptrdiff_t>(order.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < n; ++k) v[k] = old[order[k]];
 }
 } // namespace
 
-void Particles::permute(const std::vector<std::uint32_t>& order) {
-  permute_field(position, order), permute_field(velocity, order), permute_field(force, order);
-  permute_field(angle, order), permute_field(angular_velocity, order);
-  permute_field(torque, order), permute_field(radius, order), permute_field(mass, order);
-  permute_field(inertia, order), permute_field(inv_mass, order);
-  permute_field(inv_inertia, order), permute_field(material, order), permute_field(kind, order);
-  permute_field(id, order), permute_field(force_previous, order);
-  permute_field(torque_previous, order);
-  permute_field(gear.r2, order), permute_field(gear.r3, order), permute_field(gear.r4, order);
-  permute_field(gear.phi2, order), permute_field(gear.phi3, order), permute_field(gear.phi4, order);
+void Particles::permute(const std::vector<std::uint32_t>& order, int threads) {
+  const auto field = [&](auto& v) { permute_field(v, order, threads); };
+  field(position), field(velocity), field(force), field(angle), field(angular_velocity);
+  field(torque), field(radius), field(mass), field(inertia), field(inv_mass), field(inv_inertia);
+  field(material), field(kind), field(id), field(force_previous), field(torque_previous);
+  field(gear.r2), field(gear.r3), field(gear.r4), field(gear.phi2), field(gear.phi3);
+  field(gear.phi4);
 }
 
 } // namespace talus

@@ -81,7 +81,8 @@ struct Particles {
   void reserve(std::size_t n);
   /// Renumbers the particles: the new particle k is the old particle order[k] (every field,
   /// the integrators' history included). `order` must be a permutation of 0 .. size()-1.
-  void permute(const std::vector<std::uint32_t>& order);
+  /// `threads` share the copying (the result is the same for any count).
+  void permute(const std::vector<std::uint32_t>& order, int threads = 1);
 };
 
 } // namespace talus
