@@ -39,7 +39,7 @@ grep -q "largest / smallest median: " "$dir/linear.txt" || exit 1
 "$talus" bench threads --n 100 --threads 1,2 --steps 20 --rounds 2 --cache "$dir/cache" \
   --results "$dir/results" > "$dir/threads.txt" || { cat "$dir/threads.txt"; exit 1; }
 cat "$dir/threads.txt"
-grep -q "^| 1 | .* | 1.00 |$" "$dir/threads.txt" || { echo "no row for 1 thread"; exit 1; }
+grep -q "^| 1 | .* | 1.00 | 1.00 |$" "$dir/threads.txt" || { echo "no row for 1 thread"; exit 1; }
 grep -q "^| 2 | " "$dir/threads.txt" || { echo "no row for 2 threads"; exit 1; }
 grep -q "bit-identical for every thread count: yes" "$dir/threads.txt" || exit 1
 [ "$(grep -c ',dense2d_threads,' "$csv")" -eq 2 ] || { echo "expected two threads rows"; exit 1; }
