@@ -157,31 +157,45 @@ template <class N, class T>
   return worst;
 }
 
-// Late particle k adds, in a fixed order, its deferred pair forces (in entry order), then its
-// wall contacts, and is done.
+// The late particles late[q0, q1): each adds, in a fixed order, its deferred pair forces (in
+// entry order), then its wall contacts; then they are done, by runs of consecutive particles (a
+// layer of a packing at a block's start is late, so runs are long: `done` takes two at a time
+// there, where it took them one by one).
 template <class Done>
 [[gnu::noinline]] StepSeam
 finish_late(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
-            const std::vector<PairForce>& wf, const Done& done, std::uint32_t k) {
-  for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
-    const PairForce& f = deferred[list.deferred_slot[c]];
-    p.force[k] -= f.force;
-    p.torque[k] += f.torque_j;
+            const std::vector<PairForce>& wf, const Done& done, std::size_t q0, std::size_t q1) {
+  for (std::size_t q = q0; q < q1; ++q) {
+    const std::uint32_t k = list.late[q];
+    for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
+      const PairForce& f = deferred[list.deferred_slot[c]];
+      p.force[k] -= f.force;
+      p.torque[k] += f.torque_j;
+    }
+    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
+      p.force[k] += wf[e].force;
+      p.torque[k] += wf[e].torque_i;
+    }
   }
-  for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
-    p.force[k] += wf[e].force;
-    p.torque[k] += wf[e].torque_i;
+  StepSeam seam{true, 0.0};
+  for (std::size_t q = q0; q < q1;) {
+    std::size_t r = q + 1;
+    while (r < q1 && list.late[r] == list.late[r - 1] + 1) ++r;
+    const StepSeam s = done.range(list.late[q], list.late[r - 1] + std::size_t{1});
+    seam.finite = seam.finite && s.finite;
+    seam.displacement2 = std::max(seam.displacement2, s.displacement2);
+    q = r;
   }
-  return done.range(k, k + 1);
+  return seam;
 }
 
-// The walls' reactions, particle by particle (particles with wall contacts are late, in order).
+// The walls' reactions, particle by particle: the wall rows in order (a particle's wall entries
+// follow those of the particles before it).
 void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>& wf,
                         Segments& walls) {
   for (Segment& s : walls) s.force = {};
-  for (const std::uint32_t k : list.late)
-    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e)
-      walls[list.wall_segment[e]].force -= wf[e].force;
+  for (std::size_t e = 0; e < list.wall_segment.size(); ++e)
+    walls[list.wall_segment[e]].force -= wf[e].force;
 }
 
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
@@ -394,11 +408,13 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
     for (std::ptrdiff_t q = 0; q < late; ++q)
       worst = std::max(worst, wall_contacts<N, T>(p, list, walls, pairs, wall_force, dt,
                                                   list.late[static_cast<std::size_t>(q)], hits));
-      // every block and wall contact is done (the loop's barrier): the late particles
-#pragma omp for schedule(dynamic, late_chunk) nowait
-    for (std::ptrdiff_t q = 0; q < late; ++q) {
-      const StepSeam s =
-          finish_late(p, list, deferred, wall_force, done, list.late[static_cast<std::size_t>(q)]);
+    // every block and wall contact is done (the loop's barrier): the late particles
+    const std::ptrdiff_t chunks = (late + late_chunk - 1) / late_chunk;
+#pragma omp for schedule(dynamic, 1) nowait
+    for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+      const auto q0 = static_cast<std::size_t>(c * late_chunk);
+      const StepSeam s = finish_late(p, list, deferred, wall_force, done, q0,
+                                     std::min(q0 + late_chunk, list.late.size()));
       finite = finite && s.finite;
       farthest2 = std::max(farthest2, s.displacement2);
     }
