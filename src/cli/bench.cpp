@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include <fmt/core.h>
 
@@ -24,6 +25,7 @@ namespace {
 struct BenchOptions {
   BenchSystem system;
   std::uint64_t steps = 2000;
+  int rounds = 1;
   bool lammps = false;
   std::string results = "bench/results";
   std::string lammps_inputs;
@@ -74,29 +76,65 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
   return seconds / (steps * atoms);
 }
 
+// Times `steps` steps of a simulation: seconds per particle-step.
+double time_steps(Simulation& sim, std::uint64_t steps) {
+  const auto start = std::chrono::steady_clock::now();
+  sim.run(steps);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds / (static_cast<double>(sim.world().particles.size()) * static_cast<double>(steps));
+}
+
 void run_bench(const BenchOptions& o) {
+  require(o.rounds >= 1, fmt::format("bench dense2d: --rounds {}; allowed: >= 1", o.rounds));
   const std::size_t ny = bench_base_side(o.system, "bench dense2d"), nx = ny * o.system.tiles;
   Simulation sim = bench_simulation(o.system, "bench dense2d");
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
+  // every round times the same steps from this state (as LAMMPS' runs start from its restart)
+  const SimulationState warm = o.rounds > 1 ? sim.state() : SimulationState{};
   const std::uint64_t builds_before = sim.neighbours().builds;
   const std::uint64_t choices_before = sim.candidate_choices();
   const std::uint64_t tests_before = sim.drift_tests();
-  const auto start = std::chrono::steady_clock::now();
-  sim.run(o.steps);
+  std::vector<double> talus_rounds{time_steps(sim, o.steps)};
   const std::uint64_t builds = sim.neighbours().builds - builds_before;
   const std::uint64_t choices = sim.candidate_choices() - choices_before;
   const std::uint64_t tests = sim.drift_tests() - tests_before;
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double per = seconds / (n * static_cast<double>(o.steps));
   const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
-  const double bytes = peak_rss_bytes() / n;
+  // with rounds, a copy of the state is held too: the peak is not the engine's alone
+  const double bytes = o.rounds > 1 ? 0.0 : peak_rss_bytes() / n;
   const double engine_bytes = static_cast<double>(sim.footprint_bytes()) / n;
+  const bool with_lammps = o.lammps && o.system.tiles == 1;
+  if (o.lammps && o.system.tiles > 1)
+    fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
+  // talus and LAMMPS in turns, round after round: a slow minute of the host falls on both
+  std::vector<double> lammps_rounds;
+  for (int r = 0; r < o.rounds; ++r) {
+    if (r > 0) {
+      Simulation again = Simulation::restore(warm, sim.config());
+      talus_rounds.push_back(time_steps(again, o.steps));
+    }
+    if (with_lammps) {
+      const double l = run_lammps(o, nx, ny);
+      if (l <= 0.0) break; // it said why
+      lammps_rounds.push_back(l);
+    }
+    if (o.rounds > 1) {
+      fmt::print("  round {}: talus {:.2f} ns per particle-step", r + 1, 1e9 * talus_rounds.back());
+      if (lammps_rounds.size() == static_cast<std::size_t>(r + 1))
+        fmt::print(", LAMMPS {:.2f}, LAMMPS / talus {:.2f}", 1e9 * lammps_rounds.back(),
+                   lammps_rounds.back() / talus_rounds.back());
+      fmt::print("\n");
+      std::fflush(stdout);
+    }
+  }
+  const double per = median(talus_rounds);
+  const double lammps = lammps_rounds.empty() ? 0.0 : median(lammps_rounds);
 
   fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s)\n", sim.world().particles.size(),
              nx, ny, o.steps, sim.threads());
-  fmt::print("  ns per particle-step:       {:.2f}\n", per * 1e9);
+  fmt::print("  ns per particle-step:       {:.2f}{}\n", per * 1e9,
+             o.rounds > 1 ? fmt::format(" (median of {} rounds)", talus_rounds.size()) : "");
   fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
   fmt::print("  list entries per particle:  {:.3f} (half list; {:.1f}% cross a force block)\n",
@@ -105,22 +143,23 @@ void run_bench(const BenchOptions& o) {
                  std::max<double>(1.0, static_cast<double>(sim.neighbours().pair_count())));
   fmt::print("  engine memory per particle: {:.0f} bytes (state, lists, history, buffers)\n",
              engine_bytes);
-  fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",
-             bytes);
+  if (bytes > 0.0)
+    fmt::print("  peak memory per particle:   {:.0f} bytes (the process' peak resident size)\n",
+               bytes);
+  else
+    fmt::print("  peak memory per particle:   not measured with --rounds (a copy of the state is "
+               "held for the rounds)\n");
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
   fmt::print("  contact candidates chosen:  {} times; drift tested against the build {} times\n",
              choices, tests);
   fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
              o.system.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
-  double lammps = 0.0;
-  if (o.lammps && o.system.tiles > 1) {
-    fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
-  } else if (o.lammps) {
-    lammps = run_lammps(o, nx, ny);
-    if (lammps > 0.0) {
-      fmt::print("  LAMMPS ns per particle-step: {:.2f}\n", lammps * 1e9);
-      fmt::print("  LAMMPS time / talus time:    {:.2f}\n", lammps / per);
-    }
+  if (lammps > 0.0) {
+    const bool all = lammps_rounds.size() == talus_rounds.size();
+    fmt::print("  LAMMPS ns per particle-step: {:.2f}{}\n", lammps * 1e9,
+               o.rounds > 1 ? fmt::format(" (median of {} rounds)", lammps_rounds.size()) : "");
+    fmt::print("  LAMMPS time / talus time:    {:.2f}{}\n", lammps / per,
+               o.rounds > 1 && all ? " (of the medians)" : "");
   }
   const std::string csv = append_result(o.results, {.n = sim.world().particles.size(),
                                                     .steps = o.steps,
@@ -187,6 +226,12 @@ void add_bench_command(CLI::App& app) {
                   "never; the settled packing is cached in the order it settled into)")
       ->capture_default_str();
   cmd->add_option("--steps", o->steps, "timed steps")->capture_default_str();
+  cmd->add_option("--rounds", o->rounds,
+                  "times the steps are timed from the same state, in turns with LAMMPS if "
+                  "--lammps: the figures are the medians (on a shared host a slow minute then "
+                  "falls on both)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("--threads", o->system.threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,
                 "also run LAMMPS (lmp) on the same system and print the ratio");

@@ -20,6 +20,14 @@ grep -q "300 disks (30 x 10)" "$dir/tiled.txt" || { echo "not 3 copies side by s
 csv=$(ls "$dir"/results/*.csv)
 head -1 "$csv" | grep -q "ns_per_particle_step.*engine_bytes_per_particle,skin_m$" || exit 1
 [ "$(wc -l < "$csv")" -eq 3 ] || { echo "expected a header and two rows"; cat "$csv"; exit 1; }
+# --rounds: the same steps timed again from the same state, the medians reported, one CSV row
+run --n 100 --steps 20 --rounds 2 > "$dir/rounds.txt" || { cat "$dir/rounds.txt"; exit 1; }
+cat "$dir/rounds.txt"
+[ "$(grep -c '^  round [12]: talus ' "$dir/rounds.txt")" -eq 2 ] || { echo "expected 2 rounds"; exit 1; }
+grep -q "ns per particle-step: .*(median of 2 rounds)" "$dir/rounds.txt" || exit 1
+[ "$(wc -l < "$csv")" -eq 4 ] || { echo "expected a header and three rows"; cat "$csv"; exit 1; }
+run --n 100 --rounds 0 2> "$dir/err.txt" && { echo "--rounds 0 was accepted"; exit 1; }
+grep -q "rounds" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 run --n 100 --tiles 50 2> "$dir/err.txt" && { echo "a 1 x 1 base was accepted"; exit 1; }
 grep -q "allowed: n / tiles >= 9" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 # bench linear: every size timed in turns, round by round, its median in the table and the CSV;
