@@ -76,15 +76,6 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
   return seconds / (steps * atoms);
 }
 
-// Times `steps` steps of a simulation: seconds per particle-step.
-double time_steps(Simulation& sim, std::uint64_t steps) {
-  const auto start = std::chrono::steady_clock::now();
-  sim.run(steps);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return seconds / (static_cast<double>(sim.world().particles.size()) * static_cast<double>(steps));
-}
-
 void run_bench(const BenchOptions& o) {
   require(o.rounds >= 1, fmt::format("bench dense2d: --rounds {}; allowed: >= 1", o.rounds));
   const std::size_t ny = bench_base_side(o.system, "bench dense2d"), nx = ny * o.system.tiles;

@@ -127,19 +127,21 @@ void add_shared_bench_options(CLI::App& cmd, BenchSystem& s, std::string& result
   cmd.add_option("--results", results, "folder for the results CSV")->capture_default_str();
 }
 
+double time_steps(Simulation& sim, std::uint64_t steps) {
+  const auto start = std::chrono::steady_clock::now();
+  sim.run(steps);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return seconds / (static_cast<double>(sim.world().particles.size()) * static_cast<double>(steps));
+}
+
 void time_in_turns(std::vector<TimedRun>& runs, int rounds) {
   for (int r = 0; r < rounds; ++r) {
     for (std::size_t q = 0; q < runs.size(); ++q) {
       TimedRun& z = runs[r % 2 == 0 ? q : runs.size() - 1 - q];
       const std::uint64_t builds = z.sim->neighbours().builds;
-      const auto start = std::chrono::steady_clock::now();
-      z.sim->run(z.steps);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      z.ns.push_back(1e9 * time_steps(*z.sim, z.steps));
       z.builds += z.sim->neighbours().builds - builds;
-      z.ns.push_back(
-          1e9 * seconds /
-          (static_cast<double>(z.sim->world().particles.size()) * static_cast<double>(z.steps)));
     }
     fmt::print("  round {}:", r + 1);
     for (const TimedRun& z : runs) fmt::print(" {:.2f}", z.ns.back());

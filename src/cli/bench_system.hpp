@@ -55,6 +55,9 @@ struct ResultRow {
 /// Appends `row` to folder/<machine>.csv (with a header if the file is new); returns the path.
 std::string append_result(const std::string& folder, const ResultRow& row);
 
+/// Runs `steps` steps of `sim` and returns the wall-clock seconds per particle-step.
+double time_steps(Simulation& sim, std::uint64_t steps);
+
 /// One of the systems that time_in_turns times.
 struct TimedRun {
   std::unique_ptr<Simulation> sim;

@@ -131,8 +131,8 @@ bool neighbour_cell(int cells, bool periodic, int& c, std::int8_t& shift) {
   return true;
 }
 
-// Rows [first, last) in blocks of contiguous particles, one block per thread, joined in order.
-// A cache line each: threads push onto neighbouring blocks at the same time.
+// The rows of a block of contiguous particles, built by one thread and joined in order. A cache
+// line each: threads push onto neighbouring blocks at the same time.
 struct alignas(64) RowBlock {
   std::vector<std::uint32_t> neighbour;
   std::vector<ImageShift> image;

@@ -1,4 +1,4 @@
-// Stage 4 of a step: contact forces, block by block of rows (see pair_stage): every sum has an
+// Stage 4 of a step: contact forces, block by block of rows (see force_stage): every sum has an
 // order fixed by the list alone, so the result does not depend on the number of threads, and no
 // floating-point atomics are needed.
 #include <algorithm>
@@ -49,7 +49,7 @@ bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* seg
   return false;
 }
 
-// A list entry found touching by the first pass over a stretch of rows (see pair_stage).
+// A list entry found touching by the first pass over a stretch of rows (see force_stage).
 struct TouchingEntry {
   Vec2 d; // r_i - r_j (the image of j)
   std::uint32_t entry;
@@ -222,7 +222,8 @@ void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>&
 // on. The touching entries found, and so the results, are the same either way.
 // `done.range(first, last)` is called for the particles of a stretch whose forces are complete
 // once its rows are done (rows after them never name them), by runs between late ones; the late
-// ones (NeighbourList::late) are done in finish_forces. Its answers are merged.
+// ones (NeighbourList::late) are done in the late pass (finish_late) after every block and wall
+// contact, in the same parallel region. Its answers are merged.
 template <class N, class T, class Done>
 std::pair<double, StepSeam>
 force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool refresh,

@@ -88,10 +88,10 @@ void Simulation::advance(bool fuse) {
   Particles& p = world_.particles;
   const bool verlet = config_.integrator == Integrator::verlet;
   double displacement2 = predicted_displacement2_;
-  // forces started by the last stage count only between two steps of one run() (a fused step
-  // that finished): anything a caller does between run() calls may change them
-  if (!predicted_) forces_started_ = false;
   if (!predicted_) {
+    // forces started by the last stage count only between two steps of one run() (a fused step
+    // that finished): anything a caller does between run() calls may change them
+    forces_started_ = false;
     if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
     displacement2 = verlet ? verlet_predict(p, dt, threads_) : gear_predict(p, dt, threads_);
   }
