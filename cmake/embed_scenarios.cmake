@@ -1,13 +1,14 @@
 # Writes OUT, a C++ file holding each scenario file in FILES as a string, so `talus run NAME`
 # works from any folder. Run at build time by src/CMakeLists.txt.
-set(body "// Generated from scenarios/*.toml by cmake/embed_scenarios.cmake. Do not edit.\n")
+set(body "// Generated from inputs/*/scenario.toml by cmake/embed_scenarios.cmake. Do not edit.\n")
 string(APPEND body "#include \"cli/builtin_scenarios.hpp\"\n\nnamespace talus::cli {\n\n")
 string(APPEND body "const std::vector<BuiltinScenario>& builtin_scenarios() {\n")
 string(APPEND body "  static const std::vector<BuiltinScenario> all = {\n")
 string(REPLACE "|" ";" files "${FILES}")
 list(SORT files)
 foreach(f IN LISTS files)
-  get_filename_component(name "${f}" NAME_WE)
+  get_filename_component(folder "${f}" DIRECTORY)
+  get_filename_component(name "${folder}" NAME)
   file(READ "${f}" text)
   string(APPEND body "    {\"${name}\", R\"talus_scenario(${text})talus_scenario\"},\n")
 endforeach()

@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 out="runs/drum-$(date +%Y%m%d-%H%M%S)"
-build/src/talus run drum --out "$out" "$@"
-build/src/talus analyze "$out"
+build/native/talus run drum --out "$out" "$@"
+build/native/talus analyze "$out"
 echo "pictures and numbers: $out/analysis/report.html (everything on one page), $out/final.png," \
      "$out/pictures/, $out/analysis/, $out/thermo.csv, $out/particles.pvd (ParaView)"

@@ -33,7 +33,7 @@ class ElasticCollision : public ::testing::TestWithParam<Integrator> {};
 TEST_P(ElasticCollision, HeadOnConservesEnergyAndReversesVelocities) {
   const double v = reference::thesis_disk_speed;
   World w = two_grains(elastic_material(), r, 2.0 * v);
-  const SimulationConfig c = config_for(w, GetParam(), TangentialLaw::coulomb);
+  const SimulationConfig c = config_for(w, GetParam(), law_id<ViscousCoulomb>);
   Simulation s(std::move(w), c);
   const double e0 = energies(s).total();
   double worst = 0.0;
@@ -54,7 +54,7 @@ TEST_P(ElasticCollision, HeadOnConservesEnergyAndReversesVelocities) {
 TEST_P(ElasticCollision, ObliqueConservesEnergy) {
   const double v = reference::thesis_disk_speed;
   World w = two_grains(elastic_material(), r, 2.0 * v, /*b=*/1.2 * r);
-  const SimulationConfig c = config_for(w, GetParam(), TangentialLaw::coulomb);
+  const SimulationConfig c = config_for(w, GetParam(), law_id<ViscousCoulomb>);
   Simulation s(std::move(w), c);
   const double e0 = energies(s).total();
   const auto rec = collide(s, 100000);
@@ -121,7 +121,7 @@ TEST(DissipativeFrictionalCollisionGear, AngularMomentumErrorConvergesAtSecondOr
     World w = two_grains(m, r, 2.0 * reference::thesis_disk_speed, r);
     w.particles.angular_velocity[0] = 3.0;
     const SimulationConfig c =
-        config_for(w, Integrator::gear, TangentialLaw::cundall_strack, steps_per_collision);
+        config_for(w, Integrator::gear, law_id<CundallStrack>, steps_per_collision);
     Simulation s(std::move(w), c);
     const double l0 = angular_momentum(s, {0.3, -0.7});
     double worst = 0.0;
@@ -134,16 +134,15 @@ TEST(DissipativeFrictionalCollisionGear, AngularMomentumErrorConvergesAtSecondOr
   EXPECT_NEAR(ratio, 4.0, 4.0 * 0.25) << "error ratio when dt halves";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    LawsAndIntegrators, DissipativeFrictionalCollision,
-    ::testing::Values(LossyCase{Integrator::verlet, TangentialLaw::coulomb},
-                      LossyCase{Integrator::verlet, TangentialLaw::cundall_strack},
-                      LossyCase{Integrator::gear, TangentialLaw::coulomb},
-                      LossyCase{Integrator::gear, TangentialLaw::cundall_strack}),
-    [](const auto& param_info) {
-      return std::string(to_string(param_info.param.integrator)) + "_" +
-             std::string(to_string(param_info.param.law));
-    });
+INSTANTIATE_TEST_SUITE_P(LawsAndIntegrators, DissipativeFrictionalCollision,
+                         ::testing::Values(LossyCase{Integrator::verlet, law_id<ViscousCoulomb>},
+                                           LossyCase{Integrator::verlet, law_id<CundallStrack>},
+                                           LossyCase{Integrator::gear, law_id<ViscousCoulomb>},
+                                           LossyCase{Integrator::gear, law_id<CundallStrack>}),
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param.integrator)) + "_" +
+                                  std::string(name_of(param_info.param.law));
+                         });
 
 } // namespace
 } // namespace talus

@@ -43,7 +43,7 @@ TEST(ElasticGas, EnergyDriftsLessThanTenToMinusFourOverTenToFiveSteps) {
   // is what this test uses, to test the integrator and not one trajectory's luck.
   c.timestep = linear_collision_time(1.0e4, 0.0, 0.5 * m_min) / 100.0;
   c.integrator = Integrator::verlet;
-  c.tangential_law = TangentialLaw::coulomb;
+  c.tangential_law = law_id<ViscousCoulomb>;
   Simulation s(std::move(w), c);
   const double e0 = energies(s).total();
   const Vec2 p0 = linear_momentum(s);

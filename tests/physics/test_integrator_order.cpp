@@ -27,7 +27,7 @@ double oscillator_error(Integrator integrator, double steps) {
   SimulationConfig c;
   c.timestep = period / steps;
   c.integrator = integrator;
-  c.tangential_law = TangentialLaw::coulomb;
+  c.tangential_law = law_id<ViscousCoulomb>;
   Simulation s(std::move(w), c);
   s.run(static_cast<std::uint64_t>(std::llround(2.25 * steps)));
   const double exact = r - sag + amplitude * std::cos(omega * s.time());
@@ -71,7 +71,7 @@ double amplitude_growth(Integrator integrator, double fraction_of_bound, int ste
   // two springs in parallel: stiffness 2k on the grain (m_eff = m against fixed grains)
   c.timestep = fraction_of_bound * max_stable_timestep(integrator, 2.0 * k, mass);
   c.integrator = integrator;
-  c.tangential_law = TangentialLaw::coulomb;
+  c.tangential_law = law_id<ViscousCoulomb>;
   c.max_overlap_fraction = 1e9; // let it grow: this test measures the growth
   Simulation s(std::move(w), c);
   double peak = 0.0;

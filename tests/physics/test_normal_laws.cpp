@@ -28,7 +28,7 @@ Outcome head_on(const Material& m, NormalLaw law, Integrator integrator, double 
   SimulationConfig c;
   c.timestep = dt;
   c.normal_law = law;
-  c.tangential_law = TangentialLaw::coulomb;
+  c.tangential_law = law_id<ViscousCoulomb>;
   c.integrator = integrator;
   Simulation s(std::move(w), c);
   const auto rec = collide(s, 10'000'000);
@@ -48,8 +48,8 @@ TEST_P(LinearLaw, MatchesTextbookRestitutionAndDurationAtWeakDamping) {
   const double mass = shape_mass(Shape::disk, r, m.density), m_eff = 0.5 * mass;
   const double eta = mix(m, m).normal_dashpot(m_eff);
   const double tc = linear_collision_time_textbook(m.normal_stiffness, eta, m_eff);
-  const Outcome o =
-      head_on(m, NormalLaw::linear, GetParam(), 0.02, tc / reference::linear_steps_per_collision);
+  const Outcome o = head_on(m, law_id<LinearSpringDashpot>, GetParam(), 0.02,
+                            tc / reference::linear_steps_per_collision);
   const double e = linear_restitution_textbook(m.normal_stiffness, eta, m_eff);
   EXPECT_NEAR(o.restitution, e, e * reference::linear_tolerance);
   EXPECT_NEAR(o.contact_time, tc, tc * reference::linear_tolerance);
@@ -66,7 +66,7 @@ TEST_P(LinearLaw, MatchesExactRestitutionAndDurationAtAnyDamping) {
     const double eta = mix(m, m).normal_dashpot(m_eff);
     EXPECT_NEAR(linear_restitution(m.normal_stiffness, eta, m_eff), target, 1e-12);
     const double tc = linear_collision_time(m.normal_stiffness, eta, m_eff);
-    const Outcome o = head_on(m, NormalLaw::linear, GetParam(), 0.02, tc / 200.0);
+    const Outcome o = head_on(m, law_id<LinearSpringDashpot>, GetParam(), 0.02, tc / 200.0);
     EXPECT_NEAR(o.restitution, target, target * reference::linear_tolerance) << "e = " << target;
     EXPECT_NEAR(o.contact_time, tc, tc * reference::linear_tolerance) << "e = " << target;
   }
@@ -97,7 +97,7 @@ TEST(HertzLaw, ElasticCollisionMatchesClosedForms) {
     const double xi_ref = std::pow(5.0 * m_eff * v * v / (4.0 * rho), 0.4);
     const double f_ref = rho * std::pow(xi_ref, 1.5);
     const Outcome o =
-        head_on(m, NormalLaw::hertz, Integrator::gear, v, tc_ref / 200.0, Shape::sphere);
+        head_on(m, law_id<HertzViscoelastic>, Integrator::gear, v, tc_ref / 200.0, Shape::sphere);
     EXPECT_NEAR(o.contact_time, tc_ref, tc_ref * reference::hertz_tolerance) << "v = " << v;
     EXPECT_NEAR(o.max_overlap, xi_ref, xi_ref * reference::hertz_tolerance) << "v = " << v;
     EXPECT_NEAR(o.max_force, f_ref, f_ref * reference::hertz_tolerance) << "v = " << v;
@@ -120,7 +120,8 @@ TEST(HertzLaw, ViscoelasticRestitutionFollowsRamirez) {
     const double x = 1.5 * m.hertz_damping * std::pow(alpha, 0.4) * std::pow(v, 0.2);
     const double e_ref = 1.0 - reference::ramirez_c1 * x + reference::ramirez_c2 * x * x;
     const double tc = hertz_collision_time(m_eff, rho, v);
-    const Outcome o = head_on(m, NormalLaw::hertz, Integrator::gear, v, tc / 200.0, Shape::sphere);
+    const Outcome o =
+        head_on(m, law_id<HertzViscoelastic>, Integrator::gear, v, tc / 200.0, Shape::sphere);
     EXPECT_NEAR(o.restitution, e_ref, e_ref * reference::ramirez_tolerance) << "v = " << v;
     // and the helper that integrates the single contact agrees with the simulation
     EXPECT_NEAR(hertz_restitution(m.hertz_damping, m_eff, rho, v), o.restitution, 2e-3);

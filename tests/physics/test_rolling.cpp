@@ -36,7 +36,7 @@ TEST_P(Rolling, StartsToRollAtTheClassicalSpeedAndTime) {
 
   SimulationConfig c;
   c.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 50.0;
-  c.normal_law = NormalLaw::linear;
+  c.normal_law = law_id<LinearSpringDashpot>;
   c.tangential_law = rc.law;
   c.integrator = rc.integrator;
   Simulation s(std::move(w), c);
@@ -69,13 +69,13 @@ TEST_P(Rolling, StartsToRollAtTheClassicalSpeedAndTime) {
 
 INSTANTIATE_TEST_SUITE_P(
     ShapesAndLaws, Rolling,
-    ::testing::Values(RollCase{Shape::disk, TangentialLaw::coulomb, Integrator::gear},
-                      RollCase{Shape::disk, TangentialLaw::cundall_strack, Integrator::gear},
-                      RollCase{Shape::sphere, TangentialLaw::cundall_strack, Integrator::verlet},
-                      RollCase{Shape::sphere, TangentialLaw::coulomb, Integrator::verlet}),
+    ::testing::Values(RollCase{Shape::disk, law_id<ViscousCoulomb>, Integrator::gear},
+                      RollCase{Shape::disk, law_id<CundallStrack>, Integrator::gear},
+                      RollCase{Shape::sphere, law_id<CundallStrack>, Integrator::verlet},
+                      RollCase{Shape::sphere, law_id<ViscousCoulomb>, Integrator::verlet}),
     [](const auto& param_info) {
       return std::string(param_info.param.shape == Shape::disk ? "disk_" : "sphere_") +
-             std::string(to_string(param_info.param.law)) + "_" +
+             std::string(name_of(param_info.param.law)) + "_" +
              std::string(to_string(param_info.param.integrator));
     });
 

@@ -9,9 +9,9 @@
 #include <cstdlib>
 
 #include "analysis/force_distribution.hpp"
+#include "analysis/frame.hpp"
 #include "post/flow_profiles.hpp"
 #include "post/segregation.hpp"
-#include "render/frame.hpp"
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"

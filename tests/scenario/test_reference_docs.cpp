@@ -3,9 +3,12 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 #include "cli/builtin_scenarios.hpp"
 #include "scenario/load.hpp"
+#include "talus/law_table.hpp"
 
 namespace talus {
 namespace {
@@ -25,6 +28,27 @@ TEST(ScenarioReference, DocsListEveryKey) {
   EXPECT_GT(keys.size(), 60U);
   for (const std::string& key : keys)
     EXPECT_NE(doc.str().find("`" + key + "`"), std::string::npos) << key << " is not documented";
+}
+
+// the rows of the law keys name every law of the table (talus/law_table.hpp), in quotes
+TEST(ScenarioReference, DocsNameEveryLaw) {
+  std::ifstream in(std::string(TALUS_SOURCE_DIR) + "/docs/scenarios.md");
+  ASSERT_TRUE(in) << "docs/scenarios.md missing";
+  std::string line, normal_row, tangential_row;
+  while (std::getline(in, line)) {
+    if (line.starts_with("| `simulation.normal_law`")) normal_row = line;
+    if (line.starts_with("| `simulation.tangential_law`")) tangential_row = line;
+  }
+  const auto quoted = [](std::string_view name) {
+    std::string q(1, '"');
+    q.append(name);
+    q.push_back('"');
+    return q;
+  };
+  for (std::string_view name : NormalLaws::names)
+    EXPECT_NE(normal_row.find(quoted(name)), std::string::npos) << name;
+  for (std::string_view name : TangentialLaws::names)
+    EXPECT_NE(tangential_row.find(quoted(name)), std::string::npos) << name;
 }
 
 } // namespace

@@ -172,7 +172,7 @@ TEST(ThesisFormat, InFileRoundTripsThroughAScenario) {
   const ThesisFile f = read_thesis_in(in, "a.in");
   ASSERT_EQ(f.particles.size(), 3U);
   const Scenario s = scenario_from_thesis(f, "a");
-  EXPECT_EQ(s.simulation.normal_law, NormalLaw::linear);
+  EXPECT_EQ(s.simulation.normal_law, law_id<LinearSpringDashpot>);
   EXPECT_DOUBLE_EQ(s.materials[0].normal_stiffness, 10000.0);
   EXPECT_EQ(s.particles.list[2].kind, "fixed");
   const Scenario reread = load_scenario(to_toml(s), "a.toml");

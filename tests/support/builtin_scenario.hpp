@@ -1,5 +1,5 @@
 #pragma once
-// A built-in scenario (src/cli/builtin_scenarios.hpp) loaded with --set style overrides.
+// A built-in scenario (native/cli/builtin_scenarios.hpp) loaded with --set style overrides.
 #include <stdexcept>
 #include <string>
 #include <vector>

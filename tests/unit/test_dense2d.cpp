@@ -1,4 +1,4 @@
-// The benchmark system matches the LAMMPS input it is compared with (bench/lammps).
+// The benchmark system matches the LAMMPS input it is compared with (inputs/dense2d).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -99,8 +99,8 @@ TEST(ForceStage, AddsEveryTouchingPairOnceToEachPartner) {
         slipping += std::abs(history - g.v_tangent * config.timestep) > 0.0;
         // the history of an entry does not depend on the order of the sums: exactly equal
         EXPECT_EQ(l.history[e], history) << "entry " << e;
-        force[i] += c.force;
-        force[j] -= c.force;
+        force[i] += force_of(c);
+        force[j] -= force_of(c);
         torque[i] += c.torque_i;
         torque[j] += c.torque_j;
       }

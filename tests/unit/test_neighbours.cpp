@@ -6,11 +6,11 @@
 #include <set>
 #include <tuple>
 
-#include "core/error.hpp"
 #include "core/random.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "simulation/simulation.hpp"
+#include "talus/error.hpp"
 
 namespace talus {
 namespace {
@@ -180,7 +180,7 @@ TEST(NeighbourList, ContactHistorySurvivesRebuilds) {
   w.add_particle({.position = {0.1, 0.0}, .radius = 1e-3, .velocity = {5.0, 0.0}}); // far, fast
   SimulationConfig c;
   c.timestep = 1e-6;
-  c.tangential_law = TangentialLaw::cundall_strack;
+  c.tangential_law = law_id<CundallStrack>;
   c.skin = 2.5e-4; // small, so that the fast grain forces rebuilds
   Simulation s(std::move(w), c);
   s.run(200);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.hpp"
+#include "talus/error.hpp"
 
 #include "post/flow_profiles.hpp"
 #include "post/frost_cycles.hpp"

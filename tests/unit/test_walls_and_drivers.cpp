@@ -5,8 +5,8 @@
 #include <numbers>
 
 #include "analysis/observables.hpp"
-#include "core/error.hpp"
 #include "simulation/simulation.hpp"
+#include "talus/error.hpp"
 
 namespace talus {
 namespace {

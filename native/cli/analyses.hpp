@@ -1,0 +1,80 @@
+#pragma once
+// The analyses of `talus analyze`: each reads a run folder, writes CSV files with documented
+// columns (docs/file-formats.md), a JSON of key numbers and a matplotlib chart into
+// DIR/analysis, and returns what the report shows.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/frame.hpp"
+#include "scenario/scenario.hpp"
+
+namespace talus::cli {
+
+/// A run folder, with its scenario and snapshots read once and shared by the analyses.
+class RunData {
+public:
+  explicit RunData(std::filesystem::path dir);
+  const std::filesystem::path& dir() const { return dir_; }
+  /// DIR/analysis, made on first use: an analysis that fails its checks leaves nothing behind.
+  const std::filesystem::path& out();
+  const Scenario& scenario() const { return scenario_; }
+  bool has_snapshots() const;
+  /// The snapshots (particles and walls, no contacts) from time `from` on; throws
+  /// InvalidArgument when there are none.
+  const std::vector<Frame>& frames(double from = 0.0);
+  /// The mean radius of the free grains in the first snapshot, m.
+  double mean_radius();
+
+private:
+  std::filesystem::path dir_, out_;
+  Scenario scenario_;
+  std::vector<Frame> all_, picked_;
+  double picked_from_ = -1.0;
+};
+
+struct AnalysisOptions {
+  std::string frames = "all";                    ///< forces: all or last
+  std::optional<std::pair<double, double>> band; ///< profiles: y0, y1 in m
+  std::size_t bins = 0;                          ///< profiles: bins across (0: automatic)
+  double from = 0.0;                             ///< s: ignore snapshots before this
+  double cell = 0.0;                             ///< speed map cell, m (0: automatic)
+};
+
+/// What one analysis gives the report: its charts and key numbers.
+struct Section {
+  std::string title;
+  std::string summary;
+  std::vector<std::filesystem::path> charts;
+  std::vector<std::pair<std::string, std::string>> numbers;
+};
+
+/// A number for a JSON file: "null" when it is not finite.
+std::string json_number(double v);
+/// A number for a CSV cell: empty when it is not finite.
+std::string csv_number(double v);
+
+/// The times of a run's frost.csv at which the bed was at rest: each freeze, and the end if the
+/// run logged one. Throws InvalidArgument when the file is missing or a row is malformed.
+std::vector<double> freeze_times(const std::filesystem::path& file);
+
+/// Draws a chart with the compiled-in matplotlib script; false (with a note) when matplotlib is
+/// missing or the script fails, so the CSV files still stand.
+bool plot(const std::filesystem::path& out, const std::string& kind,
+          const std::filesystem::path& csv, const std::filesystem::path& png,
+          const std::filesystem::path& json = {});
+
+Section analyze_thermo(RunData& run);
+Section analyze_forces(RunData& run, const AnalysisOptions& o);
+Section analyze_profiles(RunData& run, const AnalysisOptions& o);
+Section analyze_tracks(RunData& run);
+Section analyze_segregation(RunData& run, const AnalysisOptions& o);
+Section analyze_frost(RunData& run);
+
+/// DIR/analysis/report.html: one page, images embedded, readable offline.
+std::filesystem::path write_report(RunData& run, const std::vector<Section>& sections);
+
+} // namespace talus::cli

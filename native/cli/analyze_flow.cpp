@@ -1,0 +1,190 @@
+// `talus analyze DIR profiles` and `tracks`: velocity profiles across a band, the false-colour
+// speed map, the discharge through an orifice, and the tracked particles against time.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/core.h>
+
+#include "cli/analyses.hpp"
+#include "io/checkpoint.hpp"
+#include "io/track_csv.hpp"
+#include "post/flow_profiles.hpp"
+#include "talus/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+bool has_orifice(const Scenario& s) {
+  return s.geometry.builder == "hourglass" || s.geometry.builder == "hopper";
+}
+
+// Grows r to take in the free grains of a frame.
+void take_in(Rect& r, const Frame& f) {
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    if (f.kind[i] != 0) continue;
+    r.lo = {std::min(r.lo.x, f.position[i].x - f.radius[i]),
+            std::min(r.lo.y, f.position[i].y - f.radius[i])};
+    r.hi = {std::max(r.hi.x, f.position[i].x + f.radius[i]),
+            std::max(r.hi.y, f.position[i].y + f.radius[i])};
+  }
+}
+
+constexpr Rect empty_rect{
+    {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()},
+    {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()}};
+
+} // namespace
+
+Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
+  const Scenario& sc = run.scenario();
+  const auto& frames = run.frames(o.from);
+  const double d = 2.0 * run.mean_radius();
+  Rect seen = empty_rect; // where the grains went, over all frames
+  for (const Frame& f : frames) take_in(seen, f);
+  // the band: given, or just above the orifice (2 orifice widths high), or the middle fifth of
+  // the bed at the start
+  double y0 = 0.0, y1 = 0.0, x0 = seen.lo.x, x1 = seen.hi.x;
+  if (o.band) {
+    std::tie(y0, y1) = *o.band;
+  } else if (has_orifice(sc)) {
+    y0 = 0.0, y1 = 2.0 * sc.geometry.orifice;
+    x0 = 0.0, x1 = sc.geometry.width;
+  } else {
+    Rect start = empty_rect;
+    take_in(start, frames.front());
+    y0 = start.lo.y + 0.4 * (start.hi.y - start.lo.y);
+    y1 = start.lo.y + 0.6 * (start.hi.y - start.lo.y);
+  }
+  const std::size_t bins =
+      o.bins ? o.bins : std::clamp<std::size_t>(static_cast<std::size_t>((x1 - x0) / d), 5, 60);
+  const BandProfile p = band_profile(frames, y0, y1, x0, x1, bins);
+  const fs::path out = run.out();
+  std::string csv = "x,vx,vy,speed,samples\n";
+  for (std::size_t b = 0; b < p.x.size(); ++b)
+    csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{}\n", p.x[b], p.vx[b], p.vy[b], p.speed[b],
+                       p.count[b]);
+  write_file_atomically((out / "profiles.csv").string(), csv);
+
+  // centre line against the edges of the occupied bins: the thesis' funnel flow (fig. 4.7)
+  std::size_t first = bins, last = 0;
+  for (std::size_t b = 0; b < bins; ++b)
+    if (p.count[b] > 0) first = std::min(first, b), last = std::max(last, b);
+  double centre = std::nan(""), edges = std::nan("");
+  if (first <= last) {
+    const double mid = 0.5 * (x0 + x1);
+    std::size_t c = first;
+    for (std::size_t b = first; b <= last; ++b)
+      if (p.count[b] > 0 && std::abs(p.x[b] - mid) < std::abs(p.x[c] - mid)) c = b;
+    centre = p.vy[c];
+    edges = 0.5 * (p.vy[first] + p.vy[last]);
+  }
+
+  Section s{"Velocity profiles and speed map", {}, {}, {}};
+  s.summary = fmt::format("Mean velocity of the grains in the band {:.4g} m <= y < {:.4g} m, in {} "
+                          "bins across x, over {} snapshots from t = {:.3g} s; the mean speed on a "
+                          "grid (false colour).",
+                          y0, y1, bins, frames.size(), frames.front().time);
+  s.numbers = {{"v_y on the centre line", fmt::format("{:.4g} m/s", centre)},
+               {"v_y in the outermost occupied bins", fmt::format("{:.4g} m/s", edges)}};
+  std::string json = fmt::format(
+      "{{\"band\": [{}, {}], \"bins\": {}, \"snapshots\": {}, \"from\": {}, \"centre_vy\": {}, "
+      "\"edge_vy\": {}",
+      json_number(y0), json_number(y1), bins, frames.size(), json_number(frames.front().time),
+      json_number(centre), json_number(edges));
+  fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots; v_y centre {:.4g} m/s, "
+             "edges {:.4g} m/s\n",
+             y0, y1, bins, frames.size(), centre, edges);
+
+  // the speed map over where the grains went, cells of two mean diameters by default
+  const double cell = o.cell > 0.0 ? o.cell : 2.0 * d;
+  const SpeedMap m = speed_map(frames, seen, cell);
+  std::string map = "column,row,x,y,mean_speed,samples\n";
+  for (std::size_t r = 0; r < m.ny; ++r)
+    for (std::size_t c = 0; c < m.nx; ++c)
+      map += fmt::format("{},{},{:.6g},{:.6g},{:.6g},{}\n", c, r,
+                         m.region.lo.x + (static_cast<double>(c) + 0.5) * cell,
+                         m.region.lo.y + (static_cast<double>(r) + 0.5) * cell,
+                         m.mean_speed[r * m.nx + c], m.count[r * m.nx + c]);
+  write_file_atomically((out / "speed_map.csv").string(), map);
+  write_file_atomically(
+      (out / "speed_map.json").string(),
+      fmt::format("{{\"nx\": {}, \"ny\": {}, \"cell\": {}, \"region\": [{}, {}, {}, {}], "
+                  "\"snapshots\": {}}}\n",
+                  m.nx, m.ny, json_number(cell), json_number(m.region.lo.x),
+                  json_number(m.region.lo.y), json_number(m.region.hi.x),
+                  json_number(m.region.hi.y), frames.size()));
+
+  if (has_orifice(sc)) { // the discharge through the orifice at y = 0
+    const Discharge q = discharge(frames, 0.0);
+    std::string dc = "time,grains_below\n";
+    for (std::size_t k = 0; k < q.time.size(); ++k)
+      dc += fmt::format("{:.6g},{}\n", q.time[k], q.below[k]);
+    write_file_atomically((out / "discharge.csv").string(), dc);
+    json += fmt::format(", \"rate\": {}, \"rate_first_half\": {}, \"rate_second_half\": {}, "
+                        "\"flow_from\": {}, \"flow_to\": {}",
+                        json_number(q.rate), json_number(q.rate_first_half),
+                        json_number(q.rate_second_half), json_number(q.flow_from),
+                        json_number(q.flow_to));
+    s.numbers.emplace_back("flow rate (10% to 90% through)",
+                           fmt::format("{:.1f} grains/s", q.rate));
+    s.numbers.emplace_back(
+        "first half, second half",
+        fmt::format("{:.1f}, {:.1f} grains/s", q.rate_first_half, q.rate_second_half));
+    fmt::print(
+        "  discharge: {:.1f} grains/s from t = {:.3g} to {:.3g} s (halves: {:.1f}, {:.1f})\n",
+        q.rate, q.flow_from, q.flow_to, q.rate_first_half, q.rate_second_half);
+  }
+  write_file_atomically((out / "profiles.json").string(), json + "}\n");
+  if (plot(out, "profiles", out / "profiles.csv", out / "profiles.png", out / "profiles.json"))
+    s.charts.push_back(out / "profiles.png");
+  if (plot(out, "speed_map", out / "speed_map.csv", out / "speed_map.png", out / "speed_map.json"))
+    s.charts.push_back(out / "speed_map.png");
+  if (has_orifice(sc) &&
+      plot(out, "discharge", out / "discharge.csv", out / "discharge.png", out / "profiles.json"))
+    s.charts.push_back(out / "discharge.png");
+  for (const auto& c : s.charts) fmt::print("  chart: {}\n", c.string());
+  return s;
+}
+
+Section analyze_tracks(RunData& run) {
+  const fs::path track = run.dir() / "track.csv";
+  if (!fs::exists(track))
+    throw InvalidArgument("'" + run.dir().string() +
+                          "' has no track.csv: the scenario tracks no particles");
+  const auto tracks = read_tracks(track.string());
+  std::string csv = "time,id,x,y,vx,vy,speed\n";
+  Section s{"Tracked particles", {}, {}, {}};
+  s.summary = "Positions and velocities of the tracked particles against time (track.csv).";
+  std::string json = "{\"tracks\": [";
+  for (const auto& [id, points] : tracks) {
+    double path = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const TrackPoint& p = points[k];
+      csv += fmt::format("{:.9g},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g}\n", p.time, id, p.position.x,
+                         p.position.y, p.velocity.x, p.velocity.y, norm(p.velocity));
+      if (k) path += norm(p.position - points[k - 1].position);
+    }
+    const Vec2 net = points.back().position - points.front().position;
+    const double span = points.back().time - points.front().time;
+    json += fmt::format("{}{{\"id\": {}, \"path_length\": {}, \"displacement\": [{}, {}], "
+                        "\"mean_speed\": {}}}",
+                        json.back() == '[' ? "" : ", ", id, json_number(path), json_number(net.x),
+                        json_number(net.y), json_number(span > 0.0 ? path / span : 0.0));
+    s.numbers.emplace_back(fmt::format("particle {}: path, net (dx, dy)", id),
+                           fmt::format("{:.4g} m, ({:.4g}, {:.4g}) m", path, net.x, net.y));
+  }
+  write_file_atomically((run.out() / "tracks.csv").string(), csv);
+  write_file_atomically((run.out() / "tracks.json").string(), json + "]}\n");
+  fmt::print("tracks: {} particle(s)\n", tracks.size());
+  if (plot(run.out(), "tracks", run.out() / "tracks.csv", run.out() / "tracks.png")) {
+    s.charts.push_back(run.out() / "tracks.png");
+    fmt::print("  chart: {}\n", (run.out() / "tracks.png").string());
+  }
+  return s;
+}
+
+} // namespace talus::cli

@@ -1,0 +1,189 @@
+// `talus run`, `talus resume`, `talus scenarios` and `talus convert`.
+#include <filesystem>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "cli/builtin_scenarios.hpp"
+#include "cli/commands.hpp"
+#include "cli/run_loop.hpp"
+#include "io/checkpoint.hpp"
+#include "io/thesis_format.hpp"
+#include "scenario/load.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+int& exit_status() {
+  static int status = 0;
+  return status;
+}
+
+namespace {
+
+std::string describe(std::string_view toml_text) {
+  try {
+    const toml::table t = toml::parse(toml_text);
+    return t["description"].value_or(std::string{});
+  } catch (...) {
+    return {};
+  }
+}
+
+// A scenario from a .toml path, a thesis .in path or a built-in name.
+Scenario resolve(const std::string& what, const std::vector<std::string>& overrides) {
+  // a folder (say, the run folder of a built-in scenario, named after it) is never a scenario
+  if (fs::is_regular_file(what)) {
+    if (fs::path(what).extension() == ".in") {
+      const ThesisFile f = read_thesis_in(read_file(what), what);
+      const Scenario s = scenario_from_thesis(f, fs::path(what).stem().string());
+      return load_scenario(to_toml(s), what + " (converted)", overrides);
+    }
+    return load_scenario_file(what, overrides);
+  }
+  std::string names, best;
+  std::size_t best_d = 1000;
+  for (const auto& b : builtin_scenarios()) {
+    if (b.name == what)
+      return load_scenario(b.text, "inputs/" + std::string(b.name) + "/scenario.toml", overrides);
+    names += (names.empty() ? "" : ", ") + std::string(b.name);
+    if (const auto d = edit_distance(what, b.name); d < best_d) best_d = d, best = b.name;
+  }
+  std::string msg = "'" + what + "' is neither a file nor a built-in scenario";
+  if (fs::is_directory(what))
+    msg = "'" + what + "' is a folder, not a scenario file (a run folder continues with talus " +
+          "resume; its scenario is " + (fs::path(what) / "scenario.toml").string() + ")";
+  if (best_d <= 3) msg += "; did you mean '" + best + "'?";
+  throw InvalidArgument(msg + " (built-in: " + names + ")");
+}
+
+} // namespace
+
+void add_run_command(CLI::App& app) {
+  struct Options {
+    std::string scenario, out;
+    std::vector<std::string> set;
+    RunOptions run;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("run", "run a scenario: a .toml file, a thesis .in file, or a "
+                                            "built-in scenario's name (see `talus scenarios`)");
+  cmd->add_option("scenario", o->scenario, "scenario file or built-in name")->required();
+  cmd->add_option("--out", o->out,
+                  "run folder (default: runs/<scenario name>); must be new or empty");
+  cmd->add_option("--set", o->set, "override a key, e.g. --set particles.count=5000 (repeatable)");
+  cmd->add_option("--threads", o->run.threads, "threads (0: all cores; default: the scenario's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--stop-at", o->run.stop_at,
+                  "stop at this simulated time (s) after a checkpoint; continue with talus resume");
+  cmd->add_flag("--quiet", o->run.quiet, "no progress output");
+  cmd->callback([o] {
+    const Scenario s = resolve(o->scenario, o->set);
+    const std::string dir = o->out.empty() ? "runs/" + s.name : o->out;
+    if (fs::exists(dir) && !fs::is_empty(dir))
+      throw InvalidArgument("run folder '" + dir +
+                            "' already exists and is not empty; choose "
+                            "another with --out, or continue it with: talus resume " +
+                            dir);
+    if (!o->run.quiet)
+      fmt::print("talus run {}: {}\n", s.name,
+                 s.description.empty() ? "(no description)" : s.description);
+    BuiltScenario built;
+    try {
+      Scenario settle = s; // --threads applies to the settling too
+      if (o->run.threads >= 0) settle.simulation.threads = o->run.threads;
+      built = build_scenario(settle, [&](double t, double ke) {
+        if (o->run.quiet) return;
+        fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
+        std::fflush(stdout);
+      });
+    } catch (const ScenarioError& e) { // say which file the key is in
+      throw ScenarioError(o->scenario + ": " + e.what());
+    }
+    if (!o->run.quiet) {
+      std::size_t free = built.world.particles.count(Kind::free);
+      fmt::print("  {} grains, {} wall particles, {} wall segments; dt = {:.4g} s (collision time "
+                 "{:.4g} s){}\n",
+                 free, built.world.particles.size() - free, built.world.walls.size(),
+                 built.config.timestep, built.collision_time,
+                 built.settle_time > 0 ? fmt::format("; settled in {:.3f} s", built.settle_time)
+                                       : "");
+      if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
+      std::fflush(stdout);
+    }
+    exit_status() = start_run(s, std::move(built), dir, o->run);
+  });
+}
+
+void add_resume_command(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("resume", "continue a stopped run from its last checkpoint "
+                                               "(bit-identical to an uninterrupted run)");
+  cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--stop-at", o->stop_at, "stop again at this simulated time (s)");
+  cmd->add_flag("--quiet", o->quiet, "no progress output");
+  cmd->callback([dir, o] { exit_status() = resume_run(*dir, *o); });
+}
+
+void add_scenarios_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("scenarios", "list the built-in scenarios");
+  cmd->callback([] {
+    for (const auto& b : builtin_scenarios()) fmt::print("{:<14} {}\n", b.name, describe(b.text));
+  });
+}
+
+void add_checkpoint_command(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand(
+      "checkpoint", "describe a run folder's last checkpoint: time, step, particles, state hash "
+                    "(two runs with the same hash have bit-identical states)");
+  cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
+  cmd->callback([dir] {
+    const std::string file = (fs::path(*dir) / "checkpoint.bin").string();
+    const Checkpoint c = decode_checkpoint(read_file(file), file);
+    const Particles& p = c.state.world.particles;
+    std::uint64_t h = 1469598103934665603ULL;
+    const auto mix = [&h](const void* data, std::size_t bytes) {
+      const auto* b = static_cast<const unsigned char*>(data);
+      for (std::size_t k = 0; k < bytes; ++k) h = (h ^ b[k]) * 1099511628211ULL;
+    };
+    mix(p.position.data(), p.size() * sizeof(Vec2));
+    mix(p.velocity.data(), p.size() * sizeof(Vec2));
+    mix(p.angle.data(), p.size() * sizeof(double));
+    mix(p.angular_velocity.data(), p.size() * sizeof(double));
+    mix(c.state.neighbours.history.data(), c.state.neighbours.history.size() * sizeof(double));
+    fmt::print("time {:.9g} s\nstep {}\nparticles {}\nstate_hash {:016x}\n", c.state.time,
+               c.state.steps, p.size(), h);
+  });
+}
+
+void add_convert_command(CLI::App& app) {
+  auto in = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  CLI::App* cmd = app.add_subcommand(
+      "convert", "convert a thesis .in file to a scenario .toml, or a .toml with an explicit "
+                 "particle list to .in (the direction follows the file endings)");
+  cmd->add_option("input", *in, "FILE.in or FILE.toml")->required()->check(CLI::ExistingFile);
+  cmd->add_option("output", *out, "FILE.toml or FILE.in")->required();
+  cmd->callback([in, out] {
+    const auto ext_in = fs::path(*in).extension(), ext_out = fs::path(*out).extension();
+    if (ext_in == ".in" && ext_out == ".toml") {
+      const ThesisFile f = read_thesis_in(read_file(*in), *in);
+      const Scenario s = scenario_from_thesis(f, fs::path(*in).stem().string());
+      write_file_atomically(*out, to_toml(s));
+      fmt::print("wrote {} ({} particles)\n", *out, f.particles.size());
+    } else if (ext_in == ".toml" && ext_out == ".in") {
+      const ThesisFile f = thesis_from_scenario(load_scenario_file(*in));
+      write_file_atomically(*out, write_thesis_in(f));
+      fmt::print("wrote {} ({} particles)\n", *out, f.particles.size());
+    } else {
+      throw InvalidArgument("convert: give FILE.in FILE.toml or FILE.toml FILE.in (got '" +
+                            ext_in.string() + "' to '" + ext_out.string() + "')");
+    }
+  });
+}
+
+} // namespace talus::cli

@@ -1,0 +1,89 @@
+#include "drivers/drivers.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "talus/error.hpp"
+
+namespace talus {
+
+void attach(Driver& d, const Particles& p, const Segments& walls) {
+  if (auto* v = std::get_if<Vibrate>(&d.motion)) {
+    const double l = norm(v->direction);
+    require(l > 0.0, "vibrate driver: direction must be a non-zero vector");
+    require(v->amplitude >= 0.0 && v->frequency >= 0.0,
+            "vibrate driver: amplitude (m) and frequency (Hz) must be >= 0");
+    v->direction = v->direction / l;
+  }
+  d.particle_origin.clear();
+  d.angle_origin.clear();
+  for (const auto i : d.targets.particles) {
+    require(i < p.size(), "driver: particle index " + std::to_string(i) + " out of range");
+    require(p.kind[i] == Kind::moved,
+            "driver: particle " + std::to_string(i) + " must be of kind 'moved' to be driven");
+    d.particle_origin.push_back(p.position[i]);
+    d.angle_origin.push_back(p.angle[i]);
+  }
+  d.segment_origin.clear();
+  for (const auto s : d.targets.segments) {
+    require(s < walls.size(), "driver: segment index " + std::to_string(s) + " out of range");
+    d.segment_origin.push_back(walls[s].a);
+    d.segment_origin.push_back(walls[s].b);
+  }
+}
+
+namespace {
+struct Pose {
+  Vec2 offset;        // translation (Vibrate, Translate)
+  Vec2 velocity;      // translation velocity
+  double angle = 0.0; // rotation angle (Rotate)
+  double omega = 0.0; // rotation rate
+  Vec2 centre;
+};
+
+Pose pose_at(const Motion& m, double t) {
+  Pose pose;
+  if (const auto* v = std::get_if<Vibrate>(&m)) {
+    const double w = 2.0 * std::numbers::pi * v->frequency;
+    pose.offset = v->amplitude * std::sin(w * t + v->phase) * v->direction;
+    pose.velocity = v->amplitude * w * std::cos(w * t + v->phase) * v->direction;
+  } else if (const auto* tr = std::get_if<Translate>(&m)) {
+    pose.offset = t * tr->velocity;
+    pose.velocity = tr->velocity;
+  } else if (const auto* r = std::get_if<Rotate>(&m)) {
+    pose.angle = r->angular_velocity * t;
+    pose.omega = r->angular_velocity;
+    pose.centre = r->centre;
+  }
+  return pose;
+}
+
+Vec2 place(const Pose& pose, Vec2 origin) {
+  if (pose.omega == 0.0 && pose.angle == 0.0) return origin + pose.offset;
+  const double c = std::cos(pose.angle), s = std::sin(pose.angle);
+  const Vec2 d = origin - pose.centre;
+  return pose.centre + Vec2{c * d.x - s * d.y, s * d.x + c * d.y};
+}
+} // namespace
+
+void apply(const Driver& d, double t, Particles& p, Segments& walls) {
+  const Pose pose = pose_at(d.motion, t);
+  for (std::size_t k = 0; k < d.targets.particles.size(); ++k) {
+    const auto i = d.targets.particles[k];
+    p.position[i] = place(pose, d.particle_origin[k]);
+    p.velocity[i] = pose.velocity + cross(pose.omega, p.position[i] - pose.centre);
+    p.angle[i] = d.angle_origin[k] + pose.angle;
+    p.angular_velocity[i] = pose.omega;
+  }
+  for (std::size_t k = 0; k < d.targets.segments.size(); ++k) {
+    Segment& s = walls[d.targets.segments[k]];
+    s.a = place(pose, d.segment_origin[2 * k]);
+    s.b = place(pose, d.segment_origin[2 * k + 1]);
+    s.velocity = pose.velocity;
+    s.angular_velocity = pose.omega;
+    s.pivot = pose.centre;
+  }
+}
+
+} // namespace talus

@@ -1,0 +1,127 @@
+#pragma once
+// The Verlet list: every pair within reach (touching, or closer than the skin), as a half list
+// (j > i) in CSR form, with the tangential history of each pair stored beside its entry.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/domain.hpp"
+#include "state/particles.hpp"
+#include "state/walls.hpp"
+
+namespace talus {
+
+/// Periodic image of j in a pair entry: j is taken at r_j + (sx L_x, sy L_y).
+struct ImageShift {
+  std::int8_t sx = 0;
+  std::int8_t sy = 0;
+  friend bool operator==(ImageShift, ImageShift) = default;
+};
+
+struct NeighbourList {
+  // particle pairs: entries row_offset[i] .. row_offset[i+1] have i as first particle
+  std::vector<std::uint32_t> row_offset;
+  std::vector<std::uint32_t> neighbour; ///< j > i, sorted within a row
+  std::vector<ImageShift> image;
+  std::vector<double> history; ///< tangential spring s (m) of each pair, 0 when not touching
+  // Force blocks (derived from the rows by index_force_blocks): rows are cut into blocks of
+  // block_rows, a number that depends on the particle count only. An entry whose second particle
+  // lies beyond its row's block is deferred: its force waits in a slot (numbered in entry order)
+  // and is added once every block is done, so blocks can run side by side on any thread count.
+  std::uint32_t block_rows = 0;
+  std::vector<std::uint32_t> block_first_slot; ///< first deferred slot of each block, then total
+  std::vector<std::uint32_t> deferred_offset;  ///< CSR over particles: deferred slots whose
+  std::vector<std::uint32_t> deferred_slot;    ///< second particle is k, in entry order
+  /// Particles whose force is complete only after every block: those with deferred entries or
+  /// wall contacts, in order.
+  std::vector<std::uint32_t> late;
+  /// The force stage goes through a block's rows by stretches of this many, from the block's
+  /// first row.
+  static constexpr std::uint32_t stretch_rows = 64;
+  /// The row (first particle) of each entry, less the first row of its stretch, so that the
+  /// force stage can walk a stretch of entries in one flat loop (no inner loop whose length
+  /// changes from row to row). One byte, not four: it is read for every entry every step.
+  std::vector<std::uint8_t> entry_row;
+  bool is_late(std::size_t k) const {
+    return deferred_offset[k + 1] > deferred_offset[k] || wall_offset[k + 1] > wall_offset[k];
+  }
+  // particle-segment pairs, CSR over particles
+  std::vector<std::uint32_t> wall_offset;
+  std::vector<std::uint32_t> wall_segment;
+  std::vector<double> wall_history;
+
+  std::vector<Vec2> reference;         ///< particle positions at the last build
+  std::vector<Vec2> segment_reference; ///< segment end points (a, b, a, b, ...) at the last build
+  double skin = 0.0;
+  std::uint64_t builds = 0;
+
+  std::size_t pair_count() const { return neighbour.size(); }
+  Vec2 shift(std::size_t entry, const Domain& d) const {
+    const Vec2 l = d.size();
+    return {image[entry].sx * l.x, image[entry].sy * l.y};
+  }
+};
+
+/// The entries of a neighbour list that can come to touch soon: those whose gap was below `skin`
+/// when they were chosen, and those that name a particle that is not free (drivers and holds
+/// move those, not the integrator). While no two grains can have closed a gap of `skin` since
+/// then (Simulation keeps the bound), the force stage tests only these: the others cannot touch,
+/// and their history stays 0. Derived from the list by the force stage, not saved.
+struct ContactCandidates {
+  std::vector<std::uint32_t> entry; ///< per stretch of rows, from the stretch's first entry on
+  std::vector<std::uint32_t> slot;  ///< each candidate's deferred slot, or ~0 (none)
+  std::vector<std::uint32_t> count; ///< candidates per stretch of rows
+  double skin = 0.0;                ///< m
+  /// `skin` as a fraction of the list's skin: they are chosen again about five times in a
+  /// list's life; the choice is not sensitive (docs/performance.md, "Contact candidates").
+  static constexpr double skin_fraction = 0.2;
+};
+
+/// Rows per force block for n particles: n cut into 2, 4, 8 or 16 blocks (a power of two, so that
+/// 2, 4, 8 or 16 threads share them evenly) of at least 2048 rows each where n allows. A function
+/// of n only, so that results do not depend on the thread count. Not more blocks than that: an
+/// entry that crosses a block's end costs more than one that does not (its deferred slot and its
+/// late particle), and a block's end crosses a whole layer of the packing.
+std::uint32_t force_block_rows(std::size_t n);
+
+/// The order in which the threads take the force blocks (into `order`, resized; no allocation
+/// once it has the size): the block indices by decreasing `work`
+/// (one figure per block, as the last force stage measured it), equal ones by index. The threads
+/// take the next block of this order whenever they finish one, so that the last blocks taken,
+/// when one thread may wait for another, are the shortest. Which thread runs a block changes no
+/// result, since a block's sums are its own.
+void force_block_order(const std::vector<std::uint64_t>& work, std::vector<std::ptrdiff_t>& order);
+
+/// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
+/// calls it; a list read back from a checkpoint needs it too).
+void index_force_blocks(NeighbourList& list, int threads = 1);
+
+/// True when some particle or wall end point moved more than half the skin since the last build.
+bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
+
+/// True when some particle moved more than half the skin since the last build, or the particles
+/// are not those of the build (another count).
+bool particles_moved(const NeighbourList& list, const Particles& p, int threads = 1);
+
+/// True when a wall end point, or one of the given (driven) particles, moved more than half the
+/// skin since the last build: the part of the drift test the integrator does not do.
+bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& walls,
+                 const std::vector<std::uint32_t>& driven);
+
+/// The same list for renumbered particles (Particles::permute with `order`; new_of_old is its
+/// inverse): every pair keeps its history, an entry whose new first particle is the later one
+/// is turned round (its image negated; the tangential spring is the same seen from either
+/// side), rows are sorted again, the wall rows and build positions follow their particles and
+/// the force blocks are indexed again.
+void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
+                             const std::vector<std::uint32_t>& new_of_old, int threads = 1);
+
+/// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
+/// two non-free particles are left out. History of pairs still within reach is carried over.
+/// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.
+/// `threads` build the rows side by side, in contiguous blocks joined in order: the list is the
+/// same whatever the count.
+void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,
+                          const Domain& domain, double skin, int threads = 1);
+
+} // namespace talus

@@ -1,0 +1,234 @@
+#include "render/snapshot_png.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+#include <cairo.h>
+#include <fmt/core.h>
+
+#include "talus/error.hpp"
+
+namespace talus {
+
+namespace {
+
+struct Rgb {
+  double r, g, b;
+};
+
+// A perceptually ordered dark-blue -> teal -> yellow ramp (viridis-like), u in [0, 1].
+Rgb ramp(double u) {
+  static constexpr Rgb stops[5] = {{0.267, 0.005, 0.329},
+                                   {0.229, 0.322, 0.545},
+                                   {0.128, 0.567, 0.551},
+                                   {0.369, 0.789, 0.383},
+                                   {0.993, 0.906, 0.144}};
+  u = std::clamp(u, 0.0, 1.0) * 4.0;
+  const int k = std::min(3, static_cast<int>(u));
+  const double f = u - k;
+  return {stops[k].r + f * (stops[k + 1].r - stops[k].r),
+          stops[k].g + f * (stops[k + 1].g - stops[k].g),
+          stops[k].b + f * (stops[k + 1].b - stops[k].b)};
+}
+
+// Distinct colours for categories (kinds, materials).
+Rgb category(std::size_t k) {
+  static constexpr Rgb palette[8] = {
+      {0.122, 0.467, 0.706}, {1.000, 0.498, 0.055}, {0.173, 0.627, 0.173}, {0.839, 0.153, 0.157},
+      {0.580, 0.404, 0.741}, {0.549, 0.337, 0.294}, {0.890, 0.467, 0.761}, {0.498, 0.498, 0.498}};
+  return palette[k % 8];
+}
+
+bool continuous(SnapshotColour c) {
+  return c == SnapshotColour::speed || c == SnapshotColour::size || c == SnapshotColour::force;
+}
+
+double field(const Frame& f, std::size_t i, SnapshotColour c) {
+  switch (c) {
+  case SnapshotColour::speed:
+    return norm(f.velocity[i]);
+  case SnapshotColour::size:
+    return f.radius[i];
+  case SnapshotColour::force:
+    return norm(f.force[i]);
+  case SnapshotColour::kind:
+    return f.kind[i];
+  case SnapshotColour::material:
+    return f.material[i];
+  }
+  return 0.0;
+}
+
+} // namespace
+
+SnapshotColour parse_colour(std::string_view name) {
+  if (name == "speed") return SnapshotColour::speed;
+  if (name == "size") return SnapshotColour::size;
+  if (name == "force") return SnapshotColour::force;
+  if (name == "kind") return SnapshotColour::kind;
+  if (name == "material") return SnapshotColour::material;
+  throw InvalidArgument("unknown colouring '" + std::string(name) +
+                        "'; allowed: speed, size, force, kind, material");
+}
+
+Rect frame_bounds(const Frame& f) {
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec2 hi{std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    lo = {std::min(lo.x, f.position[i].x - f.radius[i]),
+          std::min(lo.y, f.position[i].y - f.radius[i])};
+    hi = {std::max(hi.x, f.position[i].x + f.radius[i]),
+          std::max(hi.y, f.position[i].y + f.radius[i])};
+  }
+  for (const auto& [a, b] : f.walls)
+    for (const Vec2 e : {a, b}) {
+      lo = {std::min(lo.x, e.x), std::min(lo.y, e.y)};
+      hi = {std::max(hi.x, e.x), std::max(hi.y, e.y)};
+    }
+  return {lo, hi};
+}
+
+void write_frame_png(const Frame& f, const std::string& path, const PictureOptions& o) {
+  const Rect box = o.bounds.value_or(frame_bounds(f));
+  const Vec2 lo = box.lo, hi = box.hi;
+  if (!(hi.x > lo.x && hi.y > lo.y)) throw std::runtime_error("nothing to draw in " + path);
+
+  const double margin = 0.03 * (hi.x - lo.x);
+  const double bar_px = 70.0;
+  const double scale = (o.width_px - bar_px) / (hi.x - lo.x + 2.0 * margin);
+  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
+  height_px += height_px % 2; // even sizes: what video encoders want
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width_px, height_px);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_paint(cr);
+  const auto X = [&](double x) { return (x - lo.x + margin) * scale; };
+  const auto Y = [&](double y) { return height_px - 20.0 - (y - lo.y + margin) * scale; };
+
+  const std::size_t n = f.position.size();
+  double vmin = std::numeric_limits<double>::max(), vmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (f.kind[i] == 0)
+      vmin = std::min(vmin, field(f, i, o.colour)), vmax = std::max(vmax, field(f, i, o.colour));
+  if (vmin > vmax) vmin = vmax = 0.0;
+  if (o.range) std::tie(vmin, vmax) = *o.range;
+  const double span = vmax > vmin ? vmax - vmin : 1.0;
+
+  for (std::size_t i = 0; i < n; ++i) {
+    cairo_arc(cr, X(f.position[i].x), Y(f.position[i].y), f.radius[i] * scale, 0.0,
+              2.0 * std::numbers::pi);
+    Rgb c{0.35, 0.35, 0.35}; // wall particles
+    if (o.colour == SnapshotColour::kind)
+      c = category(f.kind[i]);
+    else if (o.colour == SnapshotColour::material)
+      c = f.kind[i] == 0 ? category(f.material[i]) : c;
+    else if (f.kind[i] == 0)
+      c = ramp((field(f, i, o.colour) - vmin) / span);
+    if (o.chains || !o.tracks.empty())
+      cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.25); // faded under the chains or tracks
+    else
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_fill(cr);
+  }
+  if (o.chains) { // thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force
+    double f_max = 0.0;
+    for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
+    if (o.chain_scale) f_max = *o.chain_scale;
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    for (const auto& ch : f.chains) {
+      if (f_max <= 0.0 || ch.force <= 0.0) continue;
+      const double u = std::min(1.0, ch.force / f_max);
+      cairo_set_source_rgb(cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
+      cairo_set_line_width(cr, 0.5 + 5.5 * u);
+      cairo_move_to(cr, X(ch.from.x), Y(ch.from.y));
+      cairo_line_to(cr, X(ch.to.x), Y(ch.to.y));
+      cairo_stroke(cr);
+    }
+  }
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  cairo_set_line_width(cr, 3.0);
+  for (const auto& [a, b] : f.walls) {
+    cairo_move_to(cr, X(a.x), Y(a.y));
+    cairo_line_to(cr, X(b.x), Y(b.y));
+    cairo_stroke(cr);
+  }
+
+  // trajectories: a line each in a strong colour, a dot where the particle is now
+  static constexpr Rgb track_colours[6] = {{0.85, 0.1, 0.1}, {0.1, 0.3, 0.9}, {0.0, 0.6, 0.2},
+                                           {0.9, 0.5, 0.0},  {0.6, 0.1, 0.7}, {0.0, 0.6, 0.7}};
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  for (std::size_t k = 0; k < o.tracks.size(); ++k) {
+    const auto& points = o.tracks[k].points;
+    if (points.empty()) continue;
+    const Rgb c = track_colours[k % 6];
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_line_width(cr, 2.5);
+    cairo_move_to(cr, X(points.front().x), Y(points.front().y));
+    for (const Vec2& q : points) cairo_line_to(cr, X(q.x), Y(q.y));
+    cairo_stroke(cr);
+    cairo_arc(cr, X(points.back().x), Y(points.back().y), 5.0, 0.0, 2.0 * std::numbers::pi);
+    cairo_fill(cr);
+  }
+
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 12.0);
+  const double bx = o.width_px - bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
+  if (continuous(o.colour)) { // colour bar with its range and unit
+    for (int k = 0; k < 100; ++k) {
+      const Rgb c = ramp(1.0 - k / 99.0);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
+      cairo_fill(cr);
+    }
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    const double unit = o.colour == SnapshotColour::size ? 1e3 : 1.0;
+    const char* label = o.colour == SnapshotColour::speed  ? "|v| m/s"
+                        : o.colour == SnapshotColour::size ? "R mm"
+                                                           : "|F| N";
+    const std::string top = fmt::format("{:.3g}", vmax * unit),
+                      bottom = fmt::format("{:.3g}", vmin * unit);
+    cairo_move_to(cr, bx - 5.0, by - 8.0);
+    cairo_show_text(cr, top.c_str());
+    cairo_move_to(cr, bx - 5.0, by + bh + 16.0);
+    cairo_show_text(cr, bottom.c_str());
+    cairo_move_to(cr, bx - 10.0, by + bh + 32.0);
+    cairo_show_text(cr, label);
+  } else { // a legend of the categories present
+    std::vector<std::size_t> present;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = o.colour == SnapshotColour::kind ? f.kind[i] : f.material[i];
+      if (std::find(present.begin(), present.end(), k) == present.end()) present.push_back(k);
+    }
+    std::sort(present.begin(), present.end());
+    static constexpr const char* kinds[3] = {"free", "fixed", "moved"};
+    for (std::size_t m = 0; m < present.size() && m < 20; ++m) {
+      const Rgb c = category(present[m]);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_rectangle(cr, bx - 10.0, by + 20.0 * static_cast<double>(m), 14.0, 14.0);
+      cairo_fill(cr);
+      cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+      const std::string name = o.colour == SnapshotColour::kind && present[m] < 3
+                                   ? kinds[present[m]]
+                                   : fmt::format("{}", present[m]);
+      cairo_move_to(cr, bx + 8.0, by + 20.0 * static_cast<double>(m) + 12.0);
+      cairo_show_text(cr, name.c_str());
+    }
+  }
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  const std::string stamp = fmt::format("t = {:.4f} s   N = {}", f.time, n);
+  cairo_move_to(cr, 10.0, 16.0);
+  cairo_show_text(cr, stamp.c_str());
+
+  cairo_destroy(cr);
+  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  cairo_surface_destroy(surface);
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error("cannot write picture " + path + ": " +
+                             cairo_status_to_string(status));
+}
+
+} // namespace talus

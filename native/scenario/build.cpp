@@ -1,0 +1,370 @@
+#include "scenario/build.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <tuple>
+#include <unistd.h>
+
+#include "analysis/observables.hpp"
+#include "materials/timestep.hpp"
+#include "scenario/geometry.hpp"
+#include "scenario/load.hpp"
+#include "scenario/packing.hpp"
+#include "scenario/size_distribution.hpp"
+
+namespace talus {
+
+namespace {
+
+std::uint32_t u32(std::size_t v) {
+  return static_cast<std::uint32_t>(v);
+}
+
+double grain_mass(const Scenario& s, const Material& m, double r) {
+  return shape_mass(s.particles.shape, r, m.density);
+}
+
+// A damping left to be derived from the restitution (Hertz' A), at the reference impact speed,
+// for a pair of mean grains.
+void resolve_damping(const Scenario& s, std::vector<Material>& materials, double r_mean) {
+  with_normal_law(s.simulation.normal_law, [&]<class N>() {
+    for (Material& m : materials)
+      N::resolve_damping(m, 0.5 * grain_mass(s, m, r_mean), 0.5 * r_mean,
+                         s.simulation.impact_speed);
+  });
+}
+
+std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing) {
+  const double length = norm(seg.b - seg.a);
+  const auto n = static_cast<std::size_t>(std::ceil(length / spacing));
+  std::vector<Vec2> out;
+  for (std::size_t k = 0; k <= n; ++k)
+    out.push_back(seg.a +
+                  (static_cast<double>(k) / static_cast<double>(std::max<std::size_t>(n, 1))) *
+                      (seg.b - seg.a));
+  return out;
+}
+
+// Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius, and
+// must not reach through an extra wall segment.
+void check_start_overlaps(const Scenario& s) {
+  const auto& list = s.particles.list;
+  for (std::size_t a = 0; a < list.size(); ++a) {
+    for (std::size_t b = a + 1; b < list.size(); ++b) {
+      const double overlap =
+          list[a].radius + list[b].radius - norm(list[a].position - list[b].position);
+      if (overlap > 0.01 * std::min(list[a].radius, list[b].radius) &&
+          (list[a].kind == "free" || list[b].kind == "free"))
+        throw ScenarioError("key 'particles.list': grains " + std::to_string(a) + " and " +
+                            std::to_string(b) + " overlap by " + std::to_string(overlap) +
+                            " m at the start; allowed: at most 1% of the smaller radius");
+    }
+    for (const SegmentSpec& seg : s.geometry.segments) {
+      const Segment w{seg.a, seg.b};
+      if (list[a].kind == "free" &&
+          norm(list[a].position - closest_point(w, list[a].position)) < 0.99 * list[a].radius)
+        throw ScenarioError("key 'particles.list': grain " + std::to_string(a) +
+                            " overlaps a wall segment at the start");
+    }
+  }
+}
+
+// Walls given by hand (extra segments, listed wall particles) must not leave an accidental gap
+// a grain can slip through: an opening wider than the smallest grain's diameter but narrower
+// than the largest's is refused. Wider openings (a silo's top, an orifice) are taken as meant;
+// builders' walls have no gaps at all.
+void check_wall_gaps(const Scenario& s, double r_min, double r_max) {
+  const auto gap_error = [&](const std::string& what, double gap) {
+    throw ScenarioError(
+        what + " leave a gap of " + std::to_string(gap) + " m, which a grain of diameter " +
+        std::to_string(2.0 * r_min) +
+        " m can pass; join them, or leave an opening wider than the largest grain (" +
+        std::to_string(2.0 * r_max) + " m)");
+  };
+  const auto& seg = s.geometry.segments;
+  for (std::size_t a = 0; a < seg.size(); ++a)
+    for (std::size_t b = a + 1; b < seg.size(); ++b)
+      for (const Vec2 p : {seg[a].a, seg[a].b})
+        for (const Vec2 q : {seg[b].a, seg[b].b}) {
+          const double gap = norm(p - q);
+          if (gap > 1e-12 && gap >= 2.0 * r_min && gap < 2.0 * r_max)
+            gap_error("key 'geometry.segments': segments " + std::to_string(a) + " and " +
+                          std::to_string(b),
+                      gap);
+        }
+  const auto& list = s.particles.list;
+  for (std::size_t a = 0; a < list.size(); ++a) {
+    if (list[a].kind != "fixed") continue;
+    for (std::size_t b = a + 1; b < list.size(); ++b) {
+      if (list[b].kind != "fixed") continue;
+      const double gap =
+          norm(list[a].position - list[b].position) - list[a].radius - list[b].radius;
+      if (gap >= 2.0 * r_min && gap < 2.0 * r_max)
+        gap_error("key 'particles.list': wall particles " + std::to_string(a) + " and " +
+                      std::to_string(b),
+                  gap);
+    }
+  }
+}
+
+} // namespace
+
+double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
+                               double r_min) {
+  double shortest = std::numeric_limits<double>::max();
+  for (const Material& a : materials)
+    for (const Material& b : materials) {
+      const PairParameters p = mix(a, b);
+      const double m_eff = 0.5 * std::min(grain_mass(s, a, r_min), grain_mass(s, b, r_min));
+      const double tc = with_normal_law(s.simulation.normal_law, [&]<class N>() {
+        return N::collision_time(p, m_eff, 0.5 * r_min, s.simulation.impact_speed);
+      });
+      shortest = std::min(shortest, tc);
+    }
+  return shortest;
+}
+
+BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) {
+  BuiltScenario out;
+  World& w = out.world;
+  w.materials = s.materials;
+  w.gravity = s.simulation.gravity;
+  RandomStream rng(s.simulation.seed, 1);
+
+  // refuse what the machine cannot hold before allocating it (a generous bound per particle on
+  // the neighbour list, contact history and the run's buffers: docs/performance.md, "Memory")
+  {
+    const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
+    const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
+    const double need = 700.0 * static_cast<double>(s.particles.count + s.particles.list.size());
+    if (pages > 0 && page > 0 && need > 0.8 * pages * page)
+      throw ScenarioError("key 'particles.count': " + std::to_string(s.particles.count) +
+                          " grains need about " + std::to_string(need / 1e9) +
+                          " GB; this machine has " + std::to_string(pages * page / 1e9) + " GB");
+  }
+  check_start_overlaps(s);
+
+  // grain sizes first: they set the wall particle radius, the timestep and the Hertz damping
+  std::vector<double> radii(s.particles.count);
+  for (double& r : radii) r = draw_radius(s.particles.size, rng);
+  double r_min = std::numeric_limits<double>::max(), r_sum = 0.0;
+  for (const double r : radii) r_min = std::min(r_min, r), r_sum += r;
+  for (const ExplicitParticle& e : s.particles.list)
+    if (e.kind == "free") r_min = std::min(r_min, e.radius), r_sum += e.radius;
+  const std::size_t n_grains = radii.size() + s.particles.list.size();
+  if (n_grains == 0)
+    throw ScenarioError("key 'particles.count': a scenario needs grains (count > 0 or a list)");
+  const double r_mean = r_sum / static_cast<double>(n_grains);
+  // the sizes a grain can have (not only those drawn this time) decide what a gap lets through
+  double r_small = std::numeric_limits<double>::max(), r_large = 0.0;
+  if (s.particles.count > 0) std::tie(r_small, r_large) = radius_range(s.particles.size);
+  for (const ExplicitParticle& e : s.particles.list)
+    if (e.kind == "free")
+      r_small = std::min(r_small, e.radius), r_large = std::max(r_large, e.radius);
+  check_wall_gaps(s, r_small, r_large);
+  resolve_damping(s, w.materials, r_mean);
+
+  // container
+  const ContainerShape shape = build_container(s.geometry);
+  const bool particle_walls = s.geometry.walls == "particles";
+  const double r_wall =
+      s.geometry.wall_particle_radius > 0.0 ? s.geometry.wall_particle_radius : r_min;
+  out.fill = s.packing.region.value_or(shape.fill);
+  if (particle_walls && !s.packing.region) { // wall particles reach r_wall into the container
+    out.fill.lo += Vec2{r_wall, r_wall};
+    out.fill.hi -= Vec2{r_wall, r_wall};
+  }
+  out.bounds = shape.bounds;
+  const std::uint16_t wall_mat =
+      material_index(s, s.geometry.wall_material, "geometry.wall_material");
+  std::vector<DriverSection> drivers = shape.drivers;
+  drivers.insert(drivers.end(), s.drivers.begin(), s.drivers.end());
+  const auto driven = [&](const std::string& group) {
+    return std::any_of(drivers.begin(), drivers.end(), [&](const DriverSection& d) {
+      return d.target == group || d.target == "walls";
+    });
+  };
+  for (const auto& [group, segments] : shape.groups) {
+    if (group == "walls") continue; // the union, filled below from the members
+    for (const SegmentSpec& seg : segments) {
+      DriverTargets& own = out.groups[group];
+      DriverTargets& all = out.groups["walls"];
+      if (!particle_walls) {
+        const auto k = u32(w.add_wall(seg.a, seg.b, wall_mat));
+        own.segments.push_back(k);
+        all.segments.push_back(k);
+        continue;
+      }
+      // wall particles a radius apart: overlapping, so no grain can pass between them
+      for (const Vec2 p : wall_particle_positions(seg, r_wall)) {
+        const auto k = u32(w.add_particle({.position = p,
+                                           .radius = r_wall,
+                                           .material = wall_mat,
+                                           .kind = driven(group) ? Kind::moved : Kind::fixed}));
+        own.particles.push_back(k);
+        all.particles.push_back(k);
+      }
+    }
+  }
+
+  // domain
+  if (s.geometry.periodic != "none") {
+    w.domain.lo = s.geometry.box->lo;
+    w.domain.hi = s.geometry.box->hi;
+    w.domain.periodic_x = s.geometry.periodic.find('x') != std::string::npos;
+    w.domain.periodic_y = s.geometry.periodic.find('y') != std::string::npos;
+  }
+
+  // grains: the explicit list, then the counted ones placed in the fill region
+  for (const ExplicitParticle& e : s.particles.list)
+    w.add_particle({.position = e.position,
+                    .radius = e.radius,
+                    .material = material_index(s, e.material, "particles.list.material"),
+                    .kind = e.kind == "fixed" ? Kind::fixed : Kind::free,
+                    .shape = s.particles.shape,
+                    .velocity = e.velocity,
+                    .angular_velocity = e.angular_velocity,
+                    .mass = e.mass});
+  if (!radii.empty()) {
+    if (!(out.fill.hi.x > out.fill.lo.x && out.fill.hi.y > out.fill.lo.y))
+      throw ScenarioError("key 'packing.region': no region to place grains in; give a geometry "
+                          "builder or packing.region = [x0, y0, x1, y1]");
+    // explicit grains inside the region keep their room: the lattice starts above them
+    Rect region = out.fill;
+    for (const ExplicitParticle& e : s.particles.list)
+      if (e.position.x > region.lo.x && e.position.x < region.hi.x && e.position.y < region.hi.y)
+        region.lo.y = std::max(region.lo.y, e.position.y + e.radius);
+    const auto placed = s.packing.method == "random" ? random_packing(radii, region, rng)
+                                                     : lattice_packing(radii, region, rng);
+    const std::uint16_t grain_mat = material_index(s, s.particles.material, "particles.material");
+    for (const PlacedGrain& g : placed)
+      w.add_particle({.position = g.position,
+                      .radius = g.radius,
+                      .material = grain_mat,
+                      .shape = s.particles.shape});
+  }
+
+  // timestep
+  out.collision_time = shortest_collision_time(s, w.materials, r_min);
+  SimulationConfig& c = out.config;
+  c.integrator = s.simulation.integrator;
+  c.normal_law = s.simulation.normal_law;
+  c.tangential_law = s.simulation.tangential_law;
+  c.threads = s.simulation.threads;
+  c.skin = s.simulation.skin;
+  // the frost models keep per-particle state of their own by index: no renumbering under them
+  c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
+  c.timestep = out.collision_time / s.simulation.timestep_factor;
+  if (s.simulation.timestep) {
+    // the stiffest oscillation: linear k_n, or Hertz' tangent stiffness at the impact speed
+    double k_max = 0.0, m_min = std::numeric_limits<double>::max();
+    for (const Material& a : w.materials) {
+      m_min = std::min(m_min, 0.5 * grain_mass(s, a, r_min));
+      for (const Material& b : w.materials) {
+        const PairParameters p = mix(a, b);
+        const double k = with_normal_law(c.normal_law, [&]<class N>() {
+          return N::peak_stiffness(p, m_min, 0.5 * r_min, s.simulation.impact_speed);
+        });
+        k_max = std::max(k_max, k);
+      }
+    }
+    const double bound = max_stable_timestep(c.integrator, k_max, m_min);
+    if (*s.simulation.timestep > bound) {
+      std::ostringstream msg;
+      msg << "key 'simulation.timestep': " << *s.simulation.timestep
+          << " s is above the stability bound " << bound << " s of the " << to_string(c.integrator)
+          << " integrator for the stiffest contact (collision time " << out.collision_time
+          << " s); allowed: <= " << bound << " s, or \"auto\" (collision time / "
+          << s.simulation.timestep_factor << " = " << c.timestep << " s)";
+      throw ScenarioError(msg.str());
+    }
+    c.timestep = *s.simulation.timestep;
+  }
+
+  // the stability guard's box: the container and as much again around it
+  if (out.bounds.hi.x > out.bounds.lo.x && out.bounds.hi.y > out.bounds.lo.y) {
+    const Vec2 size = out.bounds.hi - out.bounds.lo;
+    c.escape_lo = out.bounds.lo - size;
+    c.escape_hi = out.bounds.hi + size;
+  }
+
+  // sedimentation: let the grains fall and settle with the orifice closed, no drivers
+  if (s.packing.method == "sedimentation" && !radii.empty()) {
+    World settling = w;
+    for (const SegmentSpec& g : shape.gate) settling.add_wall(g.a, g.b, wall_mat);
+    Simulation sim(std::move(settling), c);
+    double scale = 0.0;
+    for (std::size_t i = 0; i < sim.world().particles.size(); ++i)
+      if (sim.world().particles.is_free(i))
+        scale += sim.world().particles.mass[i] * norm(w.gravity) * sim.world().particles.radius[i];
+    if (scale == 0.0)
+      throw ScenarioError("key 'packing.method': sedimentation needs gravity (simulation.gravity)");
+    const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(0.005 / c.timestep));
+    out.settled = false;
+    while (sim.time() < s.packing.settle_max_time) {
+      sim.run(chunk);
+      const double ke = energies(sim).kinetic();
+      if (progress) progress(sim.time(), ke);
+      if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {
+        out.settled = true;
+        break;
+      }
+    }
+    out.settle_time = sim.time();
+    // by id: the settling run may have renumbered its particles (simulation.sort_every)
+    const Particles& settled = sim.world().particles;
+    for (std::size_t k = 0; k < settled.size(); ++k) {
+      const std::uint32_t i = settled.id[k];
+      if (!w.particles.is_free(i)) continue;
+      w.particles.position[i] = settled.position[k];
+      w.particles.angle[i] = settled.angle[k];
+    }
+  }
+
+  // drivers
+  for (const DriverSection& d : drivers) {
+    const auto group = out.groups.find(d.target);
+    if (group == out.groups.end()) {
+      std::string names;
+      for (const auto& [name, _] : out.groups) names += (names.empty() ? "" : ", ") + name;
+      throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
+                          "' in this geometry; groups: " + names);
+    }
+    Driver driver;
+    driver.targets = group->second;
+    if (d.type == "vibrate")
+      driver.motion = Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
+    else if (d.type == "translate")
+      driver.motion = Translate{d.velocity};
+    else
+      driver.motion = Rotate{d.centre, d.angular_velocity};
+    w.drivers.push_back(std::move(driver));
+  }
+
+  // tracked particles
+  const Particles& p = w.particles;
+  for (const auto id : s.track.ids) {
+    if (id >= p.size())
+      throw ScenarioError("key 'track.ids': particle id " + std::to_string(id) +
+                          " does not exist (" + std::to_string(p.size()) + " particles)");
+    out.tracked.push_back(id);
+  }
+  if (s.track.select != "none") {
+    std::vector<std::uint32_t> free;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.is_free(i)) free.push_back(u32(i));
+    const auto key = [&](std::uint32_t i) {
+      if (s.track.select == "largest") return -p.radius[i];
+      if (s.track.select == "smallest") return p.radius[i];
+      return norm2(p.position[i] - s.track.at);
+    };
+    std::stable_sort(free.begin(), free.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    for (std::size_t k = 0; k < std::min(s.track.count, free.size()); ++k)
+      out.tracked.push_back(free[k]);
+  }
+  return out;
+}
+
+} // namespace talus

@@ -1,0 +1,169 @@
+// Scenario -> TOML, with every key written: the run folder's scenario.toml reruns the same run.
+#include <sstream>
+
+#include "scenario/load.hpp"
+
+namespace talus {
+
+namespace {
+
+toml::array vec(Vec2 v) {
+  return toml::array{v.x, v.y};
+}
+toml::array rect(const Rect& r) {
+  return toml::array{r.lo.x, r.lo.y, r.hi.x, r.hi.y};
+}
+toml::array list(const std::vector<double>& v) {
+  toml::array a;
+  for (const double x : v) a.push_back(x);
+  return a;
+}
+
+} // namespace
+
+std::string to_toml(const Scenario& s) {
+  toml::table root;
+  root.insert("name", s.name);
+  root.insert("description", s.description);
+
+  const SimulationSection& sim = s.simulation;
+  toml::table t;
+  t.insert("duration", sim.duration);
+  if (sim.timestep)
+    t.insert("timestep", *sim.timestep);
+  else
+    t.insert("timestep", "auto");
+  t.insert("timestep_factor", sim.timestep_factor);
+  t.insert("integrator", std::string(to_string(sim.integrator)));
+  t.insert("normal_law", std::string(name_of(sim.normal_law)));
+  t.insert("tangential_law", std::string(name_of(sim.tangential_law)));
+  t.insert("gravity", vec(sim.gravity));
+  t.insert("seed", static_cast<std::int64_t>(sim.seed));
+  t.insert("threads", sim.threads);
+  t.insert("skin", sim.skin);
+  t.insert("sort_every", static_cast<std::int64_t>(sim.sort_every));
+  t.insert("impact_speed", sim.impact_speed);
+  root.insert("simulation", t);
+
+  toml::array materials;
+  for (const Material& m : s.materials) {
+    materials.push_back(toml::table{{"name", m.name},
+                                    {"density", m.density},
+                                    {"young", m.young},
+                                    {"poisson", m.poisson},
+                                    {"restitution", m.restitution},
+                                    {"friction", m.friction},
+                                    {"tangential_damping", m.tangential_damping},
+                                    {"normal_stiffness", m.normal_stiffness},
+                                    {"tangential_stiffness_ratio", m.tangential_stiffness_ratio},
+                                    {"normal_damping_rate", m.normal_damping_rate},
+                                    {"hertz_damping", m.hertz_damping}});
+  }
+  root.insert("materials", materials);
+
+  const ParticlesSection& p = s.particles;
+  toml::table size{{"distribution", p.size.distribution},
+                   {"mean_radius", p.size.mean_radius},
+                   {"spread", p.size.spread},
+                   {"class", p.size.wentworth_class},
+                   {"radii", list(p.size.radii)},
+                   {"fractions", list(p.size.fractions)}};
+  toml::array explicit_list;
+  for (const ExplicitParticle& e : p.list)
+    explicit_list.push_back(toml::table{{"position", vec(e.position)},
+                                        {"radius", e.radius},
+                                        {"velocity", vec(e.velocity)},
+                                        {"angular_velocity", e.angular_velocity},
+                                        {"mass", e.mass},
+                                        {"kind", e.kind},
+                                        {"material", e.material}});
+  toml::table particles{{"count", static_cast<std::int64_t>(p.count)},
+                        {"shape", p.shape == Shape::disk ? "disk" : "sphere"},
+                        {"material", p.material},
+                        {"size", size}};
+  if (!explicit_list.empty()) particles.insert("list", explicit_list);
+  root.insert("particles", particles);
+
+  toml::table packing{{"method", s.packing.method},
+                      {"settle_energy", s.packing.settle_energy},
+                      {"settle_max_time", s.packing.settle_max_time}};
+  if (s.packing.region) packing.insert("region", rect(*s.packing.region));
+  root.insert("packing", packing);
+
+  const GeometrySection& g = s.geometry;
+  toml::table geometry{{"builder", g.builder},
+                       {"width", g.width},
+                       {"height", g.height},
+                       {"orifice", g.orifice},
+                       {"wall_angle", g.wall_angle},
+                       {"lid_speed", g.lid_speed},
+                       {"radius", g.radius},
+                       {"angular_velocity", g.angular_velocity},
+                       {"walls", g.walls},
+                       {"wall_particle_radius", g.wall_particle_radius},
+                       {"wall_material", g.wall_material},
+                       {"periodic", g.periodic}};
+  if (g.box) geometry.insert("box", rect(*g.box));
+  toml::array segments;
+  for (const SegmentSpec& seg : g.segments)
+    segments.push_back(toml::table{{"a", vec(seg.a)}, {"b", vec(seg.b)}});
+  if (!segments.empty()) geometry.insert("segments", segments);
+  root.insert("geometry", geometry);
+
+  toml::array drivers;
+  for (const DriverSection& d : s.drivers)
+    drivers.push_back(toml::table{{"type", d.type},
+                                  {"target", d.target},
+                                  {"amplitude", d.amplitude},
+                                  {"frequency", d.frequency},
+                                  {"phase", d.phase},
+                                  {"direction", vec(d.direction)},
+                                  {"velocity", vec(d.velocity)},
+                                  {"centre", vec(d.centre)},
+                                  {"angular_velocity", d.angular_velocity}});
+  if (!drivers.empty()) root.insert("drivers", drivers);
+
+  toml::array ids;
+  for (const auto id : s.track.ids) ids.push_back(static_cast<std::int64_t>(id));
+  root.insert("track", toml::table{{"ids", ids},
+                                   {"select", s.track.select},
+                                   {"at", vec(s.track.at)},
+                                   {"count", static_cast<std::int64_t>(s.track.count)}});
+
+  const OutputSection& o = s.output;
+  toml::array pictures;
+  for (const auto& name : o.pictures) pictures.push_back(name);
+  root.insert("output", toml::table{{"thermo_interval", o.thermo_interval},
+                                    {"snapshot_interval", o.snapshot_interval},
+                                    {"checkpoint_interval", o.checkpoint_interval},
+                                    {"track_interval", o.track_interval},
+                                    {"thesis_out", o.thesis_out},
+                                    {"picture", o.picture},
+                                    {"pictures", pictures},
+                                    {"movie", o.movie},
+                                    {"movie_color", o.movie_color}});
+  const FrostSection& f = s.frost;
+  root.insert("frost", toml::table{{"model", f.model},
+                                   {"heave_factor", f.heave_factor},
+                                   {"kinetic_threshold", f.kinetic_threshold},
+                                   {"min_interval", f.min_interval},
+                                   {"cycles", static_cast<std::int64_t>(f.cycles)},
+                                   {"permafrost_depth", f.permafrost_depth},
+                                   {"heave_strain", f.heave_strain},
+                                   {"conductivity_ratio", f.conductivity_ratio},
+                                   {"stone_water", f.stone_water},
+                                   {"ice_content", f.ice_content},
+                                   {"crust_length", f.crust_length},
+                                   {"column_width", f.column_width},
+                                   {"stone_radius", f.stone_radius},
+                                   {"freeze_time", f.freeze_time},
+                                   {"thaw_time", f.thaw_time},
+                                   {"frost_pull", f.frost_pull},
+                                   {"thawed_material", f.thawed_material}});
+  std::ostringstream out;
+  out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
+      << root << "\n";
+  return out.str();
+}
+
+} // namespace talus

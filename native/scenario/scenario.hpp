@@ -1,0 +1,169 @@
+#pragma once
+// A whole experiment, typed and in SI units, as a scenario file describes it (every default
+// filled). The loader (load.hpp) makes one from TOML; build.hpp makes a World from one.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "integrate/integrator.hpp"
+#include "materials/material.hpp"
+#include "state/particles.hpp"
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+struct Rect {
+  Vec2 lo;
+  Vec2 hi;
+  friend bool operator==(const Rect&, const Rect&) = default;
+};
+
+struct SimulationSection {
+  double duration = 1.0;          ///< s
+  std::optional<double> timestep; ///< s; empty: "auto"
+  double timestep_factor = 50.0;  ///< auto timestep = shortest collision time / factor
+  Integrator integrator = Integrator::gear;
+  NormalLaw normal_law = law_id<LinearSpringDashpot>;
+  TangentialLaw tangential_law = law_id<CundallStrack>;
+  Vec2 gravity{0.0, -9.81}; ///< m/s^2
+  std::uint64_t seed = 1;
+  int threads = 0;                 ///< 0: all cores
+  double skin = 0.0;               ///< m; 0: automatic
+  std::uint64_t sort_every = 1000; ///< steps between renumberings of the particles; 0: never
+  double impact_speed = 1.0;       ///< m/s: reference speed for Hertz collision times
+};
+
+struct SizeSpec {
+  std::string distribution = "uniform"; ///< uniform | wentworth | discrete
+  double mean_radius = 5.0e-3;          ///< m (uniform)
+  double spread = 0.0;                  ///< m: radii uniform in mean +- spread (uniform)
+  std::string wentworth_class;          ///< e.g. "coarse sand" (wentworth)
+  std::vector<double> radii;            ///< m (discrete)
+  std::vector<double> fractions;        ///< number fractions, sum 1 (discrete)
+};
+
+struct ExplicitParticle {
+  Vec2 position;
+  double radius = 0.0;
+  Vec2 velocity{};
+  double angular_velocity = 0.0;
+  double mass = 0.0; ///< 0: from shape and density
+  std::string kind = "free";
+  std::string material;
+};
+
+struct ParticlesSection {
+  std::size_t count = 0;
+  Shape shape = Shape::sphere;
+  std::string material;
+  SizeSpec size;
+  std::vector<ExplicitParticle> list; ///< placed as given, before the counted grains
+};
+
+struct PackingSection {
+  std::string method = "lattice"; ///< lattice | random | sedimentation
+  std::optional<Rect> region;     ///< where grains are placed; default: the geometry's fill region
+  double settle_energy = 1.0e-6;  ///< sedimentation ends when E_kin < this x sum(m g R)
+  double settle_max_time = 5.0;   ///< s
+};
+
+struct SegmentSpec {
+  Vec2 a;
+  Vec2 b;
+  friend bool operator==(const SegmentSpec&, const SegmentSpec&) = default;
+};
+
+struct GeometrySection {
+  std::string builder =
+      "none";          ///< none | box | silo | window_box | hopper | hourglass | grain_press | drum
+  double width = 0.0;  ///< m
+  double height = 0.0; ///< m
+  double orifice = 0.0;              ///< m (hopper, hourglass)
+  double wall_angle = 60.0;          ///< degrees from horizontal (hopper, hourglass)
+  double lid_speed = 0.0;            ///< m/s downward (grain_press)
+  double radius = 0.0;               ///< m (drum)
+  double angular_velocity = 0.0;     ///< rad/s (drum)
+  std::string walls = "segments";    ///< segments | particles
+  double wall_particle_radius = 0.0; ///< m; 0: the smallest grain radius
+  std::string wall_material;
+  std::string periodic = "none";     ///< none | x | y | xy
+  std::optional<Rect> box;           ///< the periodic box
+  std::vector<SegmentSpec> segments; ///< extra walls
+};
+
+struct DriverSection {
+  std::string type;             ///< vibrate | translate | rotate
+  std::string target = "walls"; ///< a wall group of the geometry
+  double amplitude = 0.0;       ///< m
+  double frequency = 0.0;       ///< Hz
+  double phase = 0.0;           ///< rad
+  Vec2 direction{0.0, 1.0};
+  Vec2 velocity{};               ///< m/s
+  Vec2 centre{};                 ///< m
+  double angular_velocity = 0.0; ///< rad/s
+};
+
+struct TrackSection {
+  std::vector<std::uint32_t> ids;
+  std::string select = "none"; ///< none | largest | smallest | nearest
+  Vec2 at{};                   ///< nearest to this point
+  std::size_t count = 1;
+};
+
+struct OutputSection {
+  double thermo_interval = 0.01;    ///< s
+  double snapshot_interval = 0.1;   ///< s; 0: none
+  double checkpoint_interval = 1.0; ///< s; 0: only at the end
+  double track_interval = 0.001;    ///< s
+  bool thesis_out = false;          ///< also write the thesis' .out snapshots
+  bool picture = true;              ///< final.png at the end
+  /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
+  /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).
+  std::vector<std::string> pictures;
+  bool movie = false;                ///< movie.mp4 of all snapshots at the end (needs ffmpeg)
+  std::string movie_color = "speed"; ///< the movie's colour field
+};
+
+/// Frost heave. "uniform": the thesis' rule (sec. 5.2): whenever the kinetic energy falls below
+/// kinetic_threshold x sum(m g R) and at least min_interval has passed since the last freeze,
+/// every free grain's height above the floor is multiplied by heave_factor. "front": a freezing
+/// front descends column by column and heaves the frozen crust, then a thaw front releases it
+/// (frost/frost_front.hpp); a cycle starts when the grains are at rest, as above.
+struct FrostSection {
+  std::string model = "none"; ///< none | uniform | front
+  double heave_factor = 1.5;
+  double kinetic_threshold = 1.0e-6; ///< x sum(m g R) of the free grains
+  double min_interval = 0.05;        ///< s
+  std::size_t cycles = 0;            ///< stop after this many cycles (0: run to duration)
+  // the front model
+  double permafrost_depth = 0.0;   ///< m below the surface
+  double heave_strain = 0.1;       ///< heave per unit depth of frozen fines
+  double conductivity_ratio = 3.0; ///< stone / soil
+  double stone_water = 0.0;        ///< stone / soil latent heat per volume
+  double ice_content = 0.0;        ///< ice per volume of frozen fines (0: their pore fraction)
+  double crust_length = 0.0;       ///< m (0: the column width)
+  double column_width = 0.0;       ///< m (0: the largest stone's diameter)
+  double stone_radius = 0.0;       ///< m (0: 1.5 x the median radius)
+  double freeze_time = 0.5;        ///< s
+  double thaw_time = 0.5;          ///< s
+  bool frost_pull = true;          ///< stones are released when their lowest point thaws
+  std::string thawed_material;     ///< thawed fines take this material ("": unchanged)
+};
+
+struct Scenario {
+  std::string name = "scenario";
+  std::string description;
+  SimulationSection simulation;
+  std::vector<Material> materials;
+  ParticlesSection particles;
+  PackingSection packing;
+  GeometrySection geometry;
+  std::vector<DriverSection> drivers;
+  TrackSection track;
+  OutputSection output;
+  FrostSection frost;
+};
+
+} // namespace talus

@@ -1,0 +1,326 @@
+#include "simulation/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include <omp.h>
+
+#include "neighbours/cell_grid.hpp"
+#include "neighbours/skin.hpp"
+#include "talus/error.hpp"
+
+namespace talus {
+
+namespace {
+
+void validate_setup(const World& w, const SimulationConfig& c) {
+  require(std::isfinite(c.timestep) && c.timestep > 0.0,
+          "simulation.timestep = " + std::to_string(c.timestep) + " s; allowed: > 0");
+  require(c.skin >= 0.0, "simulation.skin must be >= 0 m (0: automatic)");
+  require(c.threads >= 0, "simulation.threads must be >= 0 (0: all cores)");
+  require(c.max_overlap_fraction > 0.0, "simulation.max_overlap_fraction must be > 0");
+  with_normal_law(c.normal_law, [&]<class N>() {
+    for (const Material& m : w.materials) {
+      const std::string problem = N::material_error(m);
+      require(problem.empty(), problem);
+    }
+  });
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    require(w.particles.material[i] < w.materials.size(),
+            "particle " + std::to_string(i) + ": material index out of range");
+  for (const Segment& s : w.walls)
+    require(s.material < w.materials.size(), "wall: material index out of range");
+}
+
+} // namespace
+
+Simulation::Simulation(World world, SimulationConfig config)
+    : Simulation(SimulationState{std::move(world), {}, 0.0, 0}, config, false) {}
+
+Simulation Simulation::restore(SimulationState state, SimulationConfig config) {
+  return Simulation(std::move(state), config, true);
+}
+
+Simulation::Simulation(SimulationState state, SimulationConfig config, bool restoring)
+    : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
+      time_(state.time), steps_(state.steps) {
+  validate_setup(world_, config_);
+  pairs_ = PairTable(world_.materials);
+  const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
+  const std::size_t per_thread = std::max<std::size_t>(1, config_.min_particles_per_thread);
+  const auto useful = static_cast<int>(std::min<std::size_t>(
+      world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
+  threads_ = std::max(1, useful);
+  list_moved();
+  if (restoring) {
+    require(list_.row_offset.size() == world_.particles.size() + 1,
+            "restored state: the neighbour list does not match the particles");
+    index_force_blocks(list_); // derived from the rows, not stored
+    return;
+  }
+  for (std::size_t i = 0; i < world_.particles.size(); ++i)
+    if (world_.particles.kind[i] == Kind::fixed) { // a fixed wall particle never moves
+      world_.particles.velocity[i] = {};
+      world_.particles.angular_velocity[i] = 0.0;
+    }
+  for (Driver& d : world_.drivers) {
+    attach(d, world_.particles, world_.walls);
+    apply(d, 0.0, world_.particles, world_.walls);
+  }
+  rebuild_list(1);
+  compute_forces();
+  if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
+}
+
+void Simulation::step() {
+  advance(false);
+}
+
+void Simulation::advance(bool fuse) {
+  const double dt = config_.timestep;
+  Particles& p = world_.particles;
+  const bool verlet = config_.integrator == Integrator::verlet;
+  double displacement2 = predicted_displacement2_;
+  if (!predicted_) {
+    // forces started by the last stage count only between two steps of one run() (a fused step
+    // that finished): anything a caller does between run() calls may change them
+    forces_started_ = false;
+    if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
+    displacement2 = verlet ? verlet_predict(p, dt, threads_) : gear_predict(p, dt, threads_);
+  }
+  predicted_ = false;
+  bool moved = drifted(displacement2);
+  const double t_next = static_cast<double>(steps_ + 1) * dt;
+  for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
+  if (driven_stale_) list_moved();
+  moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
+  list_stale_ = false;
+  if (moved) rebuild_list(threads_);
+  const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
+                                         : fuse  ? ForceStageEnd::verlet_correct_predict
+                                                 : ForceStageEnd::verlet_correct);
+  // while the overlap is there (in a step that velocity Verlet fused, the grains are already
+  // predicted one timestep on, and the diagnosis names the deepest contact there)
+  if (max_overlap_seen_ > config_.max_overlap_fraction) guard();
+  if (fuse) {
+    StepSeam seam = forces;
+    if (verlet) {
+      std::swap(p.force, p.force_previous); // as verlet_predict leaves them
+      std::swap(p.torque, p.torque_previous);
+    } else {
+      seam = gear_correct_predict(p, dt, world_.gravity, threads_);
+    }
+    forces_started_ = true; // by the fused pass, for the next force stage
+    finite_ = seam.finite;
+    predicted_displacement2_ = seam.displacement2;
+    predicted_ = true;
+  } else if (verlet) {
+    finite_ = forces.finite;
+  } else {
+    const StepSeam corrected = gear_correct(p, dt, threads_);
+    finite_ = corrected.finite;
+    drift_bound_ += std::sqrt(corrected.displacement2);
+  }
+  ++steps_;
+  time_ = t_next;
+  guard();
+}
+
+void Simulation::rebuild_list(int threads) {
+  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
+  drift_bound_ = 0.0;
+  near_stale_ = true;
+}
+
+bool Simulation::drifted(double displacement2) {
+  drift_bound_ += std::sqrt(displacement2);
+  if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
+  ++drift_tests_;
+  return particles_moved(list_, world_.particles, threads_);
+}
+
+double Simulation::next_skin() const {
+  // config_.skin stays 0 for the automatic skin (it is saved in checkpoints), so that a resumed
+  // run chooses its skins as the uninterrupted one does
+  return config_.skin > 0.0
+             ? config_.skin
+             : automatic_skin(world_.particles, world_.walls, world_.domain, config_.timestep);
+}
+
+void Simulation::sort_particles() {
+  Particles& p = world_.particles;
+  if (p.size() < 2) return;
+  // The cells' order: bands of `band` cells side by side, each band row by row from the bottom,
+  // the particles of a cell in ascending index (the grid's counting sort): a function of the
+  // positions alone. A band's rows are at most 256 cells long, so a particle's neighbours above
+  // it follow it within a few hundred particles however wide the system is (rows across a very
+  // wide strip measured slower, and narrower bands too: docs/performance.md, "Renumbering").
+  CellGrid grid;
+  grid.build(p.position, world_.domain, 2.0 * p.max_radius(), threads_);
+  constexpr int band = 256;
+  std::vector<std::uint32_t> order;
+  order.reserve(p.size());
+  for (int x0 = 0; x0 < grid.nx; x0 += band)
+    for (int cy = 0; cy < grid.ny; ++cy)
+      for (int cx = x0; cx < std::min(grid.nx, x0 + band); ++cx) {
+        const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(grid.nx) +
+                              static_cast<std::size_t>(cx);
+        order.insert(order.end(), grid.items.begin() + grid.cell_start[c],
+                     grid.items.begin() + grid.cell_start[c + 1]);
+      }
+  new_of_old_.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    new_of_old_[order[k]] = static_cast<std::uint32_t>(k);
+  p.permute(order, threads_);
+  renumber_neighbour_list(list_, order, new_of_old_, threads_);
+  for (Driver& d : world_.drivers)
+    for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];
+  list_moved();
+  near_stale_ = true;
+  ++renumberings_;
+}
+
+void Simulation::list_moved() {
+  // drivers move only Kind::moved particles (attach checks), and held ones are Kind::moved too
+  driven_.clear();
+  for (std::size_t i = 0; i < world_.particles.size(); ++i)
+    if (world_.particles.kind[i] == Kind::moved) driven_.push_back(static_cast<std::uint32_t>(i));
+  driven_stale_ = false;
+}
+
+void Simulation::hold(std::uint32_t i, bool held) {
+  require(i < world_.particles.size(), "hold: no particle " + std::to_string(i));
+  require(world_.particles.kind[i] != Kind::fixed,
+          "hold: particle " + std::to_string(i) + " is a fixed wall particle");
+  // A held grain has no pairs with other held grains in the neighbour list (the list pairs a
+  // grain with a free one), so a released one needs a new list before the next force stage:
+  // otherwise it would fall into a held neighbour unseen until its drift forced a rebuild, and
+  // be shot out by the overlap it had reached by then.
+  if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
+  world_.particles.set_held(i, held);
+  near_stale_ = true; // a held grain moves by displace_held: its entries are all candidates
+  driven_stale_ = true;
+}
+
+void Simulation::set_material(std::uint32_t i, std::size_t m) {
+  require(i < world_.particles.size(), "set_material: no particle " + std::to_string(i));
+  require(m < world_.materials.size(), "set_material: material index " + std::to_string(m) +
+                                           " out of range; allowed: 0 to " +
+                                           std::to_string(world_.materials.size() - 1));
+  world_.particles.material[i] = static_cast<std::uint16_t>(m);
+}
+
+void Simulation::displace_held(std::uint32_t i, Vec2 d) {
+  if (i >= world_.particles.size() || world_.particles.kind[i] != Kind::moved)
+    throw std::logic_error("displace_held: particle " + std::to_string(i) + " is not held");
+  world_.particles.position[i] += d;
+}
+
+namespace {
+template <class T> std::size_t bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+} // namespace
+
+std::size_t Simulation::footprint_bytes() const {
+  const Particles& p = world_.particles;
+  const GearDerivatives& g = p.gear;
+  const NeighbourList& l = list_;
+  return bytes(p.position) + bytes(p.velocity) + bytes(p.force) + bytes(p.angle) +
+         bytes(p.angular_velocity) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
+         bytes(p.inertia) + bytes(p.inv_mass) + bytes(p.inv_inertia) + bytes(p.material) +
+         bytes(p.kind) + bytes(p.id) + bytes(g.r2) + bytes(g.r3) + bytes(g.r4) + bytes(g.phi2) +
+         bytes(g.phi3) + bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous) +
+         bytes(world_.walls) + bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) +
+         bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
+         bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
+         bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
+         bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_) +
+         bytes(near_.entry) + bytes(near_.slot) + bytes(near_.count);
+}
+
+void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
+                     std::uint64_t every) {
+  // Between two steps of this loop nothing looks at the state, so a step's correction and the
+  // next one's prediction are one pass (advance), except after the last step, a step the
+  // observer or the escape check sees, and before a step that renumbers (it orders the
+  // particles by the corrected positions).
+  const bool box =
+      config_.escape_hi.x > config_.escape_lo.x && config_.escape_hi.y > config_.escape_lo.y;
+  for (std::uint64_t s = 0; s < steps; ++s) {
+    const std::uint64_t next = steps_ + 1;
+    advance(s + 1 < steps && !(observer && every > 0 && next % every == 0) &&
+            !(config_.sort_interval > 0 && next % config_.sort_interval == 0) &&
+            !(box && next % 16 == 0));
+    if (observer && every > 0 && steps_ % every == 0) observer(*this);
+  }
+}
+
+void Simulation::guard() const {
+  const Particles& p = world_.particles;
+  const bool finite = finite_;
+  const bool box =
+      config_.escape_hi.x > config_.escape_lo.x && config_.escape_hi.y > config_.escape_lo.y;
+  if (box && steps_ % 16 == 0) {
+    const Domain& d = world_.domain;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 r = p.position[i];
+      const bool out =
+          (!d.periodic_x && (r.x < config_.escape_lo.x || r.x > config_.escape_hi.x)) ||
+          (!d.periodic_y && (r.y < config_.escape_lo.y || r.y > config_.escape_hi.y));
+      if (out && p.is_free(i)) {
+        std::ostringstream msg;
+        msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
+            << " s): particle id " << p.id[i] << " left the domain at (" << r.x << ", " << r.y
+            << ") m, speed " << norm(p.velocity[i])
+            << " m/s. A grain shot out by an overlap too deep for the timestep: try a smaller "
+               "timestep (about the collision time / 50), or check for a gap in the walls.";
+        throw InstabilityError(msg.str());
+      }
+    }
+  }
+  if (finite && max_overlap_seen_ <= config_.max_overlap_fraction) return;
+
+  std::ostringstream msg;
+  msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
+      << " s): ";
+  if (!finite) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (!std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y)) {
+        msg << "particle id " << p.id[i] << " has a non-finite position or velocity";
+        break;
+      }
+  } else {
+    // name the deepest contact, its collision time and a timestep that resolves it
+    ContactView worst;
+    double ratio = -1.0;
+    for_each_contact([&](const ContactView& v) {
+      const double r =
+          v.geometry.overlap / std::min(p.radius[v.i], v.wall < 0 ? p.radius[v.j] : p.radius[v.i]);
+      if (r > ratio) ratio = r, worst = v;
+    });
+    msg << "an overlap reached " << max_overlap_seen_ << " of the smaller radius (limit "
+        << config_.max_overlap_fraction << ")";
+    if (ratio >= 0.0) {
+      const PairParameters& pp = *worst.parameters;
+      const ContactGeometry& g = worst.geometry;
+      const double k = with_normal_law(config_.normal_law,
+                                       [&]<class N>() -> double { return N::stiffness(pp, g); });
+      const double tc = std::numbers::pi * std::sqrt(g.m_eff / k);
+      msg << " between particle id " << p.id[worst.i] << " at (" << p.position[worst.i].x << ", "
+          << p.position[worst.i].y << ") m and "
+          << (worst.wall < 0 ? "particle id " + std::to_string(p.id[worst.j])
+                             : "wall segment " + std::to_string(worst.wall))
+          << "; their collision time is about " << tc << " s, so a timestep of about " << tc / 50.0
+          << " s (collision time / 50) would resolve it";
+    }
+  }
+  msg << ". The timestep is probably too large for the stiffest contact: try a smaller "
+         "timestep (about the collision time / 50), softer materials or lower speeds.";
+  throw InstabilityError(msg.str());
+}
+
+} // namespace talus

@@ -1,0 +1,190 @@
+#pragma once
+// The facade a user drives: owns the World, runs the stages of a step, calls observers.
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "core/contact_vectors.hpp"
+#include "integrate/integrator.hpp"
+#include "materials/pair_table.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "simulation/world.hpp"
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+struct SimulationConfig {
+  double timestep = 0.0; ///< s, required
+  Integrator integrator = Integrator::gear;
+  NormalLaw normal_law = law_id<LinearSpringDashpot>;
+  TangentialLaw tangential_law = law_id<CundallStrack>;
+  double skin = 0.0; ///< m; 0: automatic, chosen at every build (neighbours/skin.hpp)
+  int threads = 0;   ///< 0: all cores (OpenMP default)
+  /// Fewer particles than this per thread is not worth the threads' overhead: small systems
+  /// use fewer threads (the results are bit-identical whatever the count).
+  std::size_t min_particles_per_thread = 500;
+  /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
+  double max_overlap_fraction = 0.5;
+  /// Stability guard: the run stops when a free particle leaves [escape_lo, escape_hi] (checked
+  /// every 16 steps; an empty box, the default, turns the check off). Periodic directions wrap.
+  Vec2 escape_lo{};
+  Vec2 escape_hi{};
+  /// Every this many steps (at the start of a step whose count is a multiple), the particles
+  /// are renumbered in the order of the cells they lie in (bands of cells, each row by row),
+  /// so that neighbours lie close in memory as flow mixes the grains; 0: never. Particle
+  /// indices change then (ids do not): see Simulation::renumberings.
+  std::uint64_t sort_interval = 0;
+};
+
+/// One touching contact, as the force stage sees it. `wall` is the segment index for a
+/// particle-wall contact (then j is unused), or -1 for a particle pair.
+struct ContactView {
+  std::uint32_t i = 0;
+  std::uint32_t j = 0;
+  std::int32_t wall = -1;
+  ContactGeometry geometry;
+  const PairParameters* parameters = nullptr;
+  double history = 0.0;
+};
+
+/// Everything that determines how a run continues: saved in checkpoints.
+struct SimulationState {
+  World world;
+  NeighbourList neighbours;
+  double time = 0.0;
+  std::uint64_t steps = 0;
+};
+
+class Simulation {
+public:
+  /// Validates the setup (materials, laws, timestep) and computes the initial forces.
+  Simulation(World world, SimulationConfig config);
+  /// Continues from a saved state exactly: drivers keep their origins, forces, integrator
+  /// derivatives and the neighbour list (with its build positions) are taken as saved, so the
+  /// continuation is bit-identical to the run that was saved. `config.threads` may differ.
+  static Simulation restore(SimulationState state, SimulationConfig config);
+  /// A copy of the state, for a checkpoint.
+  SimulationState state() const { return {world_, list_, time_, steps_}; }
+
+  /// One time step: predict, move bodies, neighbours, contacts, correct, guard.
+  void step();
+  /// `steps` steps; `observer` (if any) is called every `every` steps after the step.
+  void run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer = {},
+           std::uint64_t every = 1);
+
+  double time() const { return time_; }
+  std::uint64_t step_count() const { return steps_; }
+  const World& world() const { return world_; }
+  /// Mutable access, for setting up or changing the world between steps (not while stepping).
+  /// The next steps test the neighbour list against every particle's build position, since
+  /// the caller may have moved particles.
+  World& edit_world() {
+    drift_bound_ = unknown_drift;
+    return world_;
+  }
+  const SimulationConfig& config() const { return config_; }
+  const PairTable& pairs() const { return pairs_; }
+  const NeighbourList& neighbours() const { return list_; }
+  int threads() const { return threads_; }
+  /// Between steps, for a model that holds grains in place (frost): holds particle i at rest
+  /// (not integrated; free grains still feel it) or frees it. Its drift is then checked against
+  /// the neighbour list like a driven particle's.
+  void hold(std::uint32_t i, bool held);
+  /// Between steps: particle i is made of material m from now on (frost: a thawed fine);
+  /// throws InvalidArgument for a material index out of range.
+  void set_material(std::uint32_t i, std::size_t m);
+  /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
+  void displace_held(std::uint32_t i, Vec2 d);
+  /// Between steps: renumbers the particles in the order of the cells they lie in (as
+  /// `sort_interval` does). The neighbour list, its history, the drivers' targets and the held
+  /// particles follow; a caller that keeps particle indices maps them with new_indices().
+  void sort_particles();
+  /// How many times the particles were renumbered, and the new index of every old index at the
+  /// last time (empty before).
+  std::uint64_t renumberings() const { return renumberings_; }
+  const std::vector<std::uint32_t>& new_indices() const { return new_of_old_; }
+  /// How many times every particle was compared with its position at the neighbour list's build
+  /// (only when the drift bound could have reached half the skin), and how many force stages
+  /// chose the contact candidates again (ContactCandidates), since construction.
+  std::uint64_t drift_tests() const { return drift_tests_; }
+  std::uint64_t candidate_choices() const { return candidate_choices_; }
+  /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
+  /// (allocated capacity, not the process' resident size).
+  std::size_t footprint_bytes() const;
+  /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
+  void for_each_contact(const std::function<void(const ContactView&)>& f) const;
+
+private:
+  Simulation(SimulationState state, SimulationConfig config, bool restoring);
+  /// What the force stage does to each particle as soon as its force is complete.
+  enum class ForceStageEnd {
+    nothing,
+    verlet_correct,         ///< velocity Verlet's second half kick
+    verlet_correct_predict, ///< that, then the next step's first half kick and drift
+  };
+  /// Forces of the current state, and `end` for every particle. Returns whether every corrected
+  /// velocity is finite and, with verlet_correct_predict, the prediction's largest displacement.
+  StepSeam compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
+  /// One step. With `fuse`, the correction of this step and the prediction of the next are done
+  /// together (velocity Verlet: in the force stage, particle by particle; Gear: one pass), and
+  /// the state between the two steps is the predicted one: run() fuses only where nothing looks
+  /// at the state in between.
+  void advance(bool fuse);
+  void guard() const;
+  void list_moved();        ///< driven_: every Kind::moved particle
+  double next_skin() const; ///< the skin of the next list build (config or automatic)
+  /// The neighbour list's drift test for the particles, after a pass that moved them at most
+  /// sqrt(displacement2): has a grain moved more than half the skin since the build? Adds the
+  /// displacement to drift_bound_ and compares the positions with the build's only when the
+  /// bound could have reached half the skin.
+  bool drifted(double displacement2);
+  /// Builds the neighbour list again; the drift bound starts from 0 and the contact candidates
+  /// are chosen again.
+  void rebuild_list(int threads);
+  /// The share of a drift limit the drift bound may reach before the shortcuts it allows stop:
+  /// the rest is for rounding (each pass's displacement is rounded once more when it is added to
+  /// a position, half a unit in the last place of the coordinate, which over the hundreds of
+  /// steps a list lasts stays far below a tenth of the limit).
+  static constexpr double drift_margin = 0.9;
+
+  World world_;
+  SimulationConfig config_;
+  PairTable pairs_;
+  NeighbourList list_;
+  std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
+  ContactCandidates near_;                ///< the entries the force stage tests
+  double near_base_ = 0.0;                ///< drift_bound_ when near_ was chosen
+  bool near_stale_ = true; ///< near_ must be chosen again (new list, renumbered, a grain held)
+  std::vector<PairForce> wall_force_;
+  /// each force block's time in the last force stages (ns, smoothed), and the order in which the
+  /// threads take the blocks (force_block_order)
+  std::vector<std::uint64_t> block_work_;
+  std::vector<std::ptrdiff_t> block_order_;
+  double time_ = 0.0;
+  std::uint64_t steps_ = 0;
+  int threads_ = 1;
+  double max_overlap_seen_ = 0.0;     ///< largest overlap / smaller radius in the last force stage
+  bool finite_ = true;                ///< every position and velocity finite after the last step
+  std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
+  std::uint64_t renumberings_ = 0;
+  std::vector<std::uint32_t> new_of_old_;
+  bool driven_stale_ = false;            ///< a particle was held or freed since driven_ was listed
+  bool list_stale_ = false;              ///< a held particle was freed: rebuild the list
+  bool predicted_ = false;               ///< the next step's prediction is done (only inside run())
+  double predicted_displacement2_ = 0.0; ///< and how far it moved the farthest particle
+  /// The next force stage's forces and torques are started already (each free particle's
+  /// weight, no torque): a fused pass did it while it had them in cache (only inside run()).
+  bool forces_started_ = false;
+  /// An upper bound of how far any free particle moved since the list's build (m): the sum of
+  /// the largest displacement of every pass over the particles since then. Every particle is
+  /// compared with its build position only once this bound could have reached half the skin,
+  /// which gives the same answers as comparing them at every step. Unknown (infinite) after a
+  /// restore and after edit_world, until the next build. Driven particles are tested apart.
+  static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
+  double drift_bound_ = unknown_drift;
+  std::uint64_t drift_tests_ = 0;
+  std::uint64_t candidate_choices_ = 0;
+};
+
+} // namespace talus

@@ -1,0 +1,71 @@
+#pragma once
+// The geometry and kinematics of a contact, shared by every contact law and every engine. One
+// definition for any number type R (number.hpp): one contact with double, several side by side
+// with a SIMD type; each element rounds as the double code does, so both give the same bits.
+#include "talus/number.hpp"
+
+namespace talus {
+
+/// One touching pair (i, j), j possibly a wall. Conventions: n points from j to i; t = e_z x n
+/// = (-n_y, n_x); the overlap xi = R_i + R_j - |r_i - r_j| > 0; the contact point lies
+/// mid-overlap, at lever arms a_i = R_i - xi/2 from i and a_j = R_j - xi/2 from j (so a_i + a_j =
+/// |r_i - r_j| and torques conserve angular momentum exactly); v_n and v_t are the normal and
+/// tangential components of the velocity of i's contact point relative to j's (v_n < 0:
+/// approaching).
+template <class R> struct ContactGeometryOf {
+  R normal_x{}, normal_y{};
+  R overlap{};
+  R r_eff{};
+  R m_eff{};
+  R arm_i{};
+  R arm_j{};
+  R v_normal{};
+  R v_tangent{};
+
+  /// Rate of change of the overlap, d xi / dt = -v_n.
+  R overlap_rate() const { return -v_normal; }
+};
+using ContactGeometry = ContactGeometryOf<double>;
+
+/// Geometry of a particle-particle pair: d = r_i - r_j (minimum image), dist = |d| > 0, the
+/// velocities by components, w the spins. `with_r_eff` = false leaves r_eff at 0 for laws that
+/// do not use it (it saves a division).
+template <class R>
+ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_j, R vx_i, R vy_i,
+                                   R vx_j, R vy_j, R w_i, R w_j, bool with_r_eff = true) {
+  ContactGeometryOf<R> g;
+  const R inverse = 1.0 / dist;
+  g.normal_x = inverse * dx;
+  g.normal_y = inverse * dy;
+  g.overlap = r_i + r_j - dist;
+  g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : R{};
+  g.m_eff = m_i * m_j / (m_i + m_j);
+  g.arm_i = r_i - 0.5 * g.overlap;
+  g.arm_j = r_j - 0.5 * g.overlap;
+  const R dvx = vx_i - vx_j, dvy = vy_i - vy_j;
+  g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
+  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * g.arm_i + w_j * g.arm_j);
+  return g;
+}
+
+/// Geometry of a particle against the nearest point c of a wall: d = r_i - c, dist = |d| > 0, the
+/// wall's velocity (vx_wall, vy_wall) at c. The wall has infinite radius and mass: r_eff = R,
+/// m_eff = m.
+template <class R>
+ContactGeometryOf<R> wall_geometry(R dx, R dy, R dist, R r_i, R m_i, R vx_i, R vy_i, R w_i,
+                                   R vx_wall, R vy_wall) {
+  ContactGeometryOf<R> g;
+  g.normal_x = dx / dist;
+  g.normal_y = dy / dist;
+  g.overlap = r_i - dist;
+  g.r_eff = r_i;
+  g.m_eff = m_i;
+  g.arm_i = r_i - 0.5 * g.overlap;
+  g.arm_j = R{};
+  const R dvx = vx_i - vx_wall, dvy = vy_i - vy_wall;
+  g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
+  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - w_i * g.arm_i;
+  return g;
+}
+
+} // namespace talus

@@ -1,0 +1,105 @@
+#pragma once
+// Normal contact laws: the magnitude of the repulsive force from the overlap and its rate, and
+// what a run needs to know of each law before it starts (its collision time, its stiffest
+// oscillation, the material values it requires). `force` and `stiffness` take one contact or
+// several side by side (number.hpp); the same lines serve both.
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include "talus/closed_forms.hpp"
+#include "talus/contact_geometry.hpp"
+#include "talus/material.hpp"
+#include "talus/pair_parameters.hpp"
+
+namespace talus {
+
+/// Linear spring-dashpot (thesis eq. 2.10): F_n = k_n xi + eta_n dxi/dt, never attractive.
+/// eta_n = gamma_n m_eff, or 2 zeta sqrt(k_n m_eff) from the restitution (closed_forms.hpp).
+struct LinearSpringDashpot {
+  static constexpr std::string_view name = "linear";
+  static constexpr int thesis_force_law = 1; ///< its number in the thesis' input files
+  static constexpr bool uses_r_eff = false;
+  template <class P, class G> static auto force(const P& p, const G& g) {
+    return not_below_zero(p.normal_stiffness * g.overlap +
+                          p.normal_dashpot(g.m_eff) * g.overlap_rate());
+  }
+  /// Normal stiffness k_n seen by a tangential spring.
+  template <class P, class G> static auto stiffness(const P& p, const G&) {
+    return p.normal_stiffness;
+  }
+  static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
+    return 0.5 * p.normal_stiffness * g.overlap * g.overlap;
+  }
+  /// Duration of a contact of reduced mass m_eff (any impact speed).
+  static double collision_time(const PairParameters& p, double m_eff, double /*r_eff*/,
+                               double /*impact_speed*/) {
+    return linear_collision_time(p.normal_stiffness, p.normal_dashpot(m_eff), m_eff);
+  }
+  /// The stiffness of the stiffest oscillation of such a contact, for the timestep's bound.
+  static double peak_stiffness(const PairParameters& p, double, double, double) {
+    return p.normal_stiffness;
+  }
+  /// What is wrong with a material for this law ("" if nothing).
+  static std::string material_error(const Material& m) {
+    if (!(m.normal_stiffness > 0.0))
+      return "material '" + m.name +
+             "': normal_stiffness must be > 0 N/m for the linear normal law (or choose normal "
+             "law 'hertz')";
+    if (!(m.normal_damping_rate >= 0.0 || m.restitution > std::exp(-2.0)))
+      return "material '" + m.name + "': restitution = " + std::to_string(m.restitution) +
+             " cannot be reached by the never-attractive linear spring-dashpot; allowed: "
+             "(0.1354, 1]";
+    return {};
+  }
+  /// Fills in a damping left to be derived (negative): the linear law takes its damping from the
+  /// restitution when the pair is mixed, so the Hertz constant is unused.
+  static void resolve_damping(Material& m, double /*m_eff*/, double /*r_eff*/,
+                              double /*impact_speed*/) {
+    if (m.hertz_damping < 0.0) m.hertz_damping = 0.0;
+  }
+};
+
+/// Hertzian viscoelastic (Brilliantov et al. 1996; thesis eq. 2.9):
+/// F_n = rho (xi^3/2 + 3/2 A sqrt(xi) dxi/dt), rho = 4/3 E* sqrt(R*), never attractive.
+struct HertzViscoelastic {
+  static constexpr std::string_view name = "hertz";
+  static constexpr int thesis_force_law = 0;
+  static constexpr bool uses_r_eff = true;
+  template <class P, class G> static auto force(const P& p, const G& g) {
+    const auto rho = 4.0 / 3.0 * p.effective_young * square_root(g.r_eff);
+    const auto s = square_root(g.overlap);
+    return not_below_zero(rho * s * (g.overlap + 1.5 * p.hertz_damping * g.overlap_rate()));
+  }
+  /// Tangent stiffness dF/dxi = 2 E* sqrt(R* xi), used to scale a linear tangential spring.
+  template <class P, class G> static auto stiffness(const P& p, const G& g) {
+    return 2.0 * p.effective_young * square_root(g.r_eff * g.overlap);
+  }
+  static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
+    const double rho = 4.0 / 3.0 * p.effective_young * std::sqrt(g.r_eff);
+    return 0.4 * rho * g.overlap * g.overlap * std::sqrt(g.overlap);
+  }
+  /// The elastic duration of an impact at impact_speed.
+  static double collision_time(const PairParameters& p, double m_eff, double r_eff,
+                               double impact_speed) {
+    return hertz_collision_time(m_eff, hertz_rho(p.effective_young, r_eff), impact_speed);
+  }
+  /// dF/dxi at the largest overlap of an impact at impact_speed.
+  static double peak_stiffness(const PairParameters& p, double m_eff, double r_eff,
+                               double impact_speed) {
+    const double rho = hertz_rho(p.effective_young, r_eff);
+    return 1.5 * rho * std::sqrt(hertz_max_overlap(m_eff, rho, impact_speed));
+  }
+  static std::string material_error(const Material&) { return {}; }
+  /// A from the restitution at the reference impact speed, for a contact of m_eff and r_eff.
+  static void resolve_damping(Material& m, double m_eff, double r_eff, double impact_speed) {
+    if (m.hertz_damping >= 0.0) return;
+    m.hertz_damping =
+        m.restitution >= 1.0
+            ? 0.0
+            : hertz_damping_for_restitution(m.restitution, m_eff,
+                                            hertz_rho(effective_young(m, m), r_eff), impact_speed);
+  }
+};
+
+} // namespace talus

@@ -1,0 +1,80 @@
+#pragma once
+// Everything a contact law needs about a pair of materials, and how the pair's values are mixed
+// from the two materials. One definition for any number type (number.hpp): the table of every
+// pair holds doubles; an engine that computes several contacts side by side gathers them into its
+// SIMD type with gather().
+#include <algorithm>
+#include <cmath>
+
+#include "talus/closed_forms.hpp"
+#include "talus/material.hpp"
+#include "talus/number.hpp"
+
+namespace talus {
+
+/// Mixing rules (see docs/model.md): moduli by the Hertz and Mindlin series rules; stiffness k_n
+/// by the harmonic mean (a material paired with itself keeps its own k_n); restitution, friction
+/// and damping by the arithmetic mean.
+template <class R> struct PairParametersOf {
+  R normal_stiffness{};                           ///< k_n, N/m
+  R damping_rate{};                               ///< gamma_n, 1/s: eta_n += gamma_n m_eff
+  R damping_sqrt_coeff{};                         ///< 2 zeta sqrt(k_n): eta_n += this * sqrt(m_eff)
+  R tangential_stiffness_ratio = R{} + 2.0 / 7.0; ///< k_t / k_n (Cundall-Strack)
+  R tangential_damping{};                         ///< gamma_t, 1/s
+  R friction{};                                   ///< mu
+  R effective_young{};                            ///< E*, Pa
+  R effective_shear{};                            ///< G*, Pa
+  R hertz_damping{};                              ///< A, s
+  R restitution = R{} + 1.0;                      ///< the mixed e (informational for the Hertz law)
+
+  /// Linear dashpot coefficient eta_n (kg/s) for a pair of reduced mass m_eff.
+  R normal_dashpot(R m_eff) const {
+    const R rate_part = damping_rate * m_eff;
+    if (all_zero(damping_sqrt_coeff)) return rate_part;
+    return select(damping_sqrt_coeff == 0.0, rate_part,
+                  rate_part + damping_sqrt_coeff * square_root(m_eff));
+  }
+
+  /// The parameters whose every field is f(a.field, b.field): how an engine puts the parameters
+  /// of several contacts side by side (the one list of the fields besides their declaration).
+  template <class S, class F>
+  static PairParametersOf gather(const PairParametersOf<S>& a, const PairParametersOf<S>& b, F f) {
+    return {f(a.normal_stiffness, b.normal_stiffness),
+            f(a.damping_rate, b.damping_rate),
+            f(a.damping_sqrt_coeff, b.damping_sqrt_coeff),
+            f(a.tangential_stiffness_ratio, b.tangential_stiffness_ratio),
+            f(a.tangential_damping, b.tangential_damping),
+            f(a.friction, b.friction),
+            f(a.effective_young, b.effective_young),
+            f(a.effective_shear, b.effective_shear),
+            f(a.hertz_damping, b.hertz_damping),
+            f(a.restitution, b.restitution)};
+  }
+};
+using PairParameters = PairParametersOf<double>;
+
+/// The parameters of a contact between materials a and b (for a wall, b is its material).
+inline PairParameters mix(const Material& a, const Material& b) {
+  PairParameters p;
+  const auto mean = [](double x, double y) { return 0.5 * (x + y); };
+  if (a.normal_stiffness > 0.0 && b.normal_stiffness > 0.0)
+    p.normal_stiffness =
+        2.0 * a.normal_stiffness * b.normal_stiffness / (a.normal_stiffness + b.normal_stiffness);
+  p.restitution = mean(a.restitution, b.restitution);
+  if (a.normal_damping_rate >= 0.0 || b.normal_damping_rate >= 0.0) {
+    p.damping_rate =
+        mean(std::max(a.normal_damping_rate, 0.0), std::max(b.normal_damping_rate, 0.0));
+  } else {
+    p.damping_sqrt_coeff =
+        2.0 * linear_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
+  }
+  p.tangential_stiffness_ratio = mean(a.tangential_stiffness_ratio, b.tangential_stiffness_ratio);
+  p.tangential_damping = mean(a.tangential_damping, b.tangential_damping);
+  p.friction = mean(a.friction, b.friction);
+  p.effective_young = effective_young(a, b);
+  p.effective_shear = effective_shear(a, b);
+  p.hertz_damping = mean(a.hertz_damping, b.hertz_damping);
+  return p;
+}
+
+} // namespace talus
