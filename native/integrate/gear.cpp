@@ -53,7 +53,7 @@ struct GearCorrector {
       : k0(gear_c[0] * dt * dt / 2.0), k1(gear_c[1] * dt / 2.0), k3(gear_c[3] * 3.0 / dt),
         k4(gear_c[4] * 12.0 / (dt * dt)) {}
   // whether the corrected position and velocity are finite, and the squared displacement
-  StepSeam operator()(Particles& p, std::size_t i) const {
+  PassReport operator()(Particles& p, std::size_t i) const {
     auto& g = p.gear;
     const Vec2 da = p.force[i] * p.inv_mass[i] - g.r2[i];
     const Vec2 displacement = k0 * da;
@@ -152,7 +152,7 @@ double gear_predict(Particles& p, double dt, int threads) {
   return farthest2;
 }
 
-StepSeam gear_correct(Particles& p, double dt, int threads) {
+PassReport gear_correct(Particles& p, double dt, int threads) {
   const GearCorrector correct(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   bool finite = true;
@@ -161,14 +161,14 @@ StepSeam gear_correct(Particles& p, double dt, int threads) {
     reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     if (p.kind[i] == Kind::free) {
-      const StepSeam s = correct(p, static_cast<std::size_t>(i));
+      const PassReport s = correct(p, static_cast<std::size_t>(i));
       finite = s.finite && finite;
       farthest2 = std::max(farthest2, s.displacement2);
     }
   return {finite, farthest2};
 }
 
-StepSeam gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads) {
+PassReport gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads) {
   const GearCorrector correct(dt);
   const GearPredictor predict(dt);
   const auto n = static_cast<std::ptrdiff_t>(p.size());

@@ -34,7 +34,7 @@ double max_stable_timestep(Integrator integrator, double stiffness, double m_eff
 /// farthest one, for the neighbour list's drift bound (Simulation: the list is tested against its
 /// build positions only when the sum of these over the passes since the build could have reached
 /// half the skin).
-struct StepSeam {
+struct PassReport {
   bool finite = true;       ///< every corrected position and velocity finite
   double displacement2 = 0; ///< the largest squared displacement of a free particle (m^2)
 };
@@ -56,12 +56,12 @@ void gear_initialise(Particles& p);
 double gear_predict(Particles& p, double dt, int threads);
 /// Corrects every predicted derivative by the difference of F/m and the predicted acceleration.
 /// `finite` is false if a position or velocity came out non-finite.
-StepSeam gear_correct(Particles& p, double dt, int threads);
+PassReport gear_correct(Particles& p, double dt, int threads);
 /// gear_correct, then gear_predict for the next step, particle by particle in one pass over
 /// memory (the same arithmetic: the results are bit-identical to the two passes). The
 /// displacement is that of both together. It leaves every force and torque as the next force
 /// stage starts them (start_forces, with `gravity`).
-StepSeam gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads);
+PassReport gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threads);
 
 /// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the forces
 /// in `force` and no branch on the kind: fixed and moved particles have inv_mass = 0 (no kick),

@@ -10,44 +10,14 @@
 #include <omp.h>
 
 #include "core/contact_lanes.hpp"
+#include "simulation/late_pass.hpp"
+#include "simulation/particle_finish.hpp"
 #include "simulation/simulation.hpp"
+#include "simulation/wall_pass.hpp"
 
 namespace talus {
 
 namespace {
-
-struct WallHit {
-  Vec2 point;     // nearest point of the segment
-  double u = 0.0; // position along the segment, 0 at a, 1 at b
-  bool touching = false;
-  bool vertex() const { return u <= 0.0 || u >= 1.0; }
-};
-
-WallHit wall_hit(const Segment& s, Vec2 p, double radius) {
-  WallHit h;
-  const Vec2 ab = s.b - s.a;
-  const double l2 = norm2(ab);
-  h.u = l2 > 0.0 ? dot(p - s.a, ab) / l2 : 0.0;
-  h.point = h.u <= 0.0 ? s.a : (h.u >= 1.0 ? s.b : s.a + h.u * ab);
-  const double d2 = norm2(p - h.point);
-  h.touching = d2 < radius * radius && d2 > 0.0;
-  return h;
-}
-
-// A particle touching the shared end point of two segments touches that point only once: an end
-// point contact is dropped when a segment sharing that end point is touched along its face, or
-// when an earlier segment of the particle's list already touches the same end point.
-bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* segment,
-                      const Segments& walls, std::size_t k) {
-  const Vec2 v = hits[k].point;
-  for (std::size_t m = 0; m < hits.size(); ++m) {
-    if (m == k || !hits[m].touching) continue;
-    const Segment& o = walls[segment[m]];
-    if (o.a != v && o.b != v) continue;
-    if (!hits[m].vertex() || m < k) return true;
-  }
-  return false;
-}
 
 // A list entry found touching by the first pass over a stretch of rows (see force_stage).
 struct TouchingEntry {
@@ -59,144 +29,11 @@ constexpr std::uint32_t no_slot = ~std::uint32_t{0};
 // Rows per stretch: their particles' data stays in the L1 cache between the two passes.
 constexpr std::ptrdiff_t stretch_rows = NeighbourList::stretch_rows;
 
-// What the force stage does with a particle once its force is complete: for the particles
-// [first, last), it returns whether they stayed finite and the largest squared displacement. The
-// loops are not inlined into the stage: its own loops are compiled worse with them (tiled 1e6
-// 37.9 against 35.3 ns per particle-step; docs/performance.md).
-struct NoEnd {
-  StepSeam range(std::size_t, std::size_t) const { return {}; }
-};
-// velocity Verlet's correction (single steps)
-struct VerletCorrect {
-  Particles& p;
-  double half;
-  [[gnu::noinline]] StepSeam range(std::size_t first, std::size_t last) const {
-    const double h = half; // a local: the stores below could otherwise change the member
-    bool finite = true;
-    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, h) && finite;
-    return {finite, 0.0};
-  }
-};
-// velocity Verlet's correction and the next step's prediction (Simulation::run): no later row
-// names these particles, so nothing in this force stage reads them any more. It also starts the
-// next step's forces (start_forces) in force_previous and torque_previous, which the swap after
-// this stage makes the next step's force and torque: their lines were just read, so the next
-// force stage needs no pass of its own to set them (about 3.5 ns per particle-step at 1e6, where
-// that pass waited on memory; docs/performance.md).
-struct VerletCorrectPredict {
-  Particles& p;
-  double dt, half;
-  Vec2 gravity;
-  [[gnu::noinline]] StepSeam range(std::size_t first, std::size_t last) const {
-    const double step = dt, h = half;
-    const Vec2 g = gravity;
-    // two particles at a time, one per lane (about 3% of a step at 1e4, 8% at 1e6)
-    LaneMask finite_lanes = {-1, -1};
-    Lanes far{0.0, 0.0};
-    std::size_t k = first;
-    for (; k + 1 < last; k += 2) {
-      const Lanes d2 = verlet_correct_predict_two(p, k, step, h, finite_lanes);
-      far = select(d2 > far, d2, far);
-      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
-      start_forces(p, k + 1, g, p.force_previous.data(), p.torque_previous.data());
-    }
-    bool finite = finite_lanes[0] != 0 && finite_lanes[1] != 0;
-    double farthest2 = std::max(far[0], far[1]);
-    for (; k < last; ++k) {
-      finite = verlet_correct_one(p, k, h) && finite;
-      farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h));
-      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
-    }
-    return {finite, farthest2};
-  }
-};
-
 // What the first pass learns of an entry, for the candidates.
-struct Gap {
+struct EntryGap {
   double dist2, reach;
   std::uint32_t i, j;
 };
-
-// Late particles per chunk that a thread takes at a time in the wall contacts and the late pass
-// (about 17 chunks at 1e5): a particle's sums are its own, so which thread takes a chunk changes
-// no result. Chunks taken one at a time, not an equal split: the wall contacts gather in a few
-// places (a floor's particles come first), which an equal split gives to one thread.
-constexpr int late_chunk = 256;
-
-// The wall contacts of late particle i (particles with wall contacts are late): their forces into
-// `out`, one per entry of its wall row (0 if not touching); returns the largest overlap / radius.
-// Not inlined into the stage (its loops are compiled worse with more code in them).
-template <class N, class T>
-[[gnu::noinline]] double wall_contacts(const Particles& p, NeighbourList& list,
-                                       const Segments& walls, const PairTable& pairs,
-                                       std::vector<PairForce>& out, double dt, std::uint32_t i,
-                                       std::vector<WallHit>& hits) {
-  const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
-  double worst = 0.0;
-  if (w0 == w1) return worst;
-  const Vec2 ri = p.position[i];
-  const double Ri = p.radius[i];
-  hits.clear();
-  for (std::uint32_t e = w0; e < w1; ++e)
-    hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
-  for (std::uint32_t e = w0; e < w1; ++e) {
-    const WallHit& h = hits[e - w0];
-    if (!h.touching ||
-        (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
-      out[e] = {};
-      list.wall_history[e] = 0.0;
-      continue;
-    }
-    const Segment& s = walls[list.wall_segment[e]];
-    const Vec2 d = ri - h.point;
-    const ContactGeometry g = wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i],
-                                            p.angular_velocity[i], s.velocity_at(h.point));
-    out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
-    worst = std::max(worst, g.overlap / Ri);
-  }
-  return worst;
-}
-
-// The late particles late[q0, q1): each adds, in a fixed order, its deferred pair forces (in
-// entry order), then its wall contacts; then they are done, by runs of consecutive particles (a
-// layer of a packing at a block's start is late, so runs are long: `done` takes two at a time
-// there, where it took them one by one).
-template <class Done>
-[[gnu::noinline]] StepSeam
-finish_late(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
-            const std::vector<PairForce>& wf, const Done& done, std::size_t q0, std::size_t q1) {
-  for (std::size_t q = q0; q < q1; ++q) {
-    const std::uint32_t k = list.late[q];
-    for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
-      const PairForce& f = deferred[list.deferred_slot[c]];
-      p.force[k] -= f.force;
-      p.torque[k] += f.torque_j;
-    }
-    for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
-      p.force[k] += wf[e].force;
-      p.torque[k] += wf[e].torque_i;
-    }
-  }
-  StepSeam seam{true, 0.0};
-  for (std::size_t q = q0; q < q1;) {
-    std::size_t r = q + 1;
-    while (r < q1 && list.late[r] == list.late[r - 1] + 1) ++r;
-    const StepSeam s = done.range(list.late[q], list.late[r - 1] + std::size_t{1});
-    seam.finite = seam.finite && s.finite;
-    seam.displacement2 = std::max(seam.displacement2, s.displacement2);
-    q = r;
-  }
-  return seam;
-}
-
-// The walls' reactions, particle by particle: the wall rows in order (a particle's wall entries
-// follow those of the particles before it).
-void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>& wf,
-                        Segments& walls) {
-  for (Segment& s : walls) s.force = {};
-  for (std::size_t e = 0; e < list.wall_segment.size(); ++e)
-    walls[list.wall_segment[e]].force -= wf[e].force;
-}
 
 // Forces between particles, block by block (NeighbourList: force blocks). A block first sets the
 // force of its own particles to their weight (unless the last stage did: `forces_started`), then
@@ -205,27 +42,23 @@ void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>&
 // so blocks run side by side, and the order of every sum is fixed by the list alone: results do
 // not depend on the thread count. The threads take the blocks one at a time, the longest first
 // by the time each took in the last stages (force_block_order), so that a thread that finishes
-// early takes more and the last ones, when a thread may wait, are short. A fixed share per thread
-// (consecutive blocks with an equal part of the measured time) left the two threads of a 1e5
-// step 0.25 ms apart on average, 14% of the stage: the blocks' times change from step to step
-// by more than the share could follow; taken one at a time, longest first, 0.055 ms
-// (docs/performance.md).
+// early takes more and the last ones, when a thread may wait, are short: the blocks' times change
+// from step to step by more than a fixed share per thread could follow (docs/performance.md,
+// "Force blocks").
 // A block goes through its rows by stretches of 64, in two passes. The first tests the entries
 // and writes down the touching ones, with masks instead of a branch per entry: in a disordered
-// packing which neighbours touch follows no pattern a branch predictor can learn (the
-// settled 100 x 100 benchmark packing spent about a quarter of its force stage on wrong
-// guesses; docs/performance.md). The second computes the touching pairs' forces. The sums are
-// the same, in the same order, as in one pass that tests every entry and branches.
-// The first pass tests only the candidates (ContactCandidates: entries that may touch before the
-// grains move on; the others cannot touch and keep a zero history); with `refresh` it tests
-// every entry and writes the candidates down again, by stretch, from the stretch's first entry
-// on. The touching entries found, and so the results, are the same either way.
-// `done.range(first, last)` is called for the particles of a stretch whose forces are complete
-// once its rows are done (rows after them never name them), by runs between late ones; the late
-// ones (NeighbourList::late) are done in the late pass (finish_late) after every block and wall
-// contact, in the same parallel region. Its answers are merged.
+// packing which neighbours touch follows no pattern a branch predictor can learn. The second
+// computes the touching pairs' forces. The sums are the same, in the same order, as in one pass
+// that tests every entry and branches. The first pass tests only the candidates (ContactCandidates:
+// entries that may touch before the grains move on; the others cannot touch and keep a zero
+// history); with `refresh` it tests every entry and writes the candidates down again, by stretch,
+// from the stretch's first entry on. The touching entries found, and so the results, are the same
+// either way. `done.range(first, last)` is called for the particles of a stretch whose forces are
+// complete once its rows are done (rows after them never name them), by runs between late ones; the
+// late ones (NeighbourList::late) are done in the late pass (finish_late) after every block and
+// wall contact, in the same parallel region. Its answers are merged.
 template <class N, class T, class Done>
-std::pair<double, StepSeam>
+std::pair<double, PassReport>
 force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool refresh,
             const PairTable& pairs, const Domain& domain, Vec2 gravity, Segments& walls,
             std::vector<PairForce>& deferred, std::vector<PairForce>& wall_force, double dt,
@@ -249,7 +82,7 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
   if (block_work.size() != static_cast<std::size_t>(blocks)) block_work.assign(blocks, 0);
   const Vec2 box = domain.size();
   // With one material every contact has the same pair parameters: they are put in lanes once,
-  // not for every two contacts (2 to 4% of a step at 1e4 and 1e5; docs/performance.md).
+  // not for every two contacts.
   const bool one_material = pairs.material_count() == 1;
   const PairLanes uniform = one_material ? pair_lanes(pairs(0, 0), pairs(0, 0))
                                          : pair_lanes(PairParameters{}, PairParameters{});
@@ -312,7 +145,7 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
           count += touches;
           const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
           history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(history[e]) & keep);
-          return Gap{dist2, reach, i, j};
+          return EntryGap{dist2, reach, i, j};
         };
         const std::uint32_t base = offset[r0]; // the stretch's candidates are kept from here on
         const std::size_t stretch = static_cast<std::size_t>(b) * stretches_per_block +
@@ -323,7 +156,7 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
             const auto later = static_cast<std::uint32_t>(neighbour[e] >= last); // a later block
             const std::uint32_t later_mask = 0u - later;
             const std::uint32_t to = (slot & later_mask) | ~later_mask;
-            const Gap g = test(e, to);
+            const EntryGap g = test(e, to);
             const double cut = g.reach + near_skin;
             near_entry[base + kept] = e;
             near_slot[base + kept] = to;
@@ -384,7 +217,8 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
           const std::ptrdiff_t z =
               next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
           if (z > a) {
-            const StepSeam s = done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
+            const PassReport s =
+                done.range(static_cast<std::size_t>(a), static_cast<std::size_t>(z));
             finite = finite && s.finite;
             farthest2 = std::max(farthest2, s.displacement2);
           }
@@ -414,14 +248,14 @@ force_stage(Particles& p, NeighbourList& list, ContactCandidates& near, bool ref
 #pragma omp for schedule(dynamic, 1) nowait
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
       const auto q0 = static_cast<std::size_t>(c * late_chunk);
-      const StepSeam s = finish_late(p, list, deferred, wall_force, done, q0,
-                                     std::min(q0 + late_chunk, list.late.size()));
+      const PassReport s = finish_late(p, list, deferred, wall_force, done, q0,
+                                       std::min(q0 + late_chunk, list.late.size()));
       finite = finite && s.finite;
       farthest2 = std::max(farthest2, s.displacement2);
     }
   }
   sum_wall_reactions(list, wall_force, walls);
-  return {worst, StepSeam{finite, farthest2}};
+  return {worst, PassReport{finite, farthest2}};
 }
 
 } // namespace
@@ -447,44 +281,35 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
     }
   }
   std::vector<WallHit> hits;
-  for (std::uint32_t i = 0; i < p.size(); ++i) {
-    const std::uint32_t w0 = list_.wall_offset[i], w1 = list_.wall_offset[i + 1];
-    hits.clear();
-    for (std::uint32_t e = w0; e < w1; ++e)
-      hits.push_back(wall_hit(world_.walls[list_.wall_segment[e]], p.position[i], p.radius[i]));
-    for (std::uint32_t e = w0; e < w1; ++e) {
-      const WallHit& h = hits[e - w0];
-      if (!h.touching ||
-          (h.vertex() && duplicate_vertex(hits, &list_.wall_segment[w0], world_.walls, e - w0)))
-        continue;
-      const Segment& s = world_.walls[list_.wall_segment[e]];
-      const Vec2 d = p.position[i] - h.point;
-      v.i = i;
-      v.j = i;
-      v.wall = static_cast<std::int32_t>(list_.wall_segment[e]);
-      v.geometry = wall_geometry(d, norm(d), p.radius[i], p.mass[i], p.velocity[i],
-                                 p.angular_velocity[i], s.velocity_at(h.point));
-      v.parameters = &pairs_(p.material[i], s.material);
-      v.history = list_.wall_history[e];
-      f(v);
-    }
-  }
+  for (std::uint32_t i = 0; i < p.size(); ++i)
+    for_each_wall_contact(
+        p, list_, world_.walls, i, hits,
+        [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
+          v.i = i;
+          v.j = i;
+          v.wall = static_cast<std::int32_t>(list_.wall_segment[e]);
+          v.geometry = g;
+          v.parameters = &pairs_(p.material[i], s.material);
+          v.history = list_.wall_history[e];
+          f(v);
+        },
+        [](std::uint32_t) {});
 }
 
-StepSeam Simulation::compute_forces(ForceStageEnd end) {
+PassReport Simulation::compute_forces(ForceStageEnd end) {
   Particles& p = world_.particles;
   wall_force_.resize(list_.wall_segment.size());
   deferred_force_.resize(list_.block_first_slot.back());
   const double dt = config_.timestep;
   // The candidates stay valid while two grains cannot have closed their gap: each moved at most
-  // drift_bound_ - near_base_ (drift_margin kept for rounding). An unknown bound (infinite, or
-  // NaN as infinity less infinity) chooses them again at every step.
-  const bool refresh =
-      near_stale_ || !(2.0 * (drift_bound_ - near_base_) <= drift_margin * near_.skin);
+  // drift_bound_ - candidates_base_ (drift_margin kept for rounding). An unknown bound (infinite,
+  // or NaN as infinity less infinity) chooses them again at every step.
+  const bool refresh = candidates_stale_ || !(2.0 * (drift_bound_ - candidates_base_) <=
+                                              drift_margin * candidates_.skin);
   if (refresh) {
-    near_.skin = ContactCandidates::skin_fraction * list_.skin;
-    near_base_ = drift_bound_;
-    near_stale_ = false;
+    candidates_.skin = ContactCandidates::skin_fraction * list_.skin;
+    candidates_base_ = drift_bound_;
+    candidates_stale_ = false;
     ++candidate_choices_;
   }
   // the last stage started this one's forces (ForceStageEnd::verlet_correct_predict), or the
@@ -494,7 +319,7 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
   return with_contact_law(config_.normal_law, config_.tangential_law, [&]<class N, class T>() {
     const auto stages = [&](const auto& done) {
       const auto [worst, seam] = force_stage<N, T>(
-          p, list_, near_, refresh, pairs_, world_.domain, world_.gravity, world_.walls,
+          p, list_, candidates_, refresh, pairs_, world_.domain, world_.gravity, world_.walls,
           deferred_force_, wall_force_, dt, done, block_work_, block_order_, started, threads_);
       max_overlap_seen_ = worst;
       return seam;
@@ -507,7 +332,7 @@ StepSeam Simulation::compute_forces(ForceStageEnd end) {
     case ForceStageEnd::nothing:
       break;
     }
-    return stages(NoEnd{});
+    return stages(NothingMore{});
   });
 }
 

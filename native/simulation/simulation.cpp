@@ -99,14 +99,14 @@ void Simulation::advance(bool fuse) {
   moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
   list_stale_ = false;
   if (moved) rebuild_list(threads_);
-  const StepSeam forces = compute_forces(!verlet ? ForceStageEnd::nothing
-                                         : fuse  ? ForceStageEnd::verlet_correct_predict
-                                                 : ForceStageEnd::verlet_correct);
+  const PassReport forces = compute_forces(!verlet ? ForceStageEnd::nothing
+                                           : fuse  ? ForceStageEnd::verlet_correct_predict
+                                                   : ForceStageEnd::verlet_correct);
   // while the overlap is there (in a step that velocity Verlet fused, the grains are already
   // predicted one timestep on, and the diagnosis names the deepest contact there)
   if (max_overlap_seen_ > config_.max_overlap_fraction) guard();
   if (fuse) {
-    StepSeam seam = forces;
+    PassReport seam = forces;
     if (verlet) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
@@ -120,7 +120,7 @@ void Simulation::advance(bool fuse) {
   } else if (verlet) {
     finite_ = forces.finite;
   } else {
-    const StepSeam corrected = gear_correct(p, dt, threads_);
+    const PassReport corrected = gear_correct(p, dt, threads_);
     finite_ = corrected.finite;
     drift_bound_ += std::sqrt(corrected.displacement2);
   }
@@ -132,7 +132,7 @@ void Simulation::advance(bool fuse) {
 void Simulation::rebuild_list(int threads) {
   build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
   drift_bound_ = 0.0;
-  near_stale_ = true;
+  candidates_stale_ = true;
 }
 
 bool Simulation::drifted(double displacement2) {
@@ -179,7 +179,7 @@ void Simulation::sort_particles() {
   for (Driver& d : world_.drivers)
     for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];
   list_moved();
-  near_stale_ = true;
+  candidates_stale_ = true;
   ++renumberings_;
 }
 
@@ -201,7 +201,7 @@ void Simulation::hold(std::uint32_t i, bool held) {
   // be shot out by the overlap it had reached by then.
   if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
   world_.particles.set_held(i, held);
-  near_stale_ = true; // a held grain moves by displace_held: its entries are all candidates
+  candidates_stale_ = true; // a held grain moves by displace_held: its entries are all candidates
   driven_stale_ = true;
 }
 
@@ -239,7 +239,7 @@ std::size_t Simulation::footprint_bytes() const {
          bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
          bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
          bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_) +
-         bytes(near_.entry) + bytes(near_.slot) + bytes(near_.count);
+         bytes(candidates_.entry) + bytes(candidates_.slot) + bytes(candidates_.count);
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,

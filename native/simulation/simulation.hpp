@@ -125,7 +125,7 @@ private:
   };
   /// Forces of the current state, and `end` for every particle. Returns whether every corrected
   /// velocity is finite and, with verlet_correct_predict, the prediction's largest displacement.
-  StepSeam compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
+  PassReport compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
   /// One step. With `fuse`, the correction of this step and the prediction of the next are done
   /// together (velocity Verlet: in the force stage, particle by particle; Gear: one pass), and
   /// the state between the two steps is the predicted one: run() fuses only where nothing looks
@@ -153,9 +153,10 @@ private:
   PairTable pairs_;
   NeighbourList list_;
   std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
-  ContactCandidates near_;                ///< the entries the force stage tests
-  double near_base_ = 0.0;                ///< drift_bound_ when near_ was chosen
-  bool near_stale_ = true; ///< near_ must be chosen again (new list, renumbered, a grain held)
+  ContactCandidates candidates_;          ///< the entries the force stage tests
+  double candidates_base_ = 0.0;          ///< drift_bound_ when candidates_ was chosen
+  bool candidates_stale_ =
+      true; ///< candidates_ must be chosen again (new list, renumbered, a grain held)
   std::vector<PairForce> wall_force_;
   /// each force block's time in the last force stages (ns, smoothed), and the order in which the
   /// threads take the blocks (force_block_order)

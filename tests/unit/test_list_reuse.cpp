@@ -87,11 +87,11 @@ TEST(ListReuse, EveryPassReportsHowFarItMovedTheFarthestGrain) {
     EXPECT_GT(predicted, 1e-8);
     EXPECT_NEAR(predicted, farthest(start, p), rounding);
     const Particles before_correction = p; // corrected with the forces of the start, off by dt
-    const StepSeam corrected = gear_correct(p, dt, 1);
+    const PassReport corrected = gear_correct(p, dt, 1);
     EXPECT_GT(std::sqrt(corrected.displacement2), 1e-12);
     EXPECT_NEAR(std::sqrt(corrected.displacement2), farthest(before_correction, p), rounding);
     Particles q = before_correction;
-    const StepSeam both = gear_correct_predict(q, dt, s.world().gravity, 1);
+    const PassReport both = gear_correct_predict(q, dt, s.world().gravity, 1);
     EXPECT_NEAR(std::sqrt(both.displacement2), farthest(before_correction, q), rounding);
   }
 }

@@ -1,0 +1,112 @@
+#pragma once
+// The wall pass of the force stage: the contacts of particles with wall segments, found from the
+// particles' wall rows of the neighbour list. One definition of a wall contact
+// (for_each_wall_contact), for the force stage and for the observers
+// (Simulation::for_each_contact).
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/contact_vectors.hpp"
+#include "materials/pair_table.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "state/particles.hpp"
+#include "state/walls.hpp"
+#include "talus/contact_force.hpp"
+
+namespace talus {
+
+struct WallHit {
+  Vec2 point;     // nearest point of the segment
+  double u = 0.0; // position along the segment, 0 at a, 1 at b
+  bool touching = false;
+  bool vertex() const { return u <= 0.0 || u >= 1.0; }
+};
+
+inline WallHit wall_hit(const Segment& s, Vec2 p, double radius) {
+  WallHit h;
+  const Vec2 ab = s.b - s.a;
+  const double l2 = norm2(ab);
+  h.u = l2 > 0.0 ? dot(p - s.a, ab) / l2 : 0.0;
+  h.point = h.u <= 0.0 ? s.a : (h.u >= 1.0 ? s.b : s.a + h.u * ab);
+  const double d2 = norm2(p - h.point);
+  h.touching = d2 < radius * radius && d2 > 0.0;
+  return h;
+}
+
+// A particle touching the shared end point of two segments touches that point only once: an end
+// point contact is dropped when a segment sharing that end point is touched along its face, or
+// when an earlier segment of the particle's list already touches the same end point.
+inline bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* segment,
+                             const Segments& walls, std::size_t k) {
+  const Vec2 v = hits[k].point;
+  for (std::size_t m = 0; m < hits.size(); ++m) {
+    if (m == k || !hits[m].touching) continue;
+    const Segment& o = walls[segment[m]];
+    if (o.a != v && o.b != v) continue;
+    if (!hits[m].vertex() || m < k) return true;
+  }
+  return false;
+}
+
+// Calls touching(e, segment, geometry) for each entry e of particle i's wall row whose segment i
+// touches (the shared end point of two segments once), and apart(e) for the others. `hits` is
+// scratch space, kept by the caller so that a step allocates nothing.
+template <class Touching, class Apart>
+void for_each_wall_contact(const Particles& p, const NeighbourList& list, const Segments& walls,
+                           std::uint32_t i, std::vector<WallHit>& hits, Touching&& touching,
+                           Apart&& apart) {
+  const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
+  if (w0 == w1) return;
+  const Vec2 ri = p.position[i];
+  const double Ri = p.radius[i];
+  hits.clear();
+  for (std::uint32_t e = w0; e < w1; ++e)
+    hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
+  for (std::uint32_t e = w0; e < w1; ++e) {
+    const WallHit& h = hits[e - w0];
+    if (!h.touching ||
+        (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
+      apart(e);
+      continue;
+    }
+    const Segment& s = walls[list.wall_segment[e]];
+    const Vec2 d = ri - h.point;
+    touching(e, s,
+             wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i], p.angular_velocity[i],
+                           s.velocity_at(h.point)));
+  }
+}
+
+// The wall contacts of late particle i (particles with wall contacts are late): their forces into
+// `out`, one per entry of its wall row (0 if not touching); returns the largest overlap / radius.
+// Not inlined into the stage (its loops are compiled worse with more code in them).
+template <class N, class T>
+[[gnu::noinline]] double wall_contacts(const Particles& p, NeighbourList& list,
+                                       const Segments& walls, const PairTable& pairs,
+                                       std::vector<PairForce>& out, double dt, std::uint32_t i,
+                                       std::vector<WallHit>& hits) {
+  double worst = 0.0;
+  for_each_wall_contact(
+      p, list, walls, i, hits,
+      [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
+        out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
+        worst = std::max(worst, g.overlap / p.radius[i]);
+      },
+      [&](std::uint32_t e) {
+        out[e] = {};
+        list.wall_history[e] = 0.0;
+      });
+  return worst;
+}
+
+// The walls' reactions, particle by particle: the wall rows in order (a particle's wall entries
+// follow those of the particles before it).
+inline void sum_wall_reactions(const NeighbourList& list, const std::vector<PairForce>& wf,
+                               Segments& walls) {
+  for (Segment& s : walls) s.force = {};
+  for (std::size_t e = 0; e < list.wall_segment.size(); ++e)
+    walls[list.wall_segment[e]].force -= wf[e].force;
+}
+
+} // namespace talus
