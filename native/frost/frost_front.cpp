@@ -202,7 +202,8 @@ void FrostFront::start_freeze(Simulation& sim) {
   const Particles& p = sim.world().particles;
   if (material_.size() == p.size()) // thawed fines get their own material back
     for (std::size_t i = 0; i < p.size(); ++i)
-      sim.set_material(static_cast<std::uint32_t>(i), static_cast<std::size_t>(material_[i]));
+      sim.edit_particles().set_material(static_cast<std::uint32_t>(i),
+                                        static_cast<std::size_t>(material_[i]));
   material_.assign(p.material.begin(), p.material.end());
   const std::size_t n = surface_.size();
   frozen_.assign(p.size(), 0);
@@ -329,7 +330,7 @@ bool FrostFront::advance(Simulation& sim) {
       const std::size_t c = column_of(p.position[i].x);
       const double depth = surface_[c] - p.position[i].y - (is_stone(p, i) ? p.radius[i] : 0.0);
       if (depth <= front_[c]) {
-        sim.hold(static_cast<std::uint32_t>(i), true);
+        sim.edit_particles().hold(static_cast<std::uint32_t>(i), true);
         frozen_[i] = 1;
       }
     }
@@ -353,7 +354,7 @@ bool FrostFront::advance(Simulation& sim) {
     lift_resting_grains(p, up);
     for (std::size_t i = 0; i < p.size(); ++i)
       if (frozen_[i] && up[i] != 0.0)
-        sim.displace_held(static_cast<std::uint32_t>(i), {0.0, up[i]});
+        sim.edit_particles().displace_held(static_cast<std::uint32_t>(i), {0.0, up[i]});
     if (u < 1.0) return false;
     start_thaw(sim);
     return true;
@@ -377,10 +378,11 @@ bool FrostFront::advance(Simulation& sim) {
       held = true;
       continue;
     }
-    sim.hold(static_cast<std::uint32_t>(i), false);
+    sim.edit_particles().hold(static_cast<std::uint32_t>(i), false);
     released.push_back(static_cast<std::uint32_t>(i));
     if (p_.thawed_material >= 0 && !is_stone(p, i))
-      sim.set_material(static_cast<std::uint32_t>(i), static_cast<std::size_t>(p_.thawed_material));
+      sim.edit_particles().set_material(static_cast<std::uint32_t>(i),
+                                        static_cast<std::size_t>(p_.thawed_material));
   }
   // it moves grains: edit_world has the next steps test the neighbour list against them
   if (!released.empty()) separate_released(sim.edit_world().particles, released, frozen_);

@@ -41,14 +41,6 @@ std::uint32_t force_block_rows(std::size_t n) {
   return static_cast<std::uint32_t>(std::max<std::size_t>(1, (n + blocks - 1) / blocks));
 }
 
-void force_block_order(const std::vector<std::uint64_t>& work, std::vector<std::ptrdiff_t>& order) {
-  order.resize(work.size());
-  for (std::size_t b = 0; b < order.size(); ++b) order[b] = static_cast<std::ptrdiff_t>(b);
-  std::stable_sort(order.begin(), order.end(), [&](std::ptrdiff_t x, std::ptrdiff_t y) {
-    return work[static_cast<std::size_t>(x)] > work[static_cast<std::size_t>(y)];
-  });
-}
-
 void index_force_blocks(NeighbourList& list, int threads) {
   const std::size_t n = list.row_offset.size() - 1;
   const std::uint32_t rows = force_block_rows(n);
@@ -139,6 +131,94 @@ struct alignas(64) RowBlock {
   std::vector<std::uint32_t> count; // entries of each row
 };
 
+// Row i of the list into `out`: the later particles (j > i, one of the two free) within reach
+// plus the skin, in ascending j. `row` is scratch space, kept by the caller.
+inline void collect_row(const CellGrid& grid, const Particles& p, Vec2 box, double skin,
+                        std::size_t i, std::vector<std::pair<std::uint32_t, ImageShift>>& row,
+                        RowBlock& out) {
+  std::size_t count = 0; // the row: row[0, count)
+  const Vec2 ri = p.position[i];
+  const double Ri = p.radius[i] + skin;
+  const bool free_i = p.is_free(i);
+  const int cy = static_cast<int>(grid.cell_of[i]) / grid.nx; // the cell it was sorted into
+  const int cx = static_cast<int>(grid.cell_of[i]) - cy * grid.nx;
+  // the candidates of items[k0, k1), seen at the image (sx, sy): no branch per candidate, each is
+  // written and kept only if it qualifies (about half do, at random, which a branch predictor
+  // cannot learn)
+  const auto scan = [&](std::uint32_t k0, std::uint32_t k1, std::int8_t sx, std::int8_t sy) {
+    const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
+    if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
+    for (std::uint32_t k = k0; k < k1; ++k) {
+      const std::uint32_t j = grid.items[k];
+      const double reach = Ri + p.radius[j];
+      const bool keep =
+          (j > i) & (free_i | p.is_free(j)) & (norm2(ri_shifted - p.position[j]) < reach * reach);
+      row[count] = {j, ImageShift{sx, sy}};
+      count += keep;
+    }
+  };
+  // Items ascend within a cell, so a cell holds a later particle (j > i) only if its last item is
+  // one. Cells that hold none are not scanned: where the particles' order follows space (a
+  // packing built row by row, for one), that is the row of cells below.
+  const auto any_later = [&](std::size_t c0, std::size_t c1) { // cells [c0, c1)
+    bool later = false;
+    for (std::size_t c = c0; c < c1; ++c)
+      later |=
+          grid.cell_start[c + 1] > grid.cell_start[c] && grid.items[grid.cell_start[c + 1] - 1] > i;
+    return later;
+  };
+  for (int dy = -1; dy <= 1; ++dy) {
+    int ncy = cy + dy;
+    std::int8_t sy = 0;
+    if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
+    const std::size_t cell_row = static_cast<std::size_t>(ncy) * grid.nx;
+    if (cx >= 1 && cx + 1 < grid.nx) { // three cells side by side: one stretch of items
+      const std::size_t c0 = cell_row + static_cast<std::size_t>(cx) - 1;
+      if (any_later(c0, c0 + 3)) scan(grid.cell_start[c0], grid.cell_start[c0 + 3], 0, sy);
+      continue;
+    }
+    for (int dx = -1; dx <= 1; ++dx) {
+      int ncx = cx + dx;
+      std::int8_t sx = 0;
+      if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
+      const std::size_t c = cell_row + static_cast<std::size_t>(ncx);
+      if (any_later(c, c + 1)) scan(grid.cell_start[c], grid.cell_start[c + 1], sx, sy);
+    }
+  }
+  // rows are short (a few entries): insertion sort beats std::sort's set-up here
+  for (std::size_t m = 1; m < count; ++m)
+    for (std::size_t q = m; q > 0 && row[q - 1].first > row[q].first; --q)
+      std::swap(row[q - 1], row[q]);
+  for (std::size_t m = 0; m < count; ++m) {
+    out.neighbour.push_back(row[m].first);
+    out.image.push_back(row[m].second);
+  }
+  out.count.push_back(static_cast<std::uint32_t>(count));
+}
+
+// The blocks' rows joined in order into the list, each block into its place.
+void join_row_blocks(NeighbourList& list, const std::vector<RowBlock>& block, std::size_t n,
+                     int threads) {
+  const auto blocks = static_cast<int>(block.size());
+  std::vector<std::size_t> block_entry(block.size() + 1, 0);
+  for (std::size_t b = 0; b < block.size(); ++b)
+    block_entry[b + 1] = block_entry[b] + block[b].neighbour.size();
+  list.neighbour.resize(block_entry.back());
+  list.image.resize(block_entry.back());
+#pragma omp parallel for schedule(static, 1) num_threads(threads)
+  for (int bi = 0; bi < blocks; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    const RowBlock& from = block[b];
+    std::copy(from.neighbour.begin(), from.neighbour.end(),
+              list.neighbour.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
+    std::copy(from.image.begin(), from.image.end(),
+              list.image.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
+    std::size_t i = n * b / static_cast<std::size_t>(blocks);
+    auto offset = static_cast<std::uint32_t>(block_entry[b]);
+    for (const std::uint32_t c : from.count) list.row_offset[++i] = offset += c;
+  }
+}
+
 void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, double skin,
                  int threads) {
   const std::size_t n = p.size();
@@ -168,86 +248,9 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
     out.neighbour.reserve(n > 0 ? old_neighbour.size() * (last - first) / n * 11 / 10 + 16 : 0);
     out.image.reserve(out.neighbour.capacity());
     std::vector<std::pair<std::uint32_t, ImageShift>> row;
-    for (std::size_t i = first; i < last; ++i) {
-      std::size_t count = 0; // the row: row[0, count)
-      const Vec2 ri = p.position[i];
-      const double Ri = p.radius[i] + skin;
-      const bool free_i = p.is_free(i);
-      const int cy = static_cast<int>(grid.cell_of[i]) / grid.nx; // the cell it was sorted into
-      const int cx = static_cast<int>(grid.cell_of[i]) - cy * grid.nx;
-      // the candidates of items[k0, k1), seen at the image (sx, sy): no branch per candidate,
-      // each is written and kept only if it qualifies (about half do, at random, which a branch
-      // predictor cannot learn)
-      const auto scan = [&](std::uint32_t k0, std::uint32_t k1, std::int8_t sx, std::int8_t sy) {
-        const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
-        if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
-        for (std::uint32_t k = k0; k < k1; ++k) {
-          const std::uint32_t j = grid.items[k];
-          const double reach = Ri + p.radius[j];
-          const bool keep = (j > i) & (free_i | p.is_free(j)) &
-                            (norm2(ri_shifted - p.position[j]) < reach * reach);
-          row[count] = {j, ImageShift{sx, sy}};
-          count += keep;
-        }
-      };
-      // Items ascend within a cell, so a cell holds a later particle (j > i) only if its last
-      // item is one. Cells that hold none are not scanned: where the particles' order follows
-      // space (a packing built row by row, for one), that is the row of cells below.
-      const auto any_later = [&](std::size_t c0, std::size_t c1) { // cells [c0, c1)
-        bool later = false;
-        for (std::size_t c = c0; c < c1; ++c)
-          later |= grid.cell_start[c + 1] > grid.cell_start[c] &&
-                   grid.items[grid.cell_start[c + 1] - 1] > i;
-        return later;
-      };
-      for (int dy = -1; dy <= 1; ++dy) {
-        int ncy = cy + dy;
-        std::int8_t sy = 0;
-        if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
-        const std::size_t cell_row = static_cast<std::size_t>(ncy) * grid.nx;
-        if (cx >= 1 && cx + 1 < grid.nx) { // three cells side by side: one stretch of items
-          const std::size_t c0 = cell_row + static_cast<std::size_t>(cx) - 1;
-          if (any_later(c0, c0 + 3)) scan(grid.cell_start[c0], grid.cell_start[c0 + 3], 0, sy);
-          continue;
-        }
-        for (int dx = -1; dx <= 1; ++dx) {
-          int ncx = cx + dx;
-          std::int8_t sx = 0;
-          if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
-          const std::size_t c = cell_row + static_cast<std::size_t>(ncx);
-          if (any_later(c, c + 1)) scan(grid.cell_start[c], grid.cell_start[c + 1], sx, sy);
-        }
-      }
-      // rows are short (a few entries): insertion sort beats std::sort's set-up here
-      for (std::size_t m = 1; m < count; ++m)
-        for (std::size_t q = m; q > 0 && row[q - 1].first > row[q].first; --q)
-          std::swap(row[q - 1], row[q]);
-      for (std::size_t m = 0; m < count; ++m) {
-        out.neighbour.push_back(row[m].first);
-        out.image.push_back(row[m].second);
-      }
-      out.count.push_back(static_cast<std::uint32_t>(count));
-    }
+    for (std::size_t i = first; i < last; ++i) collect_row(grid, p, box, skin, i, row, out);
   }
-  // join the blocks in order, each into its place
-  std::vector<std::size_t> block_entry(block.size() + 1, 0);
-  for (std::size_t b = 0; b < block.size(); ++b)
-    block_entry[b + 1] = block_entry[b] + block[b].neighbour.size();
-  list.neighbour.resize(block_entry.back());
-  list.image.resize(block_entry.back());
-#pragma omp parallel for schedule(static, 1) num_threads(threads)
-  for (int bi = 0; bi < blocks; ++bi) {
-    const auto b = static_cast<std::size_t>(bi);
-    const RowBlock& from = block[b];
-    std::copy(from.neighbour.begin(), from.neighbour.end(),
-              list.neighbour.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
-    std::copy(from.image.begin(), from.image.end(),
-              list.image.begin() + static_cast<std::ptrdiff_t>(block_entry[b]));
-    std::size_t i = n * b / static_cast<std::size_t>(blocks);
-    auto offset = static_cast<std::uint32_t>(block_entry[b]);
-    for (const std::uint32_t c : from.count) list.row_offset[++i] = offset += c;
-  }
-
+  join_row_blocks(list, block, n, threads);
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, threads);
 }

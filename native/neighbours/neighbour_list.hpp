@@ -62,35 +62,12 @@ struct NeighbourList {
   }
 };
 
-/// The entries of a neighbour list that can come to touch soon: those whose gap was below `skin`
-/// when they were chosen, and those that name a particle that is not free (drivers and holds
-/// move those, not the integrator). While no two grains can have closed a gap of `skin` since
-/// then (Simulation keeps the bound), the force stage tests only these: the others cannot touch,
-/// and their history stays 0. Derived from the list by the force stage, not saved.
-struct ContactCandidates {
-  std::vector<std::uint32_t> entry; ///< per stretch of rows, from the stretch's first entry on
-  std::vector<std::uint32_t> slot;  ///< each candidate's deferred slot, or ~0 (none)
-  std::vector<std::uint32_t> count; ///< candidates per stretch of rows
-  double skin = 0.0;                ///< m
-  /// `skin` as a fraction of the list's skin: they are chosen again about five times in a
-  /// list's life; the choice is not sensitive (docs/performance.md, "Contact candidates").
-  static constexpr double skin_fraction = 0.2;
-};
-
 /// Rows per force block for n particles: n cut into 2, 4, 8 or 16 blocks (a power of two, so that
 /// 2, 4, 8 or 16 threads share them evenly) of at least 2048 rows each where n allows. A function
 /// of n only, so that results do not depend on the thread count. Not more blocks than that: an
 /// entry that crosses a block's end costs more than one that does not (its deferred slot and its
 /// late particle), and a block's end crosses a whole layer of the packing.
 std::uint32_t force_block_rows(std::size_t n);
-
-/// The order in which the threads take the force blocks (into `order`, resized; no allocation
-/// once it has the size): the block indices by decreasing `work`
-/// (one figure per block, as the last force stage measured it), equal ones by index. The threads
-/// take the next block of this order whenever they finish one, so that the last blocks taken,
-/// when one thread may wait for another, are the shortest. Which thread runs a block changes no
-/// result, since a block's sums are its own.
-void force_block_order(const std::vector<std::uint64_t>& work, std::vector<std::ptrdiff_t>& order);
 
 /// Fills the force-block fields of a list from its rows and wall contacts (build_neighbour_list
 /// calls it; a list read back from a checkpoint needs it too).

@@ -46,7 +46,8 @@ Simulation Simulation::restore(SimulationState state, SimulationConfig config) {
 
 Simulation::Simulation(SimulationState state, SimulationConfig config, bool restoring)
     : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
-      time_(state.time), steps_(state.steps) {
+      forces_(config.normal_law, config.tangential_law, config.timestep), time_(state.time),
+      steps_(state.steps) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
@@ -71,7 +72,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     apply(d, 0.0, world_.particles, world_.walls);
   }
   rebuild_list(1);
-  compute_forces();
+  forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_);
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
 
@@ -80,59 +81,84 @@ void Simulation::step() {
 }
 
 void Simulation::advance(bool fuse) {
-  const double dt = config_.timestep;
-  Particles& p = world_.particles;
-  const bool verlet = config_.integrator == Integrator::verlet;
-  double displacement2 = predicted_displacement2_;
-  if (!predicted_) {
-    // forces started by the last stage count only between two steps of one run() (a fused step
-    // that finished): anything a caller does between run() calls may change them
-    forces_started_ = false;
-    if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
-    displacement2 = verlet ? verlet_predict(p, dt, threads_) : gear_predict(p, dt, threads_);
+  const double t_next = static_cast<double>(steps_ + 1) * config_.timestep;
+  const bool drifted = predict();
+  move_bodies(t_next);
+  update_neighbours(drifted);
+  const PassReport forces = contacts(fuse);
+  correct(fuse, forces);
+  ++steps_;
+  time_ = t_next;
+  guard();
+}
+
+bool Simulation::predict() {
+  if (predicted_) { // by the last step's fused pass
+    predicted_ = false;
+    return drifted(predicted_displacement2_);
   }
-  predicted_ = false;
-  bool moved = drifted(displacement2);
-  const double t_next = static_cast<double>(steps_ + 1) * dt;
-  for (const Driver& d : world_.drivers) apply(d, t_next, p, world_.walls);
+  // forces started by the last stage count only between two steps of one run() (a fused step
+  // that finished): anything a caller does between run() calls may change them
+  forces_.forces_started(false);
+  if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
+  Particles& p = world_.particles;
+  const double dt = config_.timestep;
+  return drifted(config_.integrator == Integrator::verlet ? verlet_predict(p, dt, threads_)
+                                                          : gear_predict(p, dt, threads_));
+}
+
+void Simulation::move_bodies(double t) {
+  for (const Driver& d : world_.drivers) apply(d, t, world_.particles, world_.walls);
+}
+
+void Simulation::update_neighbours(bool drifted) {
   if (driven_stale_) list_moved();
-  moved = moved || list_stale_ || walls_moved(list_, p, world_.walls, driven_);
+  const bool rebuild =
+      drifted || list_stale_ || walls_moved(list_, world_.particles, world_.walls, driven_);
   list_stale_ = false;
-  if (moved) rebuild_list(threads_);
-  const PassReport forces = compute_forces(!verlet ? ForceStageEnd::nothing
-                                           : fuse  ? ForceStageEnd::verlet_correct_predict
-                                                   : ForceStageEnd::verlet_correct);
+  if (rebuild) rebuild_list(threads_);
+}
+
+PassReport Simulation::contacts(bool fuse) {
+  using Finish = ForceStage::Finish;
+  const Finish finish = config_.integrator != Integrator::verlet ? Finish::nothing
+                        : fuse                                   ? Finish::verlet_correct_predict
+                                                                 : Finish::verlet_correct;
+  const PassReport report = forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_);
   // while the overlap is there (in a step that velocity Verlet fused, the grains are already
   // predicted one timestep on, and the diagnosis names the deepest contact there)
-  if (max_overlap_seen_ > config_.max_overlap_fraction) guard();
+  if (forces_.deepest_overlap() > config_.max_overlap_fraction) guard();
+  return report;
+}
+
+void Simulation::correct(bool fuse, const PassReport& forces) {
+  Particles& p = world_.particles;
+  const bool verlet = config_.integrator == Integrator::verlet;
   if (fuse) {
     PassReport seam = forces;
     if (verlet) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
     } else {
-      seam = gear_correct_predict(p, dt, world_.gravity, threads_);
+      seam = gear_correct_predict(p, config_.timestep, world_.gravity, threads_);
     }
-    forces_started_ = true; // by the fused pass, for the next force stage
+    forces_.forces_started(true); // by the fused pass, for the next force stage
     finite_ = seam.finite;
     predicted_displacement2_ = seam.displacement2;
     predicted_ = true;
   } else if (verlet) {
     finite_ = forces.finite;
   } else {
-    const PassReport corrected = gear_correct(p, dt, threads_);
+    const PassReport corrected = gear_correct(p, config_.timestep, threads_);
     finite_ = corrected.finite;
     drift_bound_ += std::sqrt(corrected.displacement2);
   }
-  ++steps_;
-  time_ = t_next;
-  guard();
 }
 
 void Simulation::rebuild_list(int threads) {
   build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
   drift_bound_ = 0.0;
-  candidates_stale_ = true;
+  forces_.list_changed();
 }
 
 bool Simulation::drifted(double displacement2) {
@@ -179,7 +205,7 @@ void Simulation::sort_particles() {
   for (Driver& d : world_.drivers)
     for (std::uint32_t& i : d.targets.particles) i = new_of_old_[i];
   list_moved();
-  candidates_stale_ = true;
+  forces_.list_changed();
   ++renumberings_;
 }
 
@@ -191,32 +217,35 @@ void Simulation::list_moved() {
   driven_stale_ = false;
 }
 
-void Simulation::hold(std::uint32_t i, bool held) {
-  require(i < world_.particles.size(), "hold: no particle " + std::to_string(i));
-  require(world_.particles.kind[i] != Kind::fixed,
+void ParticleEdits::hold(std::uint32_t i, bool held) {
+  Particles& p = sim_.world_.particles;
+  require(i < p.size(), "hold: no particle " + std::to_string(i));
+  require(p.kind[i] != Kind::fixed,
           "hold: particle " + std::to_string(i) + " is a fixed wall particle");
   // A held grain has no pairs with other held grains in the neighbour list (the list pairs a
   // grain with a free one), so a released one needs a new list before the next force stage:
   // otherwise it would fall into a held neighbour unseen until its drift forced a rebuild, and
   // be shot out by the overlap it had reached by then.
-  if (!held && world_.particles.kind[i] == Kind::moved) list_stale_ = true;
-  world_.particles.set_held(i, held);
-  candidates_stale_ = true; // a held grain moves by displace_held: its entries are all candidates
-  driven_stale_ = true;
+  if (!held && p.kind[i] == Kind::moved) sim_.list_stale_ = true;
+  p.set_held(i, held);
+  sim_.forces_.list_changed(); // a held grain moves by displace_held: its entries are candidates
+  sim_.driven_stale_ = true;
 }
 
-void Simulation::set_material(std::uint32_t i, std::size_t m) {
-  require(i < world_.particles.size(), "set_material: no particle " + std::to_string(i));
-  require(m < world_.materials.size(), "set_material: material index " + std::to_string(m) +
-                                           " out of range; allowed: 0 to " +
-                                           std::to_string(world_.materials.size() - 1));
-  world_.particles.material[i] = static_cast<std::uint16_t>(m);
+void ParticleEdits::set_material(std::uint32_t i, std::size_t m) {
+  World& w = sim_.world_;
+  require(i < w.particles.size(), "set_material: no particle " + std::to_string(i));
+  require(m < w.materials.size(), "set_material: material index " + std::to_string(m) +
+                                      " out of range; allowed: 0 to " +
+                                      std::to_string(w.materials.size() - 1));
+  w.particles.material[i] = static_cast<std::uint16_t>(m);
 }
 
-void Simulation::displace_held(std::uint32_t i, Vec2 d) {
-  if (i >= world_.particles.size() || world_.particles.kind[i] != Kind::moved)
+void ParticleEdits::displace_held(std::uint32_t i, Vec2 d) {
+  Particles& p = sim_.world_.particles;
+  if (i >= p.size() || p.kind[i] != Kind::moved)
     throw std::logic_error("displace_held: particle " + std::to_string(i) + " is not held");
-  world_.particles.position[i] += d;
+  p.position[i] += d;
 }
 
 namespace {
@@ -238,8 +267,7 @@ std::size_t Simulation::footprint_bytes() const {
          bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
          bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
          bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
-         bytes(l.segment_reference) + bytes(deferred_force_) + bytes(wall_force_) + bytes(driven_) +
-         bytes(candidates_.entry) + bytes(candidates_.slot) + bytes(candidates_.count);
+         bytes(l.segment_reference) + bytes(driven_) + forces_.footprint_bytes();
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,
@@ -282,7 +310,7 @@ void Simulation::guard() const {
       }
     }
   }
-  if (finite && max_overlap_seen_ <= config_.max_overlap_fraction) return;
+  if (finite && forces_.deepest_overlap() <= config_.max_overlap_fraction) return;
 
   std::ostringstream msg;
   msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
@@ -302,7 +330,7 @@ void Simulation::guard() const {
           v.geometry.overlap / std::min(p.radius[v.i], v.wall < 0 ? p.radius[v.j] : p.radius[v.i]);
       if (r > ratio) ratio = r, worst = v;
     });
-    msg << "an overlap reached " << max_overlap_seen_ << " of the smaller radius (limit "
+    msg << "an overlap reached " << forces_.deepest_overlap() << " of the smaller radius (limit "
         << config_.max_overlap_fraction << ")";
     if (ratio >= 0.0) {
       const PairParameters& pp = *worst.parameters;

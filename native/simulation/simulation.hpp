@@ -9,6 +9,7 @@
 #include "integrate/integrator.hpp"
 #include "materials/pair_table.hpp"
 #include "neighbours/neighbour_list.hpp"
+#include "simulation/force_stage.hpp"
 #include "simulation/world.hpp"
 #include "talus/law_table.hpp"
 
@@ -56,6 +57,8 @@ struct SimulationState {
   std::uint64_t steps = 0;
 };
 
+class ParticleEdits;
+
 class Simulation {
 public:
   /// Validates the setup (materials, laws, timestep) and computes the initial forces.
@@ -87,15 +90,9 @@ public:
   const PairTable& pairs() const { return pairs_; }
   const NeighbourList& neighbours() const { return list_; }
   int threads() const { return threads_; }
-  /// Between steps, for a model that holds grains in place (frost): holds particle i at rest
-  /// (not integrated; free grains still feel it) or frees it. Its drift is then checked against
-  /// the neighbour list like a driven particle's.
-  void hold(std::uint32_t i, bool held);
-  /// Between steps: particle i is made of material m from now on (frost: a thawed fine);
-  /// throws InvalidArgument for a material index out of range.
-  void set_material(std::uint32_t i, std::size_t m);
-  /// Between steps: moves a held particle by d (m); throws std::logic_error for a free one.
-  void displace_held(std::uint32_t i, Vec2 d);
+  /// Between steps: edits of single particles that a model makes (frost holds grains, moves
+  /// held ones and thaws them), with what the next steps must know of them.
+  ParticleEdits edit_particles();
   /// Between steps: renumbers the particles in the order of the cells they lie in (as
   /// `sort_interval` does). The neighbour list, its history, the drivers' targets and the held
   /// particles follow; a caller that keeps particle indices maps them with new_indices().
@@ -108,7 +105,7 @@ public:
   /// (only when the drift bound could have reached half the skin), and how many force stages
   /// chose the contact candidates again (ContactCandidates), since construction.
   std::uint64_t drift_tests() const { return drift_tests_; }
-  std::uint64_t candidate_choices() const { return candidate_choices_; }
+  std::uint64_t candidate_choices() const { return forces_.candidate_choices(); }
   /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
   /// (allocated capacity, not the process' resident size).
   std::size_t footprint_bytes() const;
@@ -116,21 +113,30 @@ public:
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
 private:
+  friend class ParticleEdits;
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
-  /// What the force stage does to each particle as soon as its force is complete.
-  enum class ForceStageEnd {
-    nothing,
-    verlet_correct,         ///< velocity Verlet's second half kick
-    verlet_correct_predict, ///< that, then the next step's first half kick and drift
-  };
-  /// Forces of the current state, and `end` for every particle. Returns whether every corrected
-  /// velocity is finite and, with verlet_correct_predict, the prediction's largest displacement.
-  PassReport compute_forces(ForceStageEnd end = ForceStageEnd::nothing);
-  /// One step. With `fuse`, the correction of this step and the prediction of the next are done
-  /// together (velocity Verlet: in the force stage, particle by particle; Gear: one pass), and
-  /// the state between the two steps is the predicted one: run() fuses only where nothing looks
-  /// at the state in between.
+  /// One step: the stages of ../shared/DESIGN.md in order. With `fuse`, the correction of this
+  /// step and the prediction of the next are done together (velocity Verlet: in the force stage,
+  /// particle by particle; Gear: one pass), and the state between the two steps is the predicted
+  /// one: run() fuses only where nothing looks at the state in between.
   void advance(bool fuse);
+  /// Stage 1 (unless the last step's fused pass did it): the integrator's prediction, after the
+  /// renumbering that sort_interval asks for. Returns whether some grain may have drifted more
+  /// than half the skin since the list's build (the part of stage 3 the integrator's
+  /// displacement answers; tested before the drivers move their particles).
+  bool predict();
+  /// Stage 2: the drivers move their particles and walls to time t.
+  void move_bodies(double t);
+  /// Stage 3: the neighbour list built again if a grain drifted, a held grain was freed, or a
+  /// wall or driven particle moved more than half the skin.
+  void update_neighbours(bool drifted);
+  /// Stage 4: the contact forces; velocity Verlet's correction (and with `fuse` the next
+  /// prediction) done in it, particle by particle. Stops the run on an overlap past the guard's
+  /// limit while it is there.
+  PassReport contacts(bool fuse);
+  /// Stage 5: the integrator's correction (and with `fuse` the next step's prediction).
+  void correct(bool fuse, const PassReport& forces);
+  /// Stage 6: the stability guard (non-finite state, overlap too deep, a grain escaped).
   void guard() const;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
@@ -142,30 +148,15 @@ private:
   /// Builds the neighbour list again; the drift bound starts from 0 and the contact candidates
   /// are chosen again.
   void rebuild_list(int threads);
-  /// The share of a drift limit the drift bound may reach before the shortcuts it allows stop:
-  /// the rest is for rounding (each pass's displacement is rounded once more when it is added to
-  /// a position, half a unit in the last place of the coordinate, which over the hundreds of
-  /// steps a list lasts stays far below a tenth of the limit).
-  static constexpr double drift_margin = 0.9;
 
   World world_;
   SimulationConfig config_;
   PairTable pairs_;
   NeighbourList list_;
-  std::vector<PairForce> deferred_force_; ///< pair forces waiting for a later block's particle
-  ContactCandidates candidates_;          ///< the entries the force stage tests
-  double candidates_base_ = 0.0;          ///< drift_bound_ when candidates_ was chosen
-  bool candidates_stale_ =
-      true; ///< candidates_ must be chosen again (new list, renumbered, a grain held)
-  std::vector<PairForce> wall_force_;
-  /// each force block's time in the last force stages (ns, smoothed), and the order in which the
-  /// threads take the blocks (force_block_order)
-  std::vector<std::uint64_t> block_work_;
-  std::vector<std::ptrdiff_t> block_order_;
+  ForceStage forces_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;
-  double max_overlap_seen_ = 0.0;     ///< largest overlap / smaller radius in the last force stage
   bool finite_ = true;                ///< every position and velocity finite after the last step
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   std::uint64_t renumberings_ = 0;
@@ -174,9 +165,6 @@ private:
   bool list_stale_ = false;              ///< a held particle was freed: rebuild the list
   bool predicted_ = false;               ///< the next step's prediction is done (only inside run())
   double predicted_displacement2_ = 0.0; ///< and how far it moved the farthest particle
-  /// The next force stage's forces and torques are started already (each free particle's
-  /// weight, no torque): a fused pass did it while it had them in cache (only inside run()).
-  bool forces_started_ = false;
   /// An upper bound of how far any free particle moved since the list's build (m): the sum of
   /// the largest displacement of every pass over the particles since then. Every particle is
   /// compared with its build position only once this bound could have reached half the skin,
@@ -185,7 +173,29 @@ private:
   static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
   double drift_bound_ = unknown_drift;
   std::uint64_t drift_tests_ = 0;
-  std::uint64_t candidate_choices_ = 0;
 };
+
+/// Edits of single particles between steps (Simulation::edit_particles), for a model that
+/// changes grains as it goes: frost holds grains in place, moves held ones and thaws them.
+class ParticleEdits {
+public:
+  /// Holds particle i at rest (not integrated; free grains still feel it) or frees it. Its drift
+  /// is then checked against the neighbour list like a driven particle's.
+  void hold(std::uint32_t i, bool held);
+  /// Particle i is made of material m from now on; throws InvalidArgument for a material index
+  /// out of range.
+  void set_material(std::uint32_t i, std::size_t m);
+  /// Moves a held particle by d (m); throws std::logic_error for a free one.
+  void displace_held(std::uint32_t i, Vec2 d);
+
+private:
+  friend class Simulation;
+  explicit ParticleEdits(Simulation& sim) : sim_(sim) {}
+  Simulation& sim_;
+};
+
+inline ParticleEdits Simulation::edit_particles() {
+  return ParticleEdits(*this);
+}
 
 } // namespace talus

@@ -233,7 +233,8 @@ TEST(FrostFront, GrainsFrozenIntoEachOtherThawOutGently) {
   ASSERT_LT(below, p.size());
   const Vec2 axis =
       (p.position[below] - p.position[top]) / norm(p.position[below] - p.position[top]);
-  sim.displace_held(static_cast<std::uint32_t>(top), axis * (nearest + 0.1 * p.radius[top]));
+  sim.edit_particles().displace_held(static_cast<std::uint32_t>(top),
+                                     axis * (nearest + 0.1 * p.radius[top]));
   double fastest = 0.0;
   for (bool done = false; !done;) {
     sim.run(20);

@@ -12,6 +12,7 @@
 #include "core/random.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "scenario/dense2d.hpp"
+#include "simulation/block_schedule.hpp"
 #include "simulation/simulation.hpp"
 
 namespace talus {

@@ -121,10 +121,10 @@ SimulationConfig fixed_skin(Integrator integrator = Integrator::verlet) {
 TEST(ListReuse, AHeldGrainPushedIntoANeighbourTouchesIt) {
   Simulation s(two_grains(0.3e-3), fixed_skin()); // in the list, not a candidate by its gap
   s.step();
-  s.hold(0, true);
+  s.edit_particles().hold(0, true);
   const std::uint64_t builds = s.neighbours().builds;
   for (int k = 0; k < 4; ++k) { // 0.4 mm in all: 0.1 mm of overlap, less than half the skin
-    s.displace_held(0, {0.1e-3, 0.0});
+    s.edit_particles().displace_held(0, {0.1e-3, 0.0});
     s.step();
   }
   EXPECT_EQ(s.neighbours().builds, builds); // the list was not rebuilt: the candidates saw it

@@ -55,7 +55,7 @@ TEST(HeldGrains, AGrainReleasedOnAHeldOneLandsOnIt) {
   c.skin = 0.25 * r;
   Simulation s(std::move(w), c);
   s.run(10);
-  s.hold(1, false);
+  s.edit_particles().hold(1, false);
   const auto& p = s.world().particles;
   const double static_overlap = p.mass[1] * 9.81 / 1.0e4;
   double deepest = 0.0, fastest = 0.0;
