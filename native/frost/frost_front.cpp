@@ -205,8 +205,23 @@ void FrostFront::start_freeze(Simulation& sim) {
       sim.edit_particles().set_material(static_cast<std::uint32_t>(i),
                                         static_cast<std::size_t>(material_[i]));
   material_.assign(p.material.begin(), p.material.end());
-  const std::size_t n = surface_.size();
   frozen_.assign(p.size(), 0);
+  find_surface(p);
+  // the columns' make-up in slices below their surface: the area of stones and of fines
+  const std::size_t n = surface_.size();
+  std::vector<std::vector<double>> stone(n, std::vector<double>(slices_per_depth, 0.0)),
+      fine(n, std::vector<double>(slices_per_depth, 0.0));
+  slice_areas(p, stone, fine);
+  ice_content_ = p_.ice_content != 0.0 ? p_.ice_content : pore_fraction(p, stone, fine);
+  stefan_tables(stone, fine);
+  std::fill(front_.begin(), front_.end(), 0.0);
+  std::fill(heave_.begin(), heave_.end(), 0.0);
+  phase_ = Phase::freezing;
+  phase_start_ = sim.time();
+}
+
+void FrostFront::find_surface(const Particles& p) {
+  const std::size_t n = surface_.size();
   // each column's surface: the top of its highest free fine (a stone sticking out does not
   // count; a column without fines: the bed's top)
   double top = -1e300;
@@ -222,11 +237,11 @@ void FrostFront::start_freeze(Simulation& sim) {
   for (auto& s : surface)
     if (s == -1e300) s = top;
   surface_ = surface;
-  // the columns' make-up in slices below their surface: the fine share of the solids
-  const double depth = p_.permafrost_depth;
-  dz_ = depth / static_cast<double>(slices_per_depth);
-  std::vector<std::vector<double>> stone(n, std::vector<double>(slices_per_depth, 0.0)),
-      fine(n, std::vector<double>(slices_per_depth, 0.0));
+  dz_ = p_.permafrost_depth / static_cast<double>(slices_per_depth);
+}
+
+void FrostFront::slice_areas(const Particles& p, std::vector<std::vector<double>>& stone,
+                             std::vector<std::vector<double>>& fine) const {
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!p.is_free(i)) continue;
     const std::size_t c = column_of(p.position[i].x);
@@ -241,32 +256,36 @@ void FrostFront::start_freeze(Simulation& sim) {
           disk_area_between(y, r, ya, yb);
     }
   }
-  // the ice per volume of frozen fines: saturated, their pore fraction, measured from the band
-  // between a fine diameter below the surface (rough) and the permafrost depth, across the
-  // grains' width, in the slices that hold grains (not below the floor)
-  ice_content_ = p_.ice_content;
-  if (ice_content_ == 0.0) {
-    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, fine_r = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.is_free(i)) {
-        x_lo = std::min(x_lo, p.position[i].x - p.radius[i]);
-        x_hi = std::max(x_hi, p.position[i].x + p.radius[i]);
-        if (!is_stone(p, i)) fine_r = std::max(fine_r, p.radius[i]);
-      }
-    double band = 0.0, fine_area = 0.0, stone_area = 0.0;
-    for (std::size_t c = 0; c < n; ++c) {
-      const double c_lo = std::max(x_lo, p_.x_min + static_cast<double>(c) * p_.column_width);
-      const double c_hi = std::min(x_hi, c_lo + p_.column_width);
-      for (std::size_t k = 0; k < slices_per_depth; ++k)
-        if (static_cast<double>(k) * dz_ >= 2.0 * fine_r && stone[c][k] + fine[c][k] > 0.0) {
-          band += std::max(0.0, c_hi - c_lo) * dz_;
-          fine_area += fine[c][k];
-          stone_area += stone[c][k];
-        }
+}
+
+double FrostFront::pore_fraction(const Particles& p, const std::vector<std::vector<double>>& stone,
+                                 const std::vector<std::vector<double>>& fine) const {
+  const std::size_t n = surface_.size();
+  double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, fine_r = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i)) {
+      x_lo = std::min(x_lo, p.position[i].x - p.radius[i]);
+      x_hi = std::max(x_hi, p.position[i].x + p.radius[i]);
+      if (!is_stone(p, i)) fine_r = std::max(fine_r, p.radius[i]);
     }
-    const double pores = band - stone_area - fine_area;
-    ice_content_ = band > stone_area && pores > 0.0 ? pores / (band - stone_area) : 1.0;
+  double band = 0.0, fine_area = 0.0, stone_area = 0.0;
+  for (std::size_t c = 0; c < n; ++c) {
+    const double c_lo = std::max(x_lo, p_.x_min + static_cast<double>(c) * p_.column_width);
+    const double c_hi = std::min(x_hi, c_lo + p_.column_width);
+    for (std::size_t k = 0; k < slices_per_depth; ++k)
+      if (static_cast<double>(k) * dz_ >= 2.0 * fine_r && stone[c][k] + fine[c][k] > 0.0) {
+        band += std::max(0.0, c_hi - c_lo) * dz_;
+        fine_area += fine[c][k];
+        stone_area += stone[c][k];
+      }
   }
+  const double pores = band - stone_area - fine_area;
+  return band > stone_area && pores > 0.0 ? pores / (band - stone_area) : 1.0;
+}
+
+void FrostFront::stefan_tables(const std::vector<std::vector<double>>& stone,
+                               const std::vector<std::vector<double>>& fine) {
+  const std::size_t n = surface_.size();
   // layered Stefan: the front needs (latent heat in the slice) x (thermal resistance above it);
   // stones hold no water and conduct conductivity_ratio times better than fines. In units where
   // a column of pure fines reaches depth z at time z^2 / 2.
@@ -285,10 +304,6 @@ void FrostFront::start_freeze(Simulation& sim) {
       resistance += dz_ / conductivity;
     }
   }
-  std::fill(front_.begin(), front_.end(), 0.0);
-  std::fill(heave_.begin(), heave_.end(), 0.0);
-  phase_ = Phase::freezing;
-  phase_start_ = sim.time();
 }
 
 double FrostFront::front_at(std::size_t c, double target) const {
@@ -306,63 +321,76 @@ bool FrostFront::advance(Simulation& sim) {
   if (phase_ == Phase::idle) return false;
   if (frozen_.size() != p.size()) frozen_.resize(p.size(), 0);
   const double elapsed = sim.time() - phase_start_;
-  const std::size_t n = surface_.size();
   if (phase_ == Phase::freezing) {
     const double u = std::min(1.0, elapsed / p_.freeze_time);
-    const double target = u * 0.5 * p_.permafrost_depth * p_.permafrost_depth;
-    // heave from the fines the front crossed since the last call, column by column
-    std::vector<double> dh(n, 0.0);
-    for (std::size_t c = 0; c < n; ++c) {
-      const double next = std::max(front_[c], front_at(c, target));
-      double fines = 0.0; // integral of the fine share over the crossed depth
-      for (double z = front_[c]; z < next - 1e-15;) {
-        const auto k = std::min(slices_per_depth - 1, static_cast<std::size_t>(z / dz_));
-        const double end = std::min(next, static_cast<double>(k + 1) * dz_);
-        fines += fines_[c][k] * (end - z);
-        z = end > z ? end : next;
-      }
-      dh[c] = p_.heave_strain * fines;
-      front_[c] = next;
-    }
-    // grains the front has passed freeze: fines by their centre, stones by their top
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (!p.is_free(i) || frozen_[i]) continue;
-      const std::size_t c = column_of(p.position[i].x);
-      const double depth = surface_[c] - p.position[i].y - (is_stone(p, i) ? p.radius[i] : 0.0);
-      if (depth <= front_[c]) {
-        sim.edit_particles().hold(static_cast<std::uint32_t>(i), true);
-        frozen_[i] = 1;
-      }
-    }
-    // the crust: stiff, so over ground that heaves less (a stone narrower than the crust) it is
-    // carried by the lenses beside it: each column takes the largest heave within the crust
-    // length on either side
-    std::vector<double> smooth = dh;
-    const auto reach =
-        static_cast<std::size_t>(std::floor(p_.crust_length / p_.column_width + 1e-9));
-    for (std::size_t c = 0; c < n; ++c)
-      for (std::size_t k = c > reach ? c - reach : 0; k <= std::min(n - 1, c + reach); ++k)
-        smooth[c] = std::max(smooth[c], dh[k]);
-    for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
-    // every frozen grain moves up by the heave at its x, linear between the columns' centres,
-    // and at least as much as any grain it rests on: held grains do not give way, so a grain
-    // pushed from below by one that heaves more would be pressed into it, and the overlap would
-    // burst out at the thaw
-    std::vector<double> up(p.size(), 0.0);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (frozen_[i]) up[i] = heave_at(smooth, p.position[i].x);
-    lift_resting_grains(p, up);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (frozen_[i] && up[i] != 0.0)
-        sim.edit_particles().displace_held(static_cast<std::uint32_t>(i), {0.0, up[i]});
+    freeze(sim, u * 0.5 * p_.permafrost_depth * p_.permafrost_depth);
     if (u < 1.0) return false;
     start_thaw(sim);
     return true;
   }
-  // thawing: from the heaved surface down to the bottom of the frozen layer in thaw_time (depth
-  // growing as the root of time), and on below it, at the same law, while a stone's cavity ice
-  // (or the fines under it) is left
-  const double u = elapsed / p_.thaw_time;
+  return thaw(sim, elapsed / p_.thaw_time);
+}
+
+std::vector<double> FrostFront::descend_front(double target) {
+  const std::size_t n = surface_.size();
+  std::vector<double> dh(n, 0.0);
+  for (std::size_t c = 0; c < n; ++c) {
+    const double next = std::max(front_[c], front_at(c, target));
+    double fines = 0.0; // integral of the fine share over the crossed depth
+    for (double z = front_[c]; z < next - 1e-15;) {
+      const auto k = std::min(slices_per_depth - 1, static_cast<std::size_t>(z / dz_));
+      const double end = std::min(next, static_cast<double>(k + 1) * dz_);
+      fines += fines_[c][k] * (end - z);
+      z = end > z ? end : next;
+    }
+    dh[c] = p_.heave_strain * fines;
+    front_[c] = next;
+  }
+  return dh;
+}
+
+void FrostFront::freeze(Simulation& sim, double target) {
+  const Particles& p = sim.world().particles;
+  const std::size_t n = surface_.size();
+  // heave from the fines the front crossed since the last call, column by column
+  const std::vector<double> dh = descend_front(target);
+  // grains the front has passed freeze: fines by their centre, stones by their top
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i) || frozen_[i]) continue;
+    const std::size_t c = column_of(p.position[i].x);
+    const double depth = surface_[c] - p.position[i].y - (is_stone(p, i) ? p.radius[i] : 0.0);
+    if (depth <= front_[c]) {
+      sim.edit_particles().hold(static_cast<std::uint32_t>(i), true);
+      frozen_[i] = 1;
+    }
+  }
+  // the crust: stiff, so over ground that heaves less (a stone narrower than the crust) it is
+  // carried by the lenses beside it: each column takes the largest heave within the crust
+  // length on either side
+  std::vector<double> smooth = dh;
+  const auto reach = static_cast<std::size_t>(std::floor(p_.crust_length / p_.column_width + 1e-9));
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::size_t k = c > reach ? c - reach : 0; k <= std::min(n - 1, c + reach); ++k)
+      smooth[c] = std::max(smooth[c], dh[k]);
+  for (std::size_t c = 0; c < n; ++c) heave_[c] += smooth[c];
+  // every frozen grain moves up by the heave at its x, linear between the columns' centres,
+  // and at least as much as any grain it rests on: held grains do not give way, so a grain
+  // pushed from below by one that heaves more would be pressed into it, and the overlap would
+  // burst out at the thaw
+  std::vector<double> up(p.size(), 0.0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (frozen_[i]) up[i] = heave_at(smooth, p.position[i].x);
+  lift_resting_grains(p, up);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (frozen_[i] && up[i] != 0.0)
+      sim.edit_particles().displace_held(static_cast<std::uint32_t>(i), {0.0, up[i]});
+}
+
+bool FrostFront::thaw(Simulation& sim, double u) {
+  // from the heaved surface down to the bottom of the frozen layer in thaw_time (depth growing as
+  // the root of time), and on below it, at the same law, while a stone's cavity ice (or the fines
+  // under it) is left
+  const Particles& p = sim.world().particles;
   bool held = false;
   std::vector<std::uint32_t> released; // still marked frozen_ until they are separated
   for (std::size_t i = 0; i < p.size(); ++i) {

@@ -91,6 +91,27 @@ private:
   void lift_resting_grains(const Particles& p, std::vector<double>& up) const;
   double front_at(std::size_t c, double target) const;
   void start_thaw(Simulation& sim);
+  /// At the freeze's start: each column's surface (surface_) and the slices' thickness.
+  void find_surface(const Particles& p);
+  /// Per column and slice below the surface, the area of stones and of fines in it.
+  void slice_areas(const Particles& p, std::vector<std::vector<double>>& stone,
+                   std::vector<std::vector<double>>& fine) const;
+  /// The ice per volume of frozen fines when the scenario gives none: saturated, their pore
+  /// fraction, measured from the band between a fine diameter below the surface (rough) and the
+  /// permafrost depth, across the grains' width, in the slices that hold grains (not below the
+  /// floor).
+  double pore_fraction(const Particles& p, const std::vector<std::vector<double>>& stone,
+                       const std::vector<std::vector<double>>& fine) const;
+  /// The front's time to each slice (time_) and the slices' fine shares (fines_).
+  void stefan_tables(const std::vector<std::vector<double>>& stone,
+                     const std::vector<std::vector<double>>& fine);
+  /// The front moved on to `target` (units of D^2/2); returns each column's heave from the
+  /// fines it crossed.
+  std::vector<double> descend_front(double target);
+  /// A freezing call: the front to `target`, the grains it passed held, the frozen ones lifted.
+  void freeze(Simulation& sim, double target);
+  /// A thawing call at u = elapsed / thaw_time: thawed grains freed; true once all are.
+  bool thaw(Simulation& sim, double u);
 
   FrostFrontParameters p_;
   Phase phase_ = Phase::idle;
