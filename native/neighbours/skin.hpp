@@ -12,8 +12,8 @@ namespace talus {
 /// particle and metre of skin into the list (phi: packing fraction), each tested when the
 /// contact candidates are chosen (a few times in a list's life); a narrower one rebuilds the list
 /// more often, every skin / (2 v dt) steps, each rebuild costing about as much per particle as C
-/// entry tests in a step. The sum is least at skin = sqrt(C / phi x v dt R); C / phi = 256
-/// (measured). The skin is kept within [0.1, 1] x R,
+/// entry tests in a step. The sum is least at skin = sqrt(C / phi x v dt R); C / phi = 256, chosen
+/// by measurement (docs/performance.md, "Automatic skin"). The skin is kept within [0.1, 1] x R,
 /// and below what a periodic box allows (3 interaction ranges 2 R_max + skin per period).
 double automatic_skin(double speed, double dt, double mean_radius, double max_radius,
                       const Domain& domain);
