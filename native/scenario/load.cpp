@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "scenario/picture_request.hpp"
+#include "talus/material_keys.hpp"
 
 namespace talus {
 
@@ -110,19 +111,8 @@ void read_simulation(TableReader& r, SimulationSection& s) {
 Material read_material(TableReader& r, std::size_t index) {
   Material m;
   m.name = r.text("name", "material" + std::to_string(index));
-  m.density = r.number("density", m.density, 1e-12, inf, "> 0 kg/m^3");
-  m.young = r.number("young", m.young, 1e-12, inf, "> 0 Pa");
-  m.poisson = r.number("poisson", m.poisson, 0.0, 0.4999, "[0, 0.5)");
-  m.restitution = r.number("restitution", 0.5, 1e-12, 1.0, "(0, 1]");
-  m.friction = r.number("friction", m.friction, 0.0, inf, ">= 0");
-  m.tangential_damping = r.number("tangential_damping", m.tangential_damping, 0.0, inf, ">= 0 1/s");
-  m.normal_stiffness = r.number("normal_stiffness", 1.0e5, 1e-12, inf, "> 0 N/m");
-  m.tangential_stiffness_ratio =
-      r.number("tangential_stiffness_ratio", m.tangential_stiffness_ratio, 1e-12, inf, "> 0");
-  m.normal_damping_rate =
-      r.number("normal_damping_rate", -1.0, -1.0, inf, ">= 0 1/s (or -1: from restitution)");
-  m.hertz_damping = r.number("hertz_damping", -1.0, -1.0, inf,
-                             ">= 0 s (or -1: from restitution at simulation.impact_speed)");
+  for (const MaterialKey& k : material_keys)
+    m.*k.field = r.number(k.name, k.fallback, k.lowest, k.highest, k.allowed.data());
   return m;
 }
 

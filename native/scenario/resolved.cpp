@@ -2,6 +2,7 @@
 #include <sstream>
 
 #include "scenario/load.hpp"
+#include "talus/material_keys.hpp"
 
 namespace talus {
 
@@ -47,17 +48,9 @@ std::string to_toml(const Scenario& s) {
 
   toml::array materials;
   for (const Material& m : s.materials) {
-    materials.push_back(toml::table{{"name", m.name},
-                                    {"density", m.density},
-                                    {"young", m.young},
-                                    {"poisson", m.poisson},
-                                    {"restitution", m.restitution},
-                                    {"friction", m.friction},
-                                    {"tangential_damping", m.tangential_damping},
-                                    {"normal_stiffness", m.normal_stiffness},
-                                    {"tangential_stiffness_ratio", m.tangential_stiffness_ratio},
-                                    {"normal_damping_rate", m.normal_damping_rate},
-                                    {"hertz_damping", m.hertz_damping}});
+    toml::table row{{"name", m.name}};
+    for (const MaterialKey& k : material_keys) row.insert(k.name, m.*k.field);
+    materials.push_back(std::move(row));
   }
   root.insert("materials", materials);
 

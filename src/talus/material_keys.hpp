@@ -1,0 +1,46 @@
+#pragma once
+// The keys that describe a material, with their defaults and allowed ranges: one table for every
+// front end that reads materials (the native scenario loader, LAMMPS' pair_coeff), so that a
+// material means the same in both.
+#include <array>
+#include <limits>
+#include <string_view>
+
+#include "talus/material.hpp"
+
+namespace talus {
+
+struct MaterialKey {
+  std::string_view name;
+  double Material::*field;
+  double fallback; ///< the value when the key is not given
+  double lowest, highest;
+  std::string_view allowed; ///< the range and unit, for error messages
+};
+
+inline constexpr double no_limit = std::numeric_limits<double>::infinity();
+
+inline constexpr std::array<MaterialKey, 10> material_keys{{
+    {"density", &Material::density, 2650.0, 1e-12, no_limit, "> 0 kg/m^3"},
+    {"young", &Material::young, 1.0e8, 1e-12, no_limit, "> 0 Pa"},
+    {"poisson", &Material::poisson, 0.3, 0.0, 0.4999, "[0, 0.5)"},
+    {"restitution", &Material::restitution, 0.5, 1e-12, 1.0, "(0, 1]"},
+    {"friction", &Material::friction, 0.5, 0.0, no_limit, ">= 0"},
+    {"tangential_damping", &Material::tangential_damping, 0.0, 0.0, no_limit, ">= 0 1/s"},
+    {"normal_stiffness", &Material::normal_stiffness, 1.0e5, 1e-12, no_limit, "> 0 N/m"},
+    {"tangential_stiffness_ratio", &Material::tangential_stiffness_ratio, 2.0 / 7.0, 1e-12,
+     no_limit, "> 0"},
+    {"normal_damping_rate", &Material::normal_damping_rate, -1.0, -1.0, no_limit,
+     ">= 0 1/s (or -1: from restitution)"},
+    {"hertz_damping", &Material::hertz_damping, -1.0, -1.0, no_limit,
+     ">= 0 s (or -1: from restitution at simulation.impact_speed)"},
+}};
+
+/// The material with every key at its default.
+inline Material default_material() {
+  Material m;
+  for (const MaterialKey& k : material_keys) m.*k.field = k.fallback;
+  return m;
+}
+
+} // namespace talus
