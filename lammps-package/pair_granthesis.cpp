@@ -1,0 +1,335 @@
+#include "pair_granthesis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <mpi.h>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "lammps_error.hpp"
+#include "memory.h"
+#include "neigh_list.h"
+#include "pair_coefficients.hpp"
+#include "talus/contact_force.hpp"
+#include "talus/error.hpp"
+#include "talus/material_keys.hpp"
+#include "update.h"
+#include "utils.h"
+
+namespace talus::lammps {
+
+namespace {
+
+constexpr const char* style_name = "pair granthesis";
+
+// The laws this pair style allows: the tangential ones without contact history (the package
+// keeps no per-contact state yet).
+bool history_free(TangentialLaw t) {
+  return with_tangential_law(t, []<class T>() { return !T::has_history; });
+}
+
+std::string history_free_names() {
+  std::string names;
+  for (const std::string_view n : TangentialLaws::names) {
+    if (!history_free(parse_tangential_law(n))) continue;
+    if (!names.empty()) names.append(", ");
+    names.append(n);
+  }
+  return names;
+}
+
+} // namespace
+
+PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
+  single_enable = 1;
+  single_extra = 6;
+  svector = svector_storage_;
+  restartinfo = 1;
+  finitecutflag = 1;
+  no_virial_fdotr_compute = 1;
+}
+
+PairGranthesis::~PairGranthesis() {
+  svector = nullptr; // ours, not allocated by Pair
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+}
+
+void PairGranthesis::fail(const std::string& message) const {
+  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+}
+
+void PairGranthesis::allocate() {
+  allocated = 1;
+  ntypes_ = atom->ntypes;
+  memory->create(setflag, ntypes_ + 1, ntypes_ + 1, "pair:setflag");
+  memory->create(cutsq, ntypes_ + 1, ntypes_ + 1, "pair:cutsq");
+  for (int i = 0; i <= ntypes_; ++i)
+    for (int j = 0; j <= ntypes_; ++j) setflag[i][j] = 1; // see given_
+  material_.assign(static_cast<std::size_t>(ntypes_) + 1, Material{});
+  pair_.assign(static_cast<std::size_t>(ntypes_ + 1) * static_cast<std::size_t>(ntypes_ + 1), {});
+  explicit_pair_.assign(pair_.size(), 0);
+  given_.assign(static_cast<std::size_t>(ntypes_) + 1, 0);
+}
+
+const PairParameters& PairGranthesis::parameters(int i, int j) const {
+  return pair_[static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+               static_cast<std::size_t>(j)];
+}
+
+// pair_style granthesis NORMAL TANGENTIAL
+void PairGranthesis::settings(int narg, char** arg) {
+  const std::string usage =
+      "usage: pair_style granthesis NORMAL TANGENTIAL; NORMAL: " + law_names<NormalLaw>() +
+      "; TANGENTIAL: " + history_free_names();
+  if (narg != 2) fail(usage);
+  try {
+    normal_ = parse_normal_law(arg[0]);
+    tangential_ = parse_tangential_law(arg[1]);
+  } catch (const InvalidArgument& e) {
+    fail(std::string(e.what()) + " (" + usage + ")");
+  }
+  if (!history_free(tangential_))
+    fail("tangential law '" + std::string(arg[1]) +
+         "' keeps a contact history, which this pair style does not yet store; allowed: " +
+         history_free_names());
+}
+
+// pair_coeff I J key value ...: I = J (or a range through both) sets the materials of those types;
+// I != J gives the pair's own parameters, as if both grains were of the material described.
+void PairGranthesis::coeff(int narg, char** arg) {
+  if (narg < 2)
+    fail("usage: pair_coeff I J key value ... (keys: " + pair_coefficient_names() + ")");
+  if (!allocated) allocate();
+  int ilo = 0, ihi = 0, jlo = 0, jhi = 0;
+  LAMMPS_NS::utils::bounds(__FILE__, __LINE__, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  LAMMPS_NS::utils::bounds(__FILE__, __LINE__, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  Material m;
+  try {
+    m = parse_pair_coefficients(std::vector<std::string>(arg + 2, arg + narg));
+  } catch (const InvalidArgument& e) {
+    fail(e.what());
+  }
+  int count = 0;
+  for (int i = ilo; i <= ihi; ++i)
+    for (int j = std::max(jlo, i); j <= jhi; ++j) {
+      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+                      static_cast<std::size_t>(j);
+      if (i == j) {
+        material_[static_cast<std::size_t>(i)] = m;
+      } else {
+        pair_[ij] = mix(m, m);
+        explicit_pair_[ij] = 1;
+      }
+      if (i == j) given_[static_cast<std::size_t>(i)] = 1;
+      ++count;
+    }
+  if (count == 0) fail("pair_coeff " + std::string(arg[0]) + " " + arg[1] + " names no type pair");
+}
+
+void PairGranthesis::init_style() {
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    fail("needs per-atom radius, mass, angular velocity and torque: atom_style sphere");
+  if (comm->ghost_velocity == 0) fail("needs the velocities of ghost atoms: comm_modify vel yes");
+  if (!allocated)
+    fail("no pair_coeff given (pair_coeff I I key value ...; keys: " + pair_coefficient_names() +
+         ")");
+  const bool hertz = normal_ == law_id<HertzViscoelastic>;
+  for (int i = 1; i <= ntypes_; ++i) {
+    if (given_[static_cast<std::size_t>(i)] == 0)
+      fail("no pair_coeff for type " + std::to_string(i) + " (pair_coeff " + std::to_string(i) +
+           " " + std::to_string(i) + " key value ...; keys: " + pair_coefficient_names() + ")");
+    const Material& m = material_[static_cast<std::size_t>(i)];
+    const std::string problem =
+        with_normal_law(normal_, [&]<class N>() { return N::material_error(m); });
+    if (!problem.empty()) fail("type " + std::to_string(i) + ": " + problem);
+    if (hertz && m.hertz_damping < 0.0)
+      fail("type " + std::to_string(i) +
+           ": the hertz law needs hertz_damping (s) >= 0 in LAMMPS (the native engine derives it "
+           "from the restitution at its impact speed; talus export lammps writes that value)");
+  }
+  if (domain->dimension == 3 && comm->me == 0)
+    error->warning(__FILE__, __LINE__,
+                   std::string(style_name) +
+                       ": in 3d the contacts must lie in the x-y plane (spheres moving in a "
+                       "plane); a contact out of it stops the run");
+  double local = 0.0;
+  for (int i = 0; i < atom->nlocal; ++i) local = std::max(local, atom->radius[i]);
+  MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
+  Pair::init_style(); // the default half list: j > i within the cutoff plus the skin
+}
+
+double PairGranthesis::init_one(int i, int j) {
+  const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+                  static_cast<std::size_t>(j);
+  if (!explicit_pair_[ij])
+    pair_[ij] = mix(material_[static_cast<std::size_t>(i)], material_[static_cast<std::size_t>(j)]);
+  const auto ji = static_cast<std::size_t>(j) * static_cast<std::size_t>(ntypes_ + 1) +
+                  static_cast<std::size_t>(i);
+  pair_[ji] = pair_[ij];
+  // The reach of a pair is the sum of the radii; the half list needs the largest (finitecutflag:
+  // LAMMPS adds the skin)
+  return 2.0 * std::max(max_radius_, 0.0);
+}
+
+void PairGranthesis::compute(int eflag, int vflag) {
+  with_contact_law(normal_, tangential_,
+                   [&]<class N, class T>() { compute_with<N, T>(eflag, vflag); });
+}
+
+template <class N, class T> void PairGranthesis::compute_with(int eflag, int vflag) {
+  ev_init(eflag, vflag);
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const int* type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double dt = update->dt;
+  for (int ii = 0; ii < list->inum; ++ii) {
+    const int i = list->ilist[ii];
+    const int* neighbours = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; ++jj) {
+      const int j = neighbours[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double reach = radius[i] + radius[j];
+      const double dist2 = dx * dx + dy * dy;
+      if (dist2 + dz * dz >= reach * reach || dist2 == 0.0) continue;
+      if (dz != 0.0)
+        fail("atoms " + std::to_string(atom->tag[i]) + " and " + std::to_string(atom->tag[j]) +
+             " touch out of the x-y plane (dz = " + std::to_string(dz) +
+             " m): the thesis' laws are for disks, or spheres moving in a plane");
+      const ContactGeometry g =
+          pair_geometry(dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0],
+                        v[i][1], v[j][0], v[j][1], omega[i][2], omega[j][2]);
+      const PairParameters& p = parameters(type[i], type[j]);
+      double history = 0.0; // the allowed tangential laws keep none
+      const ContactForce c = contact_force<N, T>(p, g, history, dt);
+      f[i][0] += c.force_x;
+      f[i][1] += c.force_y;
+      torque[i][2] += c.torque_i;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= c.force_x;
+        f[j][1] -= c.force_y;
+        torque[j][2] += c.torque_j;
+      }
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, newton_pair,
+                     eflag ? contact_elastic_energy<N, T>(p, g, history) : 0.0, 0.0, c.force_x,
+                     c.force_y, 0.0, dx, dy, dz);
+    }
+  }
+}
+
+// The contact's elastic energy; fforce is F_n / r (LAMMPS multiplies by the separation vector to
+// report the normal force); svector: the force on i (x, y), the torques on i and j, F_n and the
+// overlap, all 0 for a pair that does not touch.
+double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
+                              double /*factor_coul*/, double /*factor_lj*/, double& fforce) {
+  std::fill(std::begin(svector_storage_), std::end(svector_storage_), 0.0);
+  fforce = 0.0;
+  double** x = atom->x;
+  double** v = atom->v;
+  const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];
+  const double dist2 = dx * dx + dy * dy;
+  const double reach = atom->radius[i] + atom->radius[j];
+  if (rsq >= reach * reach || dist2 == 0.0) return 0.0;
+  const ContactGeometry g = pair_geometry(
+      dx, dy, std::sqrt(dist2), atom->radius[i], atom->radius[j], atom->rmass[i], atom->rmass[j],
+      v[i][0], v[i][1], v[j][0], v[j][1], atom->omega[i][2], atom->omega[j][2]);
+  const PairParameters& p = parameters(itype, jtype);
+  double history = 0.0;
+  return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
+    const ContactForce c = contact_force<N, T>(p, g, history, update->dt);
+    fforce = c.normal_force / std::sqrt(rsq);
+    svector_storage_[0] = c.force_x;
+    svector_storage_[1] = c.force_y;
+    svector_storage_[2] = c.torque_i;
+    svector_storage_[3] = c.torque_j;
+    svector_storage_[4] = c.normal_force;
+    svector_storage_[5] = g.overlap;
+    return contact_elastic_energy<N, T>(p, g, history);
+  });
+}
+
+void PairGranthesis::write_restart_settings(FILE* file) {
+  const int laws[2] = {static_cast<int>(normal_), static_cast<int>(tangential_)};
+  std::fwrite(laws, sizeof(int), 2, file);
+}
+
+void PairGranthesis::read_restart_settings(FILE* file) {
+  int laws[2] = {0, 0};
+  if (comm->me == 0)
+    LAMMPS_NS::utils::sfread(__FILE__, __LINE__, laws, sizeof(int), 2, file, nullptr, error);
+  MPI_Bcast(laws, 2, MPI_INT, 0, world);
+  normal_ = static_cast<NormalLaw>(laws[0]);
+  tangential_ = static_cast<TangentialLaw>(laws[1]);
+}
+
+// Per type pair (i <= j): whether it was set, whether it was given explicitly, then the material
+// (i = j) or the pair parameters (i != j explicit), as doubles.
+void PairGranthesis::write_restart(FILE* file) {
+  write_restart_settings(file);
+  for (int i = 1; i <= ntypes_; ++i)
+    for (int j = i; j <= ntypes_; ++j) {
+      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+                      static_cast<std::size_t>(j);
+      const int flags[2] = {i == j ? given_[static_cast<std::size_t>(i)] : explicit_pair_[ij],
+                            explicit_pair_[ij]};
+      std::fwrite(flags, sizeof(int), 2, file);
+      if (!flags[0]) continue;
+      if (i == j) {
+        const Material& m = material_[static_cast<std::size_t>(i)];
+        for (const MaterialKey& k : material_keys)
+          std::fwrite(&(m.*k.field), sizeof(double), 1, file);
+      } else if (flags[1]) {
+        std::fwrite(&pair_[ij], sizeof(PairParameters), 1, file);
+      }
+    }
+}
+
+void PairGranthesis::read_restart(FILE* file) {
+  read_restart_settings(file);
+  allocate();
+  for (int i = 1; i <= ntypes_; ++i)
+    for (int j = i; j <= ntypes_; ++j) {
+      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+                      static_cast<std::size_t>(j);
+      int flags[2] = {0, 0};
+      if (comm->me == 0)
+        LAMMPS_NS::utils::sfread(__FILE__, __LINE__, flags, sizeof(int), 2, file, nullptr, error);
+      MPI_Bcast(flags, 2, MPI_INT, 0, world);
+      if (i == j) given_[static_cast<std::size_t>(i)] = static_cast<char>(flags[0]);
+      explicit_pair_[ij] = static_cast<char>(flags[1]);
+      if (!flags[0]) continue;
+      if (i == j) {
+        Material& m = material_[static_cast<std::size_t>(i)];
+        for (const MaterialKey& k : material_keys) {
+          double value = 0.0;
+          if (comm->me == 0)
+            LAMMPS_NS::utils::sfread(__FILE__, __LINE__, &value, sizeof(double), 1, file, nullptr,
+                                     error);
+          MPI_Bcast(&value, 1, MPI_DOUBLE, 0, world);
+          m.*k.field = value;
+        }
+      } else if (flags[1]) {
+        if (comm->me == 0)
+          LAMMPS_NS::utils::sfread(__FILE__, __LINE__, &pair_[ij], sizeof(PairParameters), 1, file,
+                                   nullptr, error);
+        MPI_Bcast(&pair_[ij], sizeof(PairParameters), MPI_BYTE, 0, world);
+      }
+    }
+}
+
+} // namespace talus::lammps

@@ -1,0 +1,55 @@
+#pragma once
+// pair_style granthesis: the thesis' contact laws (viscoelastic Hertz or the linear spring-dashpot,
+// with the Coulomb-capped viscous friction) inside LAMMPS, evaluated by the same code as the native
+// engine (src/talus). Syntax and conventions: lammps-package/README.md.
+#include <string>
+#include <vector>
+
+#include "pair.h"
+#include "talus/law_table.hpp"
+#include "talus/material.hpp"
+#include "talus/pair_parameters.hpp"
+
+namespace talus::lammps {
+
+class PairGranthesis : public LAMMPS_NS::Pair {
+public:
+  explicit PairGranthesis(LAMMPS_NS::LAMMPS* instance);
+  ~PairGranthesis() override;
+
+  void compute(int eflag, int vflag) override;
+  void settings(int narg, char** arg) override;
+  void coeff(int narg, char** arg) override;
+  void init_style() override;
+  double init_one(int i, int j) override;
+  double single(int i, int j, int itype, int jtype, double rsq, double factor_coul,
+                double factor_lj, double& fforce) override;
+  void write_restart(FILE* file) override;
+  void read_restart(FILE* file) override;
+  void write_restart_settings(FILE* file) override;
+  void read_restart_settings(FILE* file) override;
+
+  /// The pair parameters of types i and j (1-based), as mixed or given.
+  const PairParameters& parameters(int i, int j) const;
+  NormalLaw normal_law() const { return normal_; }
+  TangentialLaw tangential_law() const { return tangential_; }
+
+private:
+  template <class N, class T> void compute_with(int eflag, int vflag);
+  void allocate();
+  [[noreturn]] void fail(const std::string& message) const;
+
+  NormalLaw normal_ = law_id<HertzViscoelastic>;
+  TangentialLaw tangential_ = law_id<ViscousCoulomb>;
+  int ntypes_ = 0;
+  std::vector<Material> material_;   ///< per type, 1-based
+  std::vector<PairParameters> pair_; ///< (ntypes + 1)^2: mixed or given per pair
+  std::vector<char> explicit_pair_;  ///< 1 where pair_coeff I J (I != J) gave the pair
+  /// 1 for the types whose material pair_coeff I I gave. LAMMPS' own setflag is 1 everywhere,
+  /// so that its check before init_style passes and init_style names the type that is missing.
+  std::vector<char> given_;
+  double max_radius_ = 0.0;        ///< the largest radius of any atom (m), at init
+  double svector_storage_[6] = {}; ///< single(): fx, fy, torque_i, torque_j, F_n, overlap
+};
+
+} // namespace talus::lammps

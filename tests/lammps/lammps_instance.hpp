@@ -1,0 +1,52 @@
+#pragma once
+// A LAMMPS instance in the test process, with the talus styles registered: commands go in one at
+// a time, and the atoms' arrays are read directly. LAMMPS stops a bad command by throwing (Debian
+// builds it with exceptions), which the tests catch as std::exception.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "input.h"
+#include "lammps.h"
+#include "register.hpp"
+
+namespace talus::lammps_test {
+
+class LammpsInstance {
+public:
+  LammpsInstance() {
+    std::vector<std::string> words{"talus-tests", "-log", "none", "-screen", "none", "-nocite"};
+    std::vector<char*> argv;
+    for (std::string& w : words) argv.push_back(w.data());
+    lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
+    talus_lammps_register(lmp_);
+  }
+  ~LammpsInstance() { delete lmp_; }
+  LammpsInstance(const LammpsInstance&) = delete;
+  LammpsInstance& operator=(const LammpsInstance&) = delete;
+
+  void command(const std::string& line) { lmp_->input->one(line); }
+  void commands(const std::vector<std::string>& lines) {
+    for (const std::string& l : lines) command(l);
+  }
+  LAMMPS_NS::LAMMPS* lmp() { return lmp_; }
+  /// The local index of the atom with this tag (needs atom_modify map array).
+  int index(int tag) { return lmp_->atom->map(tag); }
+  double* force(int tag) { return lmp_->atom->f[index(tag)]; }
+  double* torque(int tag) { return lmp_->atom->torque[index(tag)]; }
+  double* position(int tag) { return lmp_->atom->x[index(tag)]; }
+  double* velocity(int tag) { return lmp_->atom->v[index(tag)]; }
+
+private:
+  LAMMPS_NS::LAMMPS* lmp_ = nullptr;
+};
+
+/// A number as LAMMPS must read it to get the same double: 17 significant digits.
+inline std::string exact(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+} // namespace talus::lammps_test
