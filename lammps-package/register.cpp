@@ -1,7 +1,9 @@
 #include "register.hpp"
 
+#include "fix_frost_heave.h"
 #include "force.h"
 #include "lammps.h"
+#include "modify.h"
 #include "pair_granthesis.h"
 
 namespace {
@@ -10,9 +12,14 @@ LAMMPS_NS::Pair* create_pair_granthesis(LAMMPS_NS::LAMMPS* lmp) {
   return new talus::lammps::PairGranthesis(lmp);
 }
 
+LAMMPS_NS::Fix* create_fix_frost_heave(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new talus::lammps::FixFrostHeave(lmp, narg, arg);
+}
+
 } // namespace
 
 extern "C" void talus_lammps_register(void* lmp) {
   auto* instance = static_cast<LAMMPS_NS::LAMMPS*>(lmp);
   (*instance->force->pair_map)["granthesis"] = &create_pair_granthesis;
+  (*instance->modify->fix_map)["frost/heave"] = &create_fix_frost_heave;
 }

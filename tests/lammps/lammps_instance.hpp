@@ -3,8 +3,13 @@
 // a time, and the atoms' arrays are read directly. LAMMPS stops a bad command by throwing (Debian
 // builds it with exceptions), which the tests catch as std::exception.
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 #include "atom.h"
 #include "input.h"
@@ -47,6 +52,31 @@ inline std::string exact(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", x);
   return text;
+}
+
+/// Runs a deck in talus-lmp, the package's launcher (TALUS_LMP), and expects it to stop with an
+/// error whose text contains `expected`. Debian's LAMMPS ends the process on an error (Error::all
+/// does not throw there), so bad input is tested in a process of its own.
+inline void expect_deck_error(const std::vector<std::string>& deck, const std::string& expected) {
+  // a file per process: ctest runs the tests side by side
+  const std::string path =
+      testing::TempDir() + "talus_bad_input_" + std::to_string(getpid()) + ".in";
+  {
+    std::ofstream out(path);
+    for (const std::string& line : deck) out << line << "\n";
+  }
+  std::string command(TALUS_LMP);
+  command.append(" -in ").append(path).append(" -log none 2>&1");
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string printed;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed.append(buffer);
+  const int status = pclose(pipe);
+  EXPECT_NE(status, 0) << printed;
+  EXPECT_NE(printed.find("ERROR"), std::string::npos) << printed;
+  EXPECT_NE(printed.find(expected), std::string::npos) << "expected: " << expected << "\n"
+                                                       << printed;
 }
 
 } // namespace talus::lammps_test

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -200,9 +198,7 @@ TEST(PairGranthesis, HertzCollisionMeetsTheClosedForms) {
               reference::roundoff_tolerance * mass * speed + 1e-20);
 }
 
-// Bad input stops with a LAMMPS error that names the setting and the allowed values. Debian's
-// LAMMPS ends the process on an error (Error::all does not throw there), so each deck runs in
-// talus-lmp, the package's launcher, and the test reads what it printed.
+// Two types of disks in a box, then `lines`: an error naming `expected` (run_deck).
 void expect_error(const std::vector<std::string>& lines, const std::string& expected) {
   std::vector<std::string> deck{"dimension 2",
                                 "units si",
@@ -216,23 +212,7 @@ void expect_error(const std::vector<std::string>& lines, const std::string& expe
                                 "set atom * diameter 0.01",
                                 "set atom * density/disc 2650"};
   deck.insert(deck.end(), lines.begin(), lines.end());
-  const std::string path = testing::TempDir() + "talus_bad_input.in";
-  {
-    std::ofstream out(path);
-    for (const std::string& line : deck) out << line << "\n";
-  }
-  std::string command(TALUS_LMP);
-  command.append(" -in ").append(path).append(" -log none 2>&1");
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string printed;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed.append(buffer);
-  const int status = pclose(pipe);
-  EXPECT_NE(status, 0) << printed;
-  EXPECT_NE(printed.find("ERROR"), std::string::npos) << printed;
-  EXPECT_NE(printed.find(expected), std::string::npos) << "expected: " << expected << "\n"
-                                                       << printed;
+  expect_deck_error(deck, expected);
 }
 
 TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {

@@ -1,0 +1,91 @@
+// fix frost/heave: the thesis' freeze (chapter 5.2.1) in LAMMPS. Heights above the table are
+// multiplied by exactly the factor when the group's kinetic energy is below epsilon, and only
+// then; bad fix lines stop with their errors.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "fix.h"
+#include "lammps_instance.hpp"
+#include "modify.h"
+
+namespace talus::lammps_test {
+namespace {
+
+constexpr double table = 0.01, factor = 1.5;
+const double heights[3] = {0.02, 0.0537, 0.11}; // m, far apart: no contacts
+
+// Three disks at rest above the table, stepped by fix nve/sphere, with `fix_line`.
+void set_up(LammpsInstance& l, const std::string& fix_line) {
+  l.commands({"dimension 2", "units si", "atom_style sphere", "atom_modify map array",
+              "boundary f f p", "comm_modify vel yes", "region box block -1 1 -1 1 -0.01 0.01",
+              "create_box 1 box"});
+  for (int k = 0; k < 3; ++k)
+    l.command("create_atoms 1 single " + exact(0.1 * k) + " " + exact(heights[k]) + " 0");
+  l.commands({"set atom * diameter 0.01", "set atom * density/disc 2650",
+              "pair_style granthesis linear coulomb", "pair_coeff * *",
+              "fix move all nve/sphere disc", "fix plane all enforce2d", fix_line,
+              "timestep 1e-6"});
+}
+
+double heaves(LammpsInstance& l) {
+  LAMMPS_NS::Modify* m = l.lmp()->modify;
+  return m->fix[m->find_fix("frost")]->compute_scalar();
+}
+
+TEST(FixFrostHeave, LiftsHeightsAboveTheTableByExactlyTheFactor) {
+  LammpsInstance l;
+  set_up(l, "fix frost all frost/heave epsilon 1e-12 factor 1.5 table 0.01 interval 1");
+  l.command("run 1"); // at rest: the first step's end heaves
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(l.position(k + 1)[1], table + (heights[k] - table) * factor);
+    EXPECT_EQ(l.position(k + 1)[0], 0.1 * k);
+  }
+  EXPECT_EQ(heaves(l), 1.0);
+  l.command("run 100"); // still at rest, but within the interval of 1 s: no second heave
+  EXPECT_EQ(heaves(l), 1.0);
+  EXPECT_EQ(l.position(1)[1], table + (heights[0] - table) * factor);
+}
+
+// 1/2 m v^2 of one disk of 5 mm (2650 kg/m^3, a disk: m = 0.208 kg) at 0.01 m/s is about 1e-5 J,
+// above the epsilon of 1e-6 J: no heave while it moves, one as soon as it stops.
+TEST(FixFrostHeave, HeavesOnlyBelowTheThreshold) {
+  LammpsInstance l;
+  set_up(l, "fix frost all frost/heave epsilon 1e-6 factor 1.5 table 0.01");
+  l.command("set atom 2 vx 0.01");
+  l.command("run 20");
+  EXPECT_EQ(heaves(l), 0.0);
+  EXPECT_EQ(l.position(1)[1], heights[0]);
+  l.command("velocity all set 0 0 0");
+  l.command("run 1");
+  EXPECT_EQ(heaves(l), 1.0);
+  EXPECT_EQ(l.position(1)[1], table + (heights[0] - table) * factor);
+}
+
+void expect_error(const std::string& fix_line, const std::string& expected) {
+  expect_deck_error({"dimension 2", "units si", "atom_style sphere", "boundary f f p",
+                     "region box block -1 1 -1 1 -0.01 0.01", "create_box 1 box",
+                     "create_atoms 1 single 0 0 0", fix_line},
+                    expected);
+}
+
+TEST(FixFrostHeave, BadLinesNameTheKeywordAndTheAllowedValues) {
+  expect_error("fix f all frost/heave factor 1.5 table 0",
+               "epsilon, factor and table are required");
+  expect_error("fix f all frost/heave epsilon -1 factor 1.5 table 0",
+               "epsilon = -1; allowed: >= 0 J");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 0 table 0", "factor = 0; allowed: > 0");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor inf table 0", "factor = inf");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 every 2.5",
+               "every = 2.5; allowed: an integer >= 1");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 inertia cube",
+               "inertia = cube; allowed: disc, sphere");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 delta 2",
+               "unknown keyword 'delta'");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table",
+               "table: the value is missing");
+}
+
+} // namespace
+} // namespace talus::lammps_test
