@@ -1,4 +1,5 @@
 // `talus bench dense2d`: the reference benchmark, timed side by side with LAMMPS.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "io/checkpoint.hpp"
 #include "scenario/dense2d.hpp"
 #include "talus/error.hpp"
+#include "talus/material_keys.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,12 +29,61 @@ struct BenchOptions {
   std::uint64_t steps = 2000;
   int rounds = 1;
   bool lammps = false;
+  std::string laws = "hooke"; ///< "hooke" (LAMMPS' gran/hooke/history) or "thesis"
   std::string results = "bench/results";
   std::string lammps_inputs;
 };
 
+// How LAMMPS runs the timed steps: which program, which pair style, on how many ranks.
+struct LammpsRun {
+  std::string label;   ///< for the log file's name and the messages
+  std::string program; ///< lmp, or the package's talus-lmp
+  std::string pair;    ///< lammps-bench.in's pair_style arguments; empty: the deck's own
+  std::string coeff;   ///< and its pair_coeff coefficients
+  int ranks = 1;       ///< MPI ranks (mpirun beyond 1)
+};
+
+// The path of the package's launcher where the build made it, else "".
+std::string talus_lmp() {
+#ifdef TALUS_LMP
+  return fs::exists(TALUS_LMP) ? std::string(TALUS_LMP) : std::string();
+#else
+  return {};
+#endif
+}
+
+// The coefficients of pair_coeff for a material: the native keys (pair_style granthesis).
+std::string granthesis_coefficients(const Material& m) {
+  std::string out;
+  for (const MaterialKey& k : material_keys)
+    if (k.name != "density")
+      out.append(out.empty() ? "" : " ")
+          .append(k.name)
+          .append(" ")
+          .append(fmt::format("{:.17g}", m.*k.field));
+  return out;
+}
+
+// The LAMMPS runs beside the native engine: with --laws hooke LAMMPS' own gran/hooke/history
+// (the deck's); with --laws thesis pair_style granthesis in talus-lmp, and LAMMPS' own
+// gran/hooke (no history: it has no more to do than granthesis) for comparison.
+std::vector<LammpsRun> lammps_runs(const BenchOptions& o, int ranks) {
+  if (o.laws == "hooke") return {{"gran/hooke/history", "lmp", "", "", ranks}};
+  const std::string launcher = talus_lmp();
+  if (launcher.empty()) {
+    fmt::print("lammps: talus-lmp was not built (LAMMPS' headers, liblammps-dev, were not "
+               "found): pair_style granthesis skipped\n");
+    return {};
+  }
+  // gran/hooke in talus-lmp too: the same library as lmp, and it reads the restart file that
+  // granthesis' settling wrote (lmp does not know the style named in it)
+  return {{"granthesis", launcher, "granthesis hertz coulomb",
+           granthesis_coefficients(dense2d_thesis_material()), ranks},
+          {"gran/hooke", launcher, "gran/hooke 1.0e5 NULL 1.0e2 NULL 0.5 1", "", ranks}};
+}
+
 // Runs LAMMPS on the same system; returns its seconds per particle-step (0 if it failed).
-double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
+double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const LammpsRun& how) {
   if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
     fmt::print("lammps: `lmp` is not on the PATH (apt-get install lammps); skipped\n");
     return 0.0;
@@ -41,27 +92,44 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
   fs::create_directories(dir);
   for (const char* f : {"lammps-settle.in", "lammps-bench.in"})
     fs::copy_file(fs::path(o.lammps_inputs) / f, dir / f, fs::copy_options::overwrite_existing);
-  const std::string vars = fmt::format("-var nx {} -var ny {}", nx, ny);
-  if (!fs::exists(dir / fmt::format("settled_{}x{}.restart", nx, ny))) {
+  // the packing LAMMPS settles itself, with the laws of --laws (the thesis': in talus-lmp)
+  const bool thesis = o.laws == "thesis";
+  const std::string tag = thesis ? "_thesis" : "";
+  const std::string vars =
+      fmt::format("-var nx {} -var ny {}{}", nx, ny, thesis ? " -var tag " + tag : "");
+  if (!fs::exists(dir / fmt::format("settled{}_{}x{}.restart", tag, nx, ny))) {
+    const std::string settle_with =
+        thesis ? fmt::format("{} -var pair 'granthesis hertz coulomb' -var coeff '{}'", talus_lmp(),
+                             granthesis_coefficients(dense2d_thesis_material()))
+               : std::string("lmp");
     fmt::print("lammps: settling its own packing (lammps-settle.in)...\n");
     std::fflush(stdout);
-    if (std::system(
-            fmt::format("cd '{}' && lmp -in lammps-settle.in {} -log settle.log > settle.out 2>&1",
-                        dir.string(), vars)
-                .c_str()) != 0) {
-      fmt::print("lammps: settling failed; see {}/settle.out\n", dir.string());
+    if (std::system(fmt::format("cd '{}' && OMP_NUM_THREADS=1 {} -in lammps-settle.in {} -log "
+                                "settle{}.log > settle{}.out 2>&1",
+                                dir.string(), settle_with, vars, tag, tag)
+                        .c_str()) != 0) {
+      fmt::print("lammps: settling failed; see {}/settle{}.out\n", dir.string(), tag);
       return 0.0;
     }
   }
-  if (std::system(fmt::format("cd '{}' && lmp -in lammps-bench.in {} -var nsteps {} -log bench.log "
-                              "> bench.out 2>&1",
-                              dir.string(), vars, o.steps)
+  std::string name = how.label; // a file name: "gran/hooke" -> "gran-hooke"
+  std::replace(name.begin(), name.end(), '/', '-');
+  std::string law;
+  if (!how.pair.empty()) law = fmt::format("-var pair '{}' -var coeff '{}'", how.pair, how.coeff);
+  const std::string mpi =
+      how.ranks > 1 ? fmt::format("env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                                  "mpirun --oversubscribe -np {} ",
+                                  how.ranks)
+                    : std::string();
+  if (std::system(fmt::format("cd '{}' && OMP_NUM_THREADS=1 {}{} -in lammps-bench.in {} {} -var "
+                              "nsteps {} -log bench-{}.log > bench-{}.out 2>&1",
+                              dir.string(), mpi, how.program, vars, law, o.steps, name, name)
                       .c_str()) != 0) {
-    fmt::print("lammps: the run failed; see {}/bench.out\n", dir.string());
+    fmt::print("lammps ({}): the run failed; see {}/bench-{}.out\n", how.label, dir.string(), name);
     return 0.0;
   }
   // "Loop time of 12.3 on 1 procs for 2000 steps with 10000 atoms"
-  const std::string log = read_file((dir / "bench.log").string());
+  const std::string log = read_file((dir / fmt::format("bench-{}.log", name)).string());
   const auto at = log.find("Loop time of ");
   double seconds = 0.0, steps = 0.0, atoms = 0.0;
   int procs = 0;
@@ -69,62 +137,69 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny) {
       std::sscanf(log.c_str() + at, "Loop time of %lf on %d procs for %lf steps with %lf atoms",
                   &seconds, &procs, &steps, &atoms) != 4 ||
       steps <= 0 || atoms <= 0) {
-    fmt::print("lammps: no 'Loop time' in {}/bench.log\n", dir.string());
+    fmt::print("lammps: no 'Loop time' in {}/bench-{}.log\n", dir.string(), name);
     return 0.0;
   }
   return seconds / (steps * atoms);
 }
 
-void run_bench(const BenchOptions& o) {
-  require(o.rounds >= 1, fmt::format("bench dense2d: --rounds {}; allowed: >= 1", o.rounds));
-  const std::size_t ny = bench_base_side(o.system, "bench dense2d"), nx = ny * o.system.tiles;
-  Simulation sim = bench_simulation(o.system, "bench dense2d");
-  const double n = static_cast<double>(sim.world().particles.size());
-  sim.run(100); // warm up: caches, first rebuild
-  // every round times the same steps from this state (as LAMMPS' runs start from its restart)
-  const SimulationState warm = o.rounds > 1 ? sim.state() : SimulationState{};
-  const std::uint64_t builds_before = sim.neighbours().builds;
-  const std::uint64_t choices_before = sim.candidate_choices();
-  const std::uint64_t tests_before = sim.drift_tests();
-  std::vector<double> talus_rounds{time_steps(sim, o.steps)};
-  const std::uint64_t builds = sim.neighbours().builds - builds_before;
-  const std::uint64_t choices = sim.candidate_choices() - choices_before;
-  const std::uint64_t tests = sim.drift_tests() - tests_before;
-  const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
-  // with rounds, a copy of the state is held too: the peak is not the engine's alone
-  const double bytes = o.rounds > 1 ? 0.0 : peak_rss_bytes() / n;
-  const double engine_bytes = static_cast<double>(sim.footprint_bytes()) / n;
-  const bool with_lammps = o.lammps && o.system.tiles == 1;
-  if (o.lammps && o.system.tiles > 1)
-    fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
-  // talus and LAMMPS in turns, round after round: a slow minute of the host falls on both
-  std::vector<double> lammps_rounds;
-  for (int r = 0; r < o.rounds; ++r) {
-    if (r > 0) {
+// talus and LAMMPS in turns, round after round: a slow minute of the host falls on both. The
+// first talus round is timed already (`first`); each later one starts again from `warm`.
+struct Rounds {
+  std::vector<double> talus;
+  std::vector<std::vector<double>> lammps; ///< per LAMMPS run, its rounds
+};
+
+Rounds time_rounds(const BenchOptions& o, const Simulation& sim, const SimulationState& warm,
+                   double first, const std::vector<LammpsRun>& runs, std::size_t nx,
+                   std::size_t ny) {
+  Rounds r{{first}, std::vector<std::vector<double>>(runs.size())};
+  std::vector<bool> failed(runs.size(), false);
+  for (int round = 0; round < o.rounds; ++round) {
+    if (round > 0) {
       Simulation again = Simulation::restore(warm, sim.config());
-      talus_rounds.push_back(time_steps(again, o.steps));
+      r.talus.push_back(time_steps(again, o.steps));
     }
-    if (with_lammps) {
-      const double l = run_lammps(o, nx, ny);
-      if (l <= 0.0) break; // it said why
-      lammps_rounds.push_back(l);
+    std::string line = fmt::format("  round {}: talus {:.2f} ns per particle-step", round + 1,
+                                   1e9 * r.talus.back());
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      if (failed[k]) continue;
+      const double l = run_lammps(o, nx, ny, runs[k]);
+      failed[k] = l <= 0.0; // it said why
+      if (failed[k]) continue;
+      r.lammps[k].push_back(l);
+      line.append(
+          fmt::format(", LAMMPS {} {:.2f} ({:.2f}x)", runs[k].label, 1e9 * l, l / r.talus.back()));
     }
     if (o.rounds > 1) {
-      fmt::print("  round {}: talus {:.2f} ns per particle-step", r + 1, 1e9 * talus_rounds.back());
-      if (lammps_rounds.size() == static_cast<std::size_t>(r + 1))
-        fmt::print(", LAMMPS {:.2f}, LAMMPS / talus {:.2f}", 1e9 * lammps_rounds.back(),
-                   lammps_rounds.back() / talus_rounds.back());
-      fmt::print("\n");
+      fmt::print("{}\n", line);
       std::fflush(stdout);
     }
   }
-  const double per = median(talus_rounds);
-  const double lammps = lammps_rounds.empty() ? 0.0 : median(lammps_rounds);
+  return r;
+}
 
-  fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s)\n", sim.world().particles.size(),
-             nx, ny, o.steps, sim.threads());
+// The LAMMPS figures: each run's median and its ratio to talus'; with the thesis' laws also
+// granthesis against LAMMPS' own gran/hooke.
+void print_lammps(const BenchOptions& o, const Rounds& r, const std::vector<LammpsRun>& runs,
+                  double per) {
+  const std::string of = o.rounds > 1 ? " (medians)" : "";
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    if (r.lammps[k].empty()) continue;
+    const double l = median(r.lammps[k]);
+    fmt::print("  LAMMPS {} ns per particle-step: {:.2f} on {} rank(s); LAMMPS / talus {:.2f}{}\n",
+               runs[k].label, l * 1e9, runs[k].ranks, l / per, of);
+  }
+  if (runs.size() == 2 && !r.lammps[0].empty() && !r.lammps[1].empty())
+    fmt::print("  granthesis / gran/hooke:    {:.2f}{}\n",
+               median(r.lammps[0]) / median(r.lammps[1]), of);
+}
+
+void print_talus(const BenchOptions& o, const Simulation& sim, double per, std::size_t rounds,
+                 double contacts, double bytes, double engine_bytes) {
+  const double n = static_cast<double>(sim.world().particles.size());
   fmt::print("  ns per particle-step:       {:.2f}{}\n", per * 1e9,
-             o.rounds > 1 ? fmt::format(" (median of {} rounds)", talus_rounds.size()) : "");
+             rounds > 1 ? fmt::format(" (median of {} rounds)", rounds) : "");
   fmt::print("  particle-steps per second:  {:.4g}\n", 1.0 / per);
   fmt::print("  contacts per particle:      {:.3f}\n", contacts);
   fmt::print("  list entries per particle:  {:.3f} (half list; {:.1f}% cross a force block)\n",
@@ -139,29 +214,63 @@ void run_bench(const BenchOptions& o) {
   else
     fmt::print("  peak memory per particle:   not measured with --rounds (a copy of the state is "
                "held for the rounds)\n");
+  fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
+             o.system.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
+}
+
+void run_bench(const BenchOptions& o) {
+  require(o.rounds >= 1, fmt::format("bench dense2d: --rounds {}; allowed: >= 1", o.rounds));
+  require(o.laws == "hooke" || o.laws == "thesis",
+          fmt::format("bench dense2d: --laws {}; allowed: hooke, thesis", o.laws));
+  const std::size_t ny = bench_base_side(o.system, "bench dense2d"), nx = ny * o.system.tiles;
+  BenchSystem system = o.system;
+  system.thesis_laws = o.laws == "thesis";
+  Simulation sim = bench_simulation(system, "bench dense2d");
+  const double n = static_cast<double>(sim.world().particles.size());
+  sim.run(100); // warm up: caches, first rebuild
+  // every round times the same steps from this state (as LAMMPS' runs start from its restart)
+  const SimulationState warm = o.rounds > 1 ? sim.state() : SimulationState{};
+  const std::uint64_t builds_before = sim.neighbours().builds;
+  const std::uint64_t choices_before = sim.candidate_choices();
+  const std::uint64_t tests_before = sim.drift_tests();
+  const double first = time_steps(sim, o.steps);
+  const std::uint64_t builds = sim.neighbours().builds - builds_before;
+  const std::uint64_t choices = sim.candidate_choices() - choices_before;
+  const std::uint64_t tests = sim.drift_tests() - tests_before;
+  const double contacts = 2.0 * static_cast<double>(contact_count(sim)) / n;
+  // with rounds, a copy of the state is held too: the peak is not the engine's alone
+  const double bytes = o.rounds > 1 ? 0.0 : peak_rss_bytes() / n;
+  const double engine_bytes = static_cast<double>(sim.footprint_bytes()) / n;
+  const bool with_lammps = o.lammps && o.system.tiles == 1;
+  if (o.lammps && o.system.tiles > 1)
+    fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
+  const std::vector<LammpsRun> runs =
+      with_lammps ? lammps_runs(o, std::max(1, sim.threads())) : std::vector<LammpsRun>{};
+  const Rounds r = time_rounds(o, sim, warm, first, runs, nx, ny);
+  const double per = median(r.talus);
+
+  fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s), {} laws\n",
+             sim.world().particles.size(), nx, ny, o.steps, sim.threads(),
+             o.laws == "thesis" ? "the thesis' (hertz, coulomb)" : "LAMMPS' gran/hooke/history");
+  print_talus(o, sim, per, r.talus.size(), contacts, bytes, engine_bytes);
   fmt::print("  neighbour-list rebuilds:    {} in {} steps\n", builds, o.steps);
   fmt::print("  contact candidates chosen:  {} times; drift tested against the build {} times\n",
              choices, tests);
-  fmt::print("  skin:                       {:.3g} mm ({})\n", 1e3 * sim.neighbours().skin,
-             o.system.skin > 0.0 ? "--skin" : "automatic; --skin 0.001 is the LAMMPS input's");
-  if (lammps > 0.0) {
-    const bool all = lammps_rounds.size() == talus_rounds.size();
-    fmt::print("  LAMMPS ns per particle-step: {:.2f}{}\n", lammps * 1e9,
-               o.rounds > 1 ? fmt::format(" (median of {} rounds)", lammps_rounds.size()) : "");
-    fmt::print("  LAMMPS time / talus time:    {:.2f}{}\n", lammps / per,
-               o.rounds > 1 && all ? " (of the medians)" : "");
-  }
-  const std::string csv = append_result(o.results, {.n = sim.world().particles.size(),
-                                                    .steps = o.steps,
-                                                    .threads = sim.threads(),
-                                                    .seconds_per_particle_step = per,
-                                                    .contacts_per_particle = contacts,
-                                                    .peak_bytes_per_particle = bytes,
-                                                    .lammps_seconds_per_particle_step = lammps,
-                                                    .nx = nx,
-                                                    .ny = ny,
-                                                    .engine_bytes_per_particle = engine_bytes,
-                                                    .skin = sim.neighbours().skin});
+  print_lammps(o, r, runs, per);
+  const double lammps = runs.empty() || r.lammps[0].empty() ? 0.0 : median(r.lammps[0]);
+  const std::string csv =
+      append_result(o.results, {.benchmark = o.laws == "thesis" ? "dense2d_thesis" : "dense2d",
+                                .n = sim.world().particles.size(),
+                                .steps = o.steps,
+                                .threads = sim.threads(),
+                                .seconds_per_particle_step = per,
+                                .contacts_per_particle = contacts,
+                                .peak_bytes_per_particle = bytes,
+                                .lammps_seconds_per_particle_step = lammps,
+                                .nx = nx,
+                                .ny = ny,
+                                .engine_bytes_per_particle = engine_bytes,
+                                .skin = sim.neighbours().skin});
   fmt::print("appended to {}\n", csv);
 }
 
@@ -224,7 +333,14 @@ void add_bench_command(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--threads", o->system.threads, "threads (0: all cores)")->capture_default_str();
   cmd->add_flag("--lammps", o->lammps,
-                "also run LAMMPS (lmp) on the same system and print the ratio");
+                "also run LAMMPS (lmp; on as many MPI ranks as threads) on the same system and "
+                "print the ratio");
+  cmd->add_option("--laws", o->laws,
+                  "contact laws: hooke (LAMMPS' gran/hooke/history, both engines) or thesis "
+                  "(viscoelastic Hertz and the capped viscous friction; LAMMPS runs pair_style "
+                  "granthesis in talus-lmp, and its own gran/hooke beside it)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"hooke", "thesis"}));
   add_shared_bench_options(*cmd, o->system, o->results,
                            "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the "
                            "LAMMPS input's; the physics is the same)");

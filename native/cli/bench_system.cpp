@@ -29,12 +29,16 @@ std::size_t side(std::size_t n) {
 // The settled square packing, from the cache or settled now (and cached).
 SimulationState settled_state(const BenchSystem& s, std::size_t side, SimulationConfig& config) {
   Dense2d d = build_dense2d(side, side);
+  if (s.thesis_laws) use_thesis_laws(d.world, d.config);
   config = d.config;
   config.threads = s.threads;
-  // a packing settled for another time than the default 0.6 s is cached apart
-  const std::string name = s.settle_time == BenchSystem{}.settle_time
-                               ? fmt::format("dense2d_{}x{}.ckpt", side, side)
-                               : fmt::format("dense2d_{}x{}_{}s.ckpt", side, side, s.settle_time);
+  // a packing settled for another time than the default 0.6 s, or with other laws, is cached
+  // apart
+  const std::string laws = s.thesis_laws ? "_thesis" : "";
+  const std::string name =
+      s.settle_time == BenchSystem{}.settle_time
+          ? fmt::format("dense2d{}_{}x{}.ckpt", laws, side, side)
+          : fmt::format("dense2d{}_{}x{}_{}s.ckpt", laws, side, side, s.settle_time);
   const fs::path file = fs::path(s.cache) / name;
   if (fs::exists(file)) {
     try {

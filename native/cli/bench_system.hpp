@@ -20,6 +20,7 @@ struct BenchSystem {
   std::uint64_t sort_every = 1000; ///< steps between renumberings (the scenarios' default)
   int threads = 1;
   double settle_time = 0.6; ///< s, as lammps-settle.in
+  bool thesis_laws = false; ///< settled and timed with the thesis' laws (use_thesis_laws)
   std::string cache = "bench/cache";
 };
 

@@ -20,6 +20,21 @@ Material dense2d_material() {
   return m;
 }
 
+Material dense2d_thesis_material() {
+  Material m = dense2d_material();
+  m.name = "thesis_hertz_coulomb";
+  m.young = 1.5e9;
+  m.poisson = 0.3;
+  m.hertz_damping = 2.0e-6;
+  return m;
+}
+
+void use_thesis_laws(World& world, SimulationConfig& config) {
+  for (Material& m : world.materials) m = dense2d_thesis_material();
+  config.normal_law = law_id<HertzViscoelastic>;
+  config.tangential_law = law_id<ViscousCoulomb>;
+}
+
 Dense2d build_dense2d(std::size_t nx, std::size_t ny, std::uint64_t seed, std::size_t count) {
   require(nx >= 3 && ny >= 1, "dense2d: needs nx >= 3 (periodic in x) and ny >= 1");
   Dense2d d;

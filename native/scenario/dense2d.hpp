@@ -14,6 +14,16 @@ struct Dense2d {
 /// gamma_n = 100 1/s, gamma_t = 50 1/s, mu = 0.5.
 Material dense2d_material();
 
+/// The thesis' laws on the benchmark's grains (viscoelastic Hertz, the Coulomb-capped viscous
+/// friction), as inputs/dense2d/lammps-bench.in sets them for pair_style granthesis: E = 1.5e9
+/// Pa and nu = 0.3 give about k_n = 1e5 N/m's force at the settled packing's deepest overlaps,
+/// A = 2e-6 s, gamma_t = 50 1/s, mu = 0.5.
+Material dense2d_thesis_material();
+
+/// The dense2d world and config switched to the thesis' laws (dense2d_thesis_material, hertz and
+/// coulomb), as `talus bench dense2d --laws thesis` settles and times it.
+void use_thesis_laws(World& world, SimulationConfig& config);
+
 /// The unsettled lattice: diameters uniform in [8.5, 9.5] mm on a 1 cm square lattice (as the
 /// LAMMPS input's `lattice sq 0.01`), density 1000 kg/m^3 with LAMMPS' sphere mass and disc
 /// inertia (I = m r^2 / 2); k_n = 1e5 N/m, k_t = 2/7 k_n, gamma_n = 100 1/s, gamma_t = 50 1/s,

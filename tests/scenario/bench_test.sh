@@ -26,6 +26,13 @@ cat "$dir/rounds.txt"
 [ "$(grep -c '^  round [12]: talus ' "$dir/rounds.txt")" -eq 2 ] || { echo "expected 2 rounds"; exit 1; }
 grep -q "ns per particle-step: .*(median of 2 rounds)" "$dir/rounds.txt" || exit 1
 [ "$(wc -l < "$csv")" -eq 4 ] || { echo "expected a header and three rows"; cat "$csv"; exit 1; }
+# --laws thesis: the packing settled and cached with the thesis' laws, apart from the other
+run --n 100 --steps 20 --laws thesis > "$dir/thesis.txt" || { cat "$dir/thesis.txt"; exit 1; }
+grep -q "the thesis' (hertz, coulomb) laws" "$dir/thesis.txt" || { cat "$dir/thesis.txt"; exit 1; }
+[ -s "$dir/cache/dense2d_thesis_10x10.ckpt" ] || { echo "no cached thesis packing"; exit 1; }
+grep -q ',dense2d_thesis,' "$csv" || { echo "no dense2d_thesis row"; exit 1; }
+run --n 100 --laws hertz 2> "$dir/err.txt" && { echo "--laws hertz was accepted"; exit 1; }
+grep -q "hooke" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 run --n 100 --rounds 0 2> "$dir/err.txt" && { echo "--rounds 0 was accepted"; exit 1; }
 grep -q "rounds" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 run --n 100 --tiles 50 2> "$dir/err.txt" && { echo "a 1 x 1 base was accepted"; exit 1; }
