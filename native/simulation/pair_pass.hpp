@@ -57,7 +57,9 @@ template <class N, class T>
         Lanes{a.velocity[i0].y, a.velocity[i1].y}, Lanes{a.velocity[j0].x, a.velocity[j1].x},
         Lanes{a.velocity[j0].y, a.velocity[j1].y}, Lanes{a.spin[i0], a.spin[i1]},
         Lanes{a.spin[j0], a.spin[j1]}, N::uses_r_eff || T::uses_r_eff);
-    Lanes spring{a.history[c0.entry], a.history[c1.entry]};
+    // a law without history neither reads nor changes the springs: not loaded, not stored
+    Lanes spring{};
+    if constexpr (T::has_history) spring = Lanes{a.history[c0.entry], a.history[c1.entry]};
     const ForceLanes f = pairs.uniform()
                              ? contact_force<N, T>(pairs.uniform_lanes(), g, spring, dt)
                              : contact_force<N, T>(pairs.lanes(a.material[i0], a.material[j0],
@@ -65,7 +67,7 @@ template <class N, class T>
                                                    g, spring, dt);
     const auto add = [&](const TouchingEntry& c, std::uint32_t i, std::uint32_t j, int lane) {
       const Vec2 force{f.force_x[lane], f.force_y[lane]};
-      a.history[c.entry] = spring[lane];
+      if constexpr (T::has_history) a.history[c.entry] = spring[lane];
       a.p.force[i] += force;
       a.p.torque[i] += f.torque_i[lane];
       if (c.slot != no_slot) [[unlikely]] {
