@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "error.h"
 #include "lammps_error.hpp"
+#include "pair_coefficients.hpp"
 #include "update.h"
 #include "utils.h"
 
@@ -27,12 +28,10 @@ constexpr const char* usage = "usage: fix ID GROUP frost/heave epsilon E factor 
 // A keyword's number: finite, and at least `lowest` (above it if `strict`).
 double number(const std::string& key, const char* text, double lowest, bool strict,
               const std::string& allowed, std::string& problem) {
-  char* end = nullptr;
-  const double x = std::strtod(text, &end);
-  const bool ok =
-      end != text && *end == '\0' && std::isfinite(x) && (strict ? x > lowest : x >= lowest);
+  const std::optional<double> x = finite_number(text);
+  const bool ok = x && (strict ? *x > lowest : *x >= lowest);
   if (!ok && problem.empty()) problem = key + " = " + text + "; allowed: " + allowed;
-  return x;
+  return x.value_or(0.0);
 }
 
 } // namespace

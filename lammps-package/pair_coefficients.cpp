@@ -17,14 +17,19 @@ const MaterialKey* find_key(const std::string& name) {
 }
 
 double parse_number(const std::string& key, const std::string& text) {
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(x))
-    throw InvalidArgument("pair_coeff " + key + " = '" + text + "' is not a finite number");
-  return x;
+  const std::optional<double> x = finite_number(text);
+  if (!x) throw InvalidArgument("pair_coeff " + key + " = '" + text + "' is not a finite number");
+  return *x;
 }
 
 } // namespace
+
+std::optional<double> finite_number(const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
 
 std::string pair_coefficient_names() {
   std::string names;

@@ -80,8 +80,7 @@ void PairGranthesis::allocate() {
 }
 
 const PairParameters& PairGranthesis::parameters(int i, int j) const {
-  return pair_[static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
-               static_cast<std::size_t>(j)];
+  return pair_[slot(i, j)];
 }
 
 // pair_style granthesis NORMAL TANGENTIAL
@@ -120,8 +119,7 @@ void PairGranthesis::coeff(int narg, char** arg) {
   int count = 0;
   for (int i = ilo; i <= ihi; ++i)
     for (int j = std::max(jlo, i); j <= jhi; ++j) {
-      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
-                      static_cast<std::size_t>(j);
+      const std::size_t ij = slot(i, j);
       if (i == j) {
         material_[static_cast<std::size_t>(i)] = m;
       } else {
@@ -167,13 +165,10 @@ void PairGranthesis::init_style() {
 }
 
 double PairGranthesis::init_one(int i, int j) {
-  const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
-                  static_cast<std::size_t>(j);
+  const std::size_t ij = slot(i, j);
   if (!explicit_pair_[ij])
     pair_[ij] = mix(material_[static_cast<std::size_t>(i)], material_[static_cast<std::size_t>(j)]);
-  const auto ji = static_cast<std::size_t>(j) * static_cast<std::size_t>(ntypes_ + 1) +
-                  static_cast<std::size_t>(i);
-  pair_[ji] = pair_[ij];
+  pair_[slot(j, i)] = pair_[ij];
   // The reach of a pair is the sum of the radii; the half list needs the largest (finitecutflag:
   // LAMMPS adds the skin)
   return 2.0 * std::max(max_radius_, 0.0);
@@ -283,8 +278,7 @@ void PairGranthesis::write_restart(FILE* file) {
   write_restart_settings(file);
   for (int i = 1; i <= ntypes_; ++i)
     for (int j = i; j <= ntypes_; ++j) {
-      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
-                      static_cast<std::size_t>(j);
+      const std::size_t ij = slot(i, j);
       const int flags[2] = {i == j ? given_[static_cast<std::size_t>(i)] : explicit_pair_[ij],
                             explicit_pair_[ij]};
       std::fwrite(flags, sizeof(int), 2, file);
@@ -304,8 +298,7 @@ void PairGranthesis::read_restart(FILE* file) {
   allocate();
   for (int i = 1; i <= ntypes_; ++i)
     for (int j = i; j <= ntypes_; ++j) {
-      const auto ij = static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
-                      static_cast<std::size_t>(j);
+      const std::size_t ij = slot(i, j);
       int flags[2] = {0, 0};
       if (comm->me == 0)
         LAMMPS_NS::utils::sfread(__FILE__, __LINE__, flags, sizeof(int), 2, file, nullptr, error);

@@ -37,6 +37,11 @@ public:
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
   void allocate();
+  /// The index of type pair (i, j) in pair_ and explicit_pair_.
+  std::size_t slot(int i, int j) const {
+    return static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
+           static_cast<std::size_t>(j);
+  }
   [[noreturn]] void fail(const std::string& message) const;
 
   NormalLaw normal_ = law_id<HertzViscoelastic>;

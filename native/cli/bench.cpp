@@ -52,18 +52,6 @@ std::string talus_lmp() {
 #endif
 }
 
-// The coefficients of pair_coeff for a material: the native keys (pair_style granthesis).
-std::string granthesis_coefficients(const Material& m) {
-  std::string out;
-  for (const MaterialKey& k : material_keys)
-    if (k.name != "density")
-      out.append(out.empty() ? "" : " ")
-          .append(k.name)
-          .append(" ")
-          .append(fmt::format("{:.17g}", m.*k.field));
-  return out;
-}
-
 // The LAMMPS runs beside the native engine: with --laws hooke LAMMPS' own gran/hooke/history
 // (the deck's); with --laws thesis pair_style granthesis in talus-lmp, and LAMMPS' own
 // gran/hooke (no history: it has no more to do than granthesis) for comparison.
@@ -78,7 +66,7 @@ std::vector<LammpsRun> lammps_runs(const BenchOptions& o, int ranks) {
   // gran/hooke in talus-lmp too: the same library as lmp, and it reads the restart file that
   // granthesis' settling wrote (lmp does not know the style named in it)
   return {{"granthesis", launcher, "granthesis hertz coulomb",
-           granthesis_coefficients(dense2d_thesis_material()), ranks},
+           pair_coefficient_words(dense2d_thesis_material()), ranks},
           {"gran/hooke", launcher, "gran/hooke 1.0e5 NULL 1.0e2 NULL 0.5 1", "", ranks}};
 }
 
@@ -100,7 +88,7 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const L
   if (!fs::exists(dir / fmt::format("settled{}_{}x{}.restart", tag, nx, ny))) {
     const std::string settle_with =
         thesis ? fmt::format("{} -var pair 'granthesis hertz coulomb' -var coeff '{}'", talus_lmp(),
-                             granthesis_coefficients(dense2d_thesis_material()))
+                             pair_coefficient_words(dense2d_thesis_material()))
                : std::string("lmp");
     fmt::print("lammps: settling its own packing (lammps-settle.in)...\n");
     std::fflush(stdout);

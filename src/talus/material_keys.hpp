@@ -3,7 +3,9 @@
 // front end that reads materials (the native scenario loader, LAMMPS' pair_coeff), so that a
 // material means the same in both.
 #include <array>
+#include <cstdio>
 #include <limits>
+#include <string>
 #include <string_view>
 
 #include "talus/material.hpp"
@@ -41,6 +43,19 @@ inline Material default_material() {
   Material m;
   for (const MaterialKey& k : material_keys) m.*k.field = k.fallback;
   return m;
+}
+
+/// "young 1e8 poisson 0.3 ...": every key but density with its value to 17 digits (read back
+/// to the same double), as LAMMPS' `pair_coeff I J` for pair_style granthesis takes them.
+inline std::string pair_coefficient_words(const Material& m) {
+  std::string out;
+  for (const MaterialKey& k : material_keys) {
+    if (k.name == "density") continue;
+    char value[32];
+    std::snprintf(value, sizeof value, "%.17g", m.*k.field);
+    out.append(out.empty() ? "" : " ").append(k.name).append(" ").append(value);
+  }
+  return out;
 }
 
 } // namespace talus

@@ -29,13 +29,6 @@ std::string words(std::initializer_list<std::string> parts) {
   return out;
 }
 
-std::string coefficients(const Material& m) {
-  std::string out;
-  for (const MaterialKey& k : material_keys)
-    if (k.name != "density") out.append(" ").append(k.name).append(" ").append(exact(m.*k.field));
-  return out;
-}
-
 // Two disks in LAMMPS (2d, SI units), their forces computed once by `run 0`.
 void set_up(LammpsInstance& l, const std::string& laws, const Material& m,
             const std::vector<Disk>& disks, bool newton, double dt) {
@@ -51,7 +44,7 @@ void set_up(LammpsInstance& l, const std::string& laws, const Material& m,
     l.command(words({"set atom", id, "vx", exact(d.velocity.x), "vy", exact(d.velocity.y)}));
     l.command(words({"set atom", id, "omega 0 0", exact(d.spin)}));
   }
-  l.commands({words({"pair_style granthesis", laws}), "pair_coeff 1 1" + coefficients(m),
+  l.commands({words({"pair_style granthesis", laws}), "pair_coeff 1 1 " + pair_coefficient_words(m),
               "neighbor 0.001 bin", words({"timestep", exact(dt)})});
 }
 
