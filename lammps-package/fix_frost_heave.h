@@ -1,8 +1,17 @@
-#pragma once
 // fix frost/heave: the thesis' freeze (chapter 5.2.1) in LAMMPS. When the group's kinetic energy
 // falls below epsilon, every atom of the group has its height above the permafrost table
 // multiplied by the heave factor, and the neighbour lists are rebuilt before the next forces.
 // Syntax and conventions: lammps-package/README.md.
+// The style block lets the file drop into a LAMMPS source tree as a package: LAMMPS includes
+// its style headers once to declare the classes and once with FIX_CLASS defined to
+// register them (so no #pragma once here).
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(frost/heave, talus::lammps::FixFrostHeave);
+// clang-format on
+#else
+#ifndef TALUS_LAMMPS_FIX_FROST_HEAVE_H
+#define TALUS_LAMMPS_FIX_FROST_HEAVE_H
 #include <string>
 
 #include "fix.h"
@@ -40,3 +49,6 @@ private:
 };
 
 } // namespace talus::lammps
+
+#endif // TALUS_LAMMPS_FIX_FROST_HEAVE_H
+#endif // FIX_CLASS

@@ -1,7 +1,16 @@
-#pragma once
 // pair_style granthesis: the thesis' contact laws (viscoelastic Hertz or the linear spring-dashpot,
 // with the Coulomb-capped viscous friction) inside LAMMPS, evaluated by the same code as the native
 // engine (src/talus). Syntax and conventions: lammps-package/README.md.
+// The style block lets the file drop into a LAMMPS source tree as a package: LAMMPS includes
+// its style headers once to declare the classes and once with PAIR_CLASS defined to
+// register them (so no #pragma once here).
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(granthesis, talus::lammps::PairGranthesis);
+// clang-format on
+#else
+#ifndef TALUS_LAMMPS_PAIR_GRANTHESIS_H
+#define TALUS_LAMMPS_PAIR_GRANTHESIS_H
 #include <string>
 #include <vector>
 
@@ -58,3 +67,6 @@ private:
 };
 
 } // namespace talus::lammps
+
+#endif // TALUS_LAMMPS_PAIR_GRANTHESIS_H
+#endif // PAIR_CLASS

@@ -20,12 +20,13 @@ namespace talus::lammps_test {
 
 class LammpsInstance {
 public:
-  LammpsInstance() {
+  /// registered = false: a bare LAMMPS, for styles registered another way (the plugin test)
+  explicit LammpsInstance(bool registered = true) {
     std::vector<std::string> words{"talus-tests", "-log", "none", "-screen", "none", "-nocite"};
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
     lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
-    talus_lammps_register(lmp_);
+    if (registered) talus_lammps_register(lmp_);
   }
   ~LammpsInstance() { delete lmp_; }
   LammpsInstance(const LammpsInstance&) = delete;
