@@ -23,7 +23,7 @@ namespace {
 
 constexpr const char* style_name = "fix frost/heave";
 constexpr const char* usage = "usage: fix ID GROUP frost/heave epsilon E factor F table Y "
-                              "[interval T] [every N] [inertia disc|sphere]";
+                              "[interval T] [initial_wait yes|no] [every N] [inertia disc|sphere]";
 
 // A keyword's number: finite, and at least `lowest` (above it if `strict`).
 double number(const std::string& key, const char* text, double lowest, bool strict,
@@ -66,6 +66,11 @@ FixFrostHeave::FixFrostHeave(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
       has_table = true;
     } else if (key == "interval") {
       interval_ = number(key, value, 0.0, false, ">= 0 s", problem);
+    } else if (key == "initial_wait") {
+      const std::string v = value;
+      if (v != "yes" && v != "no") fail("initial_wait = " + v + "; allowed: yes, no");
+      // the interval counts from this step too, as if a heave had been here (the native rule)
+      last_step_ = v == "yes" ? update->ntimestep : -1;
     } else if (key == "every") {
       const double n = number(key, value, 1.0, false, "an integer >= 1", problem);
       if (n != std::floor(n) && problem.empty())
@@ -77,7 +82,8 @@ FixFrostHeave::FixFrostHeave(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
       disc_ = v == "disc";
     } else {
       fail("unknown keyword '" + key +
-           "'; allowed: epsilon, factor, table, interval, every, inertia (" + usage + ")");
+           "'; allowed: epsilon, factor, table, interval, initial_wait, every, inertia (" + usage +
+           ")");
     }
   }
   if (!problem.empty()) fail(problem);

@@ -44,7 +44,8 @@ private:
   double cycles_ = 0.0;     ///< heaves so far (a double: thermo and restart files take doubles)
   double last_time_ = -1.0; ///< s: the time of the last heave, -1 before the first
   double kinetic_ = 0.0;    ///< J: the group's kinetic energy at the last test
-  LAMMPS_NS::bigint last_step_ = -1; ///< the step of the last heave, -1 before the first
+  LAMMPS_NS::bigint last_step_ = -1; ///< the step of the last heave (or of the fix's definition
+                                     ///< with initial_wait yes), -1 before the first
   double clock_offset_ = 0.0;        ///< s: added to LAMMPS' time, which read_restart resets
 };
 

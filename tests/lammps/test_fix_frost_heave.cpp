@@ -63,6 +63,21 @@ TEST(FixFrostHeave, HeavesOnlyBelowTheThreshold) {
   EXPECT_EQ(l.position(1)[1], table + (heights[0] - table) * factor);
 }
 
+// initial_wait yes: the interval counts from the fix's definition too (the native rule: a cycle
+// waits min_interval from the start), so grains at rest heave only once it has passed.
+TEST(FixFrostHeave, InitialWaitCountsTheIntervalFromTheStart) {
+  LammpsInstance l;
+  set_up(l, "fix frost all frost/heave epsilon 1e-12 factor 1.5 table 0.01 interval 5e-5 "
+            "initial_wait yes");
+  l.command("run 49"); // 49 us < 50 us: no heave yet, though at rest
+  EXPECT_EQ(heaves(l), 0.0);
+  EXPECT_EQ(l.position(1)[1], heights[0]);
+  l.command("run 2"); // 50 x 1e-6 may round below 5e-5: the heave comes at step 50 or 51
+
+  EXPECT_EQ(heaves(l), 1.0);
+  EXPECT_EQ(l.position(1)[1], table + (heights[0] - table) * factor);
+}
+
 void expect_error(const std::string& fix_line, const std::string& expected) {
   expect_deck_error({"dimension 2", "units si", "atom_style sphere", "boundary f f p",
                      "region box block -1 1 -1 1 -0.01 0.01", "create_box 1 box",
@@ -77,6 +92,8 @@ TEST(FixFrostHeave, BadLinesNameTheKeywordAndTheAllowedValues) {
                "epsilon = -1; allowed: >= 0 J");
   expect_error("fix f all frost/heave epsilon 1e-6 factor 0 table 0", "factor = 0; allowed: > 0");
   expect_error("fix f all frost/heave epsilon 1e-6 factor inf table 0", "factor = inf");
+  expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 initial_wait maybe",
+               "initial_wait = maybe; allowed: yes, no");
   expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 every 2.5",
                "every = 2.5; allowed: an integer >= 1");
   expect_error("fix f all frost/heave epsilon 1e-6 factor 1.5 table 0 inertia cube",
