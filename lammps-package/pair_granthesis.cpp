@@ -27,22 +27,6 @@ namespace {
 
 constexpr const char* style_name = "pair granthesis";
 
-// The laws this pair style allows: the tangential ones without contact history (the package
-// keeps no per-contact state yet).
-bool history_free(TangentialLaw t) {
-  return with_tangential_law(t, []<class T>() { return !T::has_history; });
-}
-
-std::string history_free_names() {
-  std::string names;
-  for (const std::string_view n : TangentialLaws::names) {
-    if (!history_free(parse_tangential_law(n))) continue;
-    if (!names.empty()) names.append(", ");
-    names.append(n);
-  }
-  return names;
-}
-
 } // namespace
 
 PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
@@ -87,7 +71,7 @@ const PairParameters& PairGranthesis::parameters(int i, int j) const {
 void PairGranthesis::settings(int narg, char** arg) {
   const std::string usage =
       "usage: pair_style granthesis NORMAL TANGENTIAL; NORMAL: " + law_names<NormalLaw>() +
-      "; TANGENTIAL: " + history_free_names();
+      "; TANGENTIAL: " + history_free_tangential_names();
   if (narg != 2) fail(usage);
   try {
     normal_ = parse_normal_law(arg[0]);
@@ -95,10 +79,10 @@ void PairGranthesis::settings(int narg, char** arg) {
   } catch (const InvalidArgument& e) {
     fail(std::string(e.what()) + " (" + usage + ")");
   }
-  if (!history_free(tangential_))
+  if (keeps_history(tangential_))
     fail("tangential law '" + std::string(arg[1]) +
          "' keeps a contact history, which this pair style does not yet store; allowed: " +
-         history_free_names());
+         history_free_tangential_names());
 }
 
 // pair_coeff I J key value ...: I = J (or a range through both) sets the materials of those types;

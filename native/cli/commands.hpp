@@ -23,6 +23,8 @@ void add_picture_commands(CLI::App& app);
 void add_analyze_command(CLI::App& app);
 /// `talus checkpoint DIR`: what the last checkpoint holds, with a hash of the state.
 void add_checkpoint_command(CLI::App& app);
+/// `talus export lammps SCENARIO DIR`: a scenario as a LAMMPS case (pair_style granthesis).
+void add_export_command(CLI::App& app);
 /// `talus bench dense2d`: the reference benchmark, optionally beside LAMMPS.
 void add_bench_command(CLI::App& app);
 

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   talus::cli::add_resume_command(app);
   talus::cli::add_scenarios_command(app);
   talus::cli::add_convert_command(app);
+  talus::cli::add_export_command(app);
   talus::cli::add_demo_command(app);
   talus::cli::add_bench_command(app);
   talus::cli::add_checkpoint_command(app);

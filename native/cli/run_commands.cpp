@@ -7,6 +7,7 @@
 #include "cli/builtin_scenarios.hpp"
 #include "cli/commands.hpp"
 #include "cli/run_loop.hpp"
+#include "cli/scenario_source.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/load.hpp"
@@ -31,33 +32,6 @@ std::string describe(std::string_view toml_text) {
   }
 }
 
-// A scenario from a .toml path, a thesis .in path or a built-in name.
-Scenario resolve(const std::string& what, const std::vector<std::string>& overrides) {
-  // a folder (say, the run folder of a built-in scenario, named after it) is never a scenario
-  if (fs::is_regular_file(what)) {
-    if (fs::path(what).extension() == ".in") {
-      const ThesisFile f = read_thesis_in(read_file(what), what);
-      const Scenario s = scenario_from_thesis(f, fs::path(what).stem().string());
-      return load_scenario(to_toml(s), what + " (converted)", overrides);
-    }
-    return load_scenario_file(what, overrides);
-  }
-  std::string names, best;
-  std::size_t best_d = 1000;
-  for (const auto& b : builtin_scenarios()) {
-    if (b.name == what)
-      return load_scenario(b.text, "inputs/" + std::string(b.name) + "/scenario.toml", overrides);
-    names += (names.empty() ? "" : ", ") + std::string(b.name);
-    if (const auto d = edit_distance(what, b.name); d < best_d) best_d = d, best = b.name;
-  }
-  std::string msg = "'" + what + "' is neither a file nor a built-in scenario";
-  if (fs::is_directory(what))
-    msg = "'" + what + "' is a folder, not a scenario file (a run folder continues with talus " +
-          "resume; its scenario is " + (fs::path(what) / "scenario.toml").string() + ")";
-  if (best_d <= 3) msg += "; did you mean '" + best + "'?";
-  throw InvalidArgument(msg + " (built-in: " + names + ")");
-}
-
 } // namespace
 
 void add_run_command(CLI::App& app) {
@@ -79,7 +53,7 @@ void add_run_command(CLI::App& app) {
                   "stop at this simulated time (s) after a checkpoint; continue with talus resume");
   cmd->add_flag("--quiet", o->run.quiet, "no progress output");
   cmd->callback([o] {
-    const Scenario s = resolve(o->scenario, o->set);
+    const Scenario s = resolve_scenario(o->scenario, o->set);
     const std::string dir = o->out.empty() ? "runs/" + s.name : o->out;
     if (fs::exists(dir) && !fs::is_empty(dir))
       throw InvalidArgument("run folder '" + dir +

@@ -115,4 +115,18 @@ template <class F> decltype(auto) with_contact_law(NormalLaw n, TangentialLaw t,
   });
 }
 
+/// Whether the tangential law keeps a per-contact history (a spring's stretch).
+inline bool keeps_history(TangentialLaw t) {
+  return with_tangential_law(t, []<class T>() { return T::has_history; });
+}
+/// The names of the tangential laws without history, as "a, b": what the LAMMPS package allows.
+inline std::string history_free_tangential_names() {
+  std::string names;
+  for (const std::string_view n : TangentialLaws::names) {
+    if (keeps_history(parse_tangential_law(n))) continue;
+    names.append(names.empty() ? "" : ", ").append(n);
+  }
+  return names;
+}
+
 } // namespace talus

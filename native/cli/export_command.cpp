@@ -1,0 +1,82 @@
+// `talus export lammps SCENARIO DIR`: a native scenario as a LAMMPS case for the talus package.
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "cli/commands.hpp"
+#include "cli/scenario_source.hpp"
+#include "io/lammps_export.hpp"
+#include "scenario/build.hpp"
+#include "scenario/load.hpp"
+
+namespace talus::cli {
+
+namespace {
+
+// The command line as the user typed it, for the deck's header.
+std::string command_line(const std::string& scenario, const std::string& dir,
+                         const std::vector<std::string>& set) {
+  std::string out = "talus export lammps " + scenario + " " + dir;
+  for (const std::string& s : set) out.append(" --set ").append(s);
+  return out;
+}
+
+} // namespace
+
+void add_export_command(CLI::App& app) {
+  struct Options {
+    std::string scenario, dir;
+    std::vector<std::string> set;
+    bool quiet = false;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("export", "write a scenario for another engine");
+  cmd->require_subcommand(1);
+  CLI::App* lammps = cmd->add_subcommand(
+      "lammps", "a LAMMPS data file, masses and input deck (pair_style granthesis) of a scenario "
+                "after its packing, in DIR; refused, with the reason, for what LAMMPS cannot "
+                "express (segment walls, a tangential law with history, the freezing front)");
+  lammps->add_option("scenario", o->scenario, "scenario file or built-in name")->required();
+  lammps->add_option("dir", o->dir, "the folder for in.NAME, data.NAME and masses.NAME")
+      ->required();
+  lammps->add_option("--set", o->set, "override a key, e.g. --set geometry.walls=particles");
+  lammps->add_flag("--quiet", o->quiet, "no progress output");
+  lammps->callback([o] {
+    const Scenario s = resolve_scenario(o->scenario, o->set);
+    try {
+      check_lammps_export(s);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(o->scenario + ": " + e.what());
+    }
+    BuiltScenario built;
+    try {
+      double next = 0.0; // a line per 0.1 s of settling
+      built = build_scenario(s, [&](double t, double ke) {
+        if (o->quiet || t < next) return;
+        fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
+        next = t + 0.1;
+      });
+    } catch (const ScenarioError& e) {
+      throw ScenarioError(o->scenario + ": " + e.what());
+    }
+    LammpsCase c;
+    try {
+      c = export_lammps(s, built, command_line(o->scenario, o->dir, o->set));
+    } catch (const InvalidArgument& e) { // a wall particle moved by two drivers
+      throw InvalidArgument(o->scenario + ": " + e.what());
+    }
+    if (!built.settled)
+      fmt::print(stderr,
+                 "talus export lammps: warning: {} did not settle within "
+                 "packing.settle_max_time ({} s); the case starts from where it got\n",
+                 s.name, s.packing.settle_max_time);
+    write_lammps_case(c, o->dir);
+    if (!o->quiet)
+      fmt::print(
+          "talus export lammps: {0}/in.{1}, data.{1}, masses.{1} and scenario.toml (the native "
+          "twin) ({2} atoms); run it in {0} with talus-lmp -in in.{1}\n",
+          o->dir, c.name, built.world.particles.size());
+  });
+}
+
+} // namespace talus::cli

@@ -1,0 +1,42 @@
+#include "cli/scenario_source.hpp"
+
+#include <filesystem>
+
+#include "cli/builtin_scenarios.hpp"
+#include "io/checkpoint.hpp"
+#include "io/thesis_format.hpp"
+#include "scenario/load.hpp"
+#include "scenario/toml_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+// A scenario from a .toml path, a thesis .in path or a built-in name.
+Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides) {
+  // a folder (say, the run folder of a built-in scenario, named after it) is never a scenario
+  if (fs::is_regular_file(what)) {
+    if (fs::path(what).extension() == ".in") {
+      const ThesisFile f = read_thesis_in(read_file(what), what);
+      const Scenario s = scenario_from_thesis(f, fs::path(what).stem().string());
+      return load_scenario(to_toml(s), what + " (converted)", overrides);
+    }
+    return load_scenario_file(what, overrides);
+  }
+  std::string names, best;
+  std::size_t best_d = 1000;
+  for (const auto& b : builtin_scenarios()) {
+    if (b.name == what)
+      return load_scenario(b.text, "inputs/" + std::string(b.name) + "/scenario.toml", overrides);
+    names += (names.empty() ? "" : ", ") + std::string(b.name);
+    if (const auto d = edit_distance(what, b.name); d < best_d) best_d = d, best = b.name;
+  }
+  std::string msg = "'" + what + "' is neither a file nor a built-in scenario";
+  if (fs::is_directory(what))
+    msg = "'" + what + "' is a folder, not a scenario file (a run folder continues with talus " +
+          "resume; its scenario is " + (fs::path(what) / "scenario.toml").string() + ")";
+  if (best_d <= 3) msg += "; did you mean '" + best + "'?";
+  throw InvalidArgument(msg + " (built-in: " + names + ")");
+}
+
+} // namespace talus::cli

@@ -1,0 +1,330 @@
+#include "io/lammps_export.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "io/checkpoint.hpp"
+#include "scenario/load.hpp"
+#include "talus/error.hpp"
+#include "talus/material_keys.hpp"
+
+namespace talus {
+
+namespace {
+
+// Every number at full precision: LAMMPS reads back the same double.
+std::string exact(double x) {
+  return fmt::format("{}", x); // the shortest text that reads back as x
+}
+
+std::string refused(const std::string& key, const std::string& why) {
+  return "key '" + key + "': " + why + "; talus export lammps writes only what LAMMPS and the " +
+         "talus package express exactly";
+}
+
+// What LAMMPS cannot express: the reason, with the key to change, or nothing.
+std::optional<std::string> refusal(const Scenario& s) {
+  if ((s.geometry.builder != "none" && s.geometry.walls == "segments") ||
+      !s.geometry.segments.empty())
+    return refused("geometry.walls",
+                   "segment walls: pair_style granthesis acts between particles, and LAMMPS' "
+                   "fix wall/gran has laws of its own; use the thesis' particle walls "
+                   "(--set geometry.walls=particles)");
+  if (keeps_history(s.simulation.tangential_law))
+    return refused("simulation.tangential_law",
+                   fmt::format("'{}' keeps a contact history, which pair_style granthesis does not "
+                               "store; allowed: {} (e.g. --set simulation.tangential_law=coulomb, "
+                               "the thesis' eq. 2.12)",
+                               name_of(s.simulation.tangential_law),
+                               history_free_tangential_names()));
+  if (s.frost.model == "front")
+    return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
+                                  "(fix frost/heave)");
+  return std::nullopt;
+}
+
+// A LAMMPS atom type per (role, material): role 0 the grains, 1 the fixed wall particles, 2 + k
+// those driver k moves. Types are numbered in that order.
+struct Typing {
+  std::vector<int> type_of;                 ///< per particle, from 1
+  std::vector<std::pair<int, int>> key_of;  ///< per type - 1: (role, material)
+  std::vector<std::vector<int>> role_types; ///< per role: its types
+};
+
+int role_of(const BuiltScenario& b, std::size_t i) {
+  const Particles& p = b.world.particles;
+  if (p.kind[i] == Kind::free) return 0;
+  if (p.kind[i] == Kind::fixed) return 1;
+  int role = -1;
+  for (std::size_t k = 0; k < b.world.drivers.size(); ++k) {
+    const auto& t = b.world.drivers[k].targets.particles;
+    if (std::find(t.begin(), t.end(), static_cast<std::uint32_t>(i)) == t.end()) continue;
+    if (role >= 0)
+      throw InvalidArgument(refused("drivers", "wall particle " + std::to_string(i) +
+                                                   " is moved by two drivers; fix move takes "
+                                                   "one motion per atom"));
+    role = 2 + static_cast<int>(k);
+  }
+  if (role < 0)
+    throw InvalidArgument(
+        refused("drivers", "particle " + std::to_string(i) + " is held but no driver moves it"));
+  return role;
+}
+
+Typing assign_types(const BuiltScenario& b) {
+  const Particles& p = b.world.particles;
+  std::vector<int> roles(p.size());
+  std::map<std::pair<int, int>, int> types;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    roles[i] = role_of(b, i);
+    types.emplace(std::pair{roles[i], static_cast<int>(p.material[i])}, 0);
+  }
+  Typing t;
+  t.role_types.resize(2 + b.world.drivers.size());
+  for (auto& [key, type] : types) {
+    t.key_of.push_back(key);
+    type = static_cast<int>(t.key_of.size());
+    t.role_types[static_cast<std::size_t>(key.first)].push_back(type);
+  }
+  for (std::size_t i = 0; i < p.size(); ++i)
+    t.type_of.push_back(types.at({roles[i], static_cast<int>(p.material[i])}));
+  return t;
+}
+
+// The box: a periodic direction's period as it is; otherwise the native engine's escape box (the
+// container and as much again around it), or the particles' extent and ten radii around it.
+struct Box {
+  Vec2 lo, hi;
+  double z = 0.0;
+  bool periodic_x = false, periodic_y = false;
+};
+
+Box lammps_box(const BuiltScenario& b) {
+  const Particles& p = b.world.particles;
+  Box box;
+  box.z = p.max_radius();
+  Vec2 lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    lo = {std::min(lo.x, p.position[i].x - p.radius[i]),
+          std::min(lo.y, p.position[i].y - p.radius[i])};
+    hi = {std::max(hi.x, p.position[i].x + p.radius[i]),
+          std::max(hi.y, p.position[i].y + p.radius[i])};
+  }
+  if (b.config.escape_hi.x > b.config.escape_lo.x) {
+    lo = {std::min(lo.x, b.config.escape_lo.x), std::min(lo.y, b.config.escape_lo.y)};
+    hi = {std::max(hi.x, b.config.escape_hi.x), std::max(hi.y, b.config.escape_hi.y)};
+  } else {
+    const Vec2 margin{std::max(hi.x - lo.x, 10.0 * box.z), std::max(hi.y - lo.y, 10.0 * box.z)};
+    lo -= margin;
+    hi += margin;
+  }
+  box.lo = lo;
+  box.hi = hi;
+  const Domain& d = b.world.domain;
+  if ((box.periodic_x = d.periodic_x)) box.lo.x = d.lo.x, box.hi.x = d.hi.x;
+  if ((box.periodic_y = d.periodic_y)) box.lo.y = d.lo.y, box.hi.y = d.hi.y;
+  return box;
+}
+
+std::string data_file(const Scenario& s, const BuiltScenario& b, const Typing& t, const Box& box) {
+  const Particles& p = b.world.particles;
+  std::string out = fmt::format("LAMMPS data file: {}, written by talus export lammps\n\n", s.name);
+  out += fmt::format("{} atoms\n{} atom types\n\n", p.size(), t.key_of.size());
+  out +=
+      fmt::format("{} {} xlo xhi\n{} {} ylo yhi\n{} {} zlo zhi\n\n", exact(box.lo.x),
+                  exact(box.hi.x), exact(box.lo.y), exact(box.hi.y), exact(-box.z), exact(box.z));
+  // read_data takes a density and makes the mass 4/3 pi r^3 rho; masses.NAME then sets the
+  // native engine's masses exactly
+  out += "Atoms # sphere\n\n";
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = p.radius[i];
+    const double density = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * r * r * r);
+    out += fmt::format("{} {} {} {} {} {} 0\n", i + 1, t.type_of[i], exact(2.0 * r), exact(density),
+                       exact(p.position[i].x), exact(p.position[i].y));
+  }
+  out += "\nVelocities\n\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    out += fmt::format("{} {} {} 0 0 0 {}\n", i + 1, exact(p.velocity[i].x), exact(p.velocity[i].y),
+                       exact(p.angular_velocity[i]));
+  return out;
+}
+
+std::string masses_file(const BuiltScenario& b) {
+  const Particles& p = b.world.particles;
+  std::string out = "# the native engine's masses, exactly (read_data gives 4/3 pi r^3 rho)\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    out += fmt::format("set atom {} mass {}\n", i + 1, exact(p.mass[i]));
+  return out;
+}
+
+std::string type_list(const std::vector<int>& types) {
+  std::string out;
+  for (const int t : types) out.append(out.empty() ? "" : " ").append(std::to_string(t));
+  return out;
+}
+
+std::uint64_t steps_of(double interval, double dt) {
+  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / dt)));
+}
+
+// fix move for driver k's group: wiggle, linear or rotate, as the native motion is.
+std::string driver_fix(const Driver& d, std::size_t k) {
+  const std::string id = fmt::format("drive{}", k + 1);
+  if (const auto* v = std::get_if<Vibrate>(&d.motion)) {
+    const Vec2 a = v->amplitude / norm(v->direction) * v->direction;
+    if (v->phase == 0.0)
+      return fmt::format("fix {0} {0} move wiggle {1} {2} 0 {3}\n", id, exact(a.x), exact(a.y),
+                         exact(1.0 / v->frequency));
+    // a phase: the displacement A sin(w t + phase) and its rate as variables of the time
+    const double w = 2.0 * std::numbers::pi * v->frequency;
+    std::string out;
+    for (const auto& [axis, amp] : {std::pair{"x", a.x}, {"y", a.y}}) {
+      out += fmt::format("variable {}_d{} equal {}*sin({}*time+{})\n", id, axis, exact(amp),
+                         exact(w), exact(v->phase));
+      out += fmt::format("variable {}_v{} equal {}*cos({}*time+{})\n", id, axis, exact(amp * w),
+                         exact(w), exact(v->phase));
+    }
+    return out + fmt::format("fix {0} {0} move variable v_{0}_dx v_{0}_dy NULL v_{0}_vx v_{0}_vy "
+                             "NULL\n",
+                             id);
+  }
+  if (const auto* t = std::get_if<Translate>(&d.motion))
+    return fmt::format("fix {0} {0} move linear {1} {2} 0\n", id, exact(t->velocity.x),
+                       exact(t->velocity.y));
+  const auto& r = std::get<Rotate>(d.motion);
+  if (r.angular_velocity == 0.0) return "# " + id + ": a rotation at rate 0: the walls stay\n";
+  return fmt::format("fix {0} {0} move rotate {1} {2} 0 0 0 {3} {4}\n", id, exact(r.centre.x),
+                     exact(r.centre.y), r.angular_velocity > 0.0 ? 1 : -1,
+                     exact(2.0 * std::numbers::pi / std::abs(r.angular_velocity)));
+}
+
+std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::string& command) {
+  std::string out = fmt::format("# {}: {}\n", s.name, s.description);
+  out += "# Written by: " + command + "\n";
+  out += fmt::format(
+      "# Run it here: talus-lmp -in in.{0} (or mpirun -np N talus-lmp -in in.{0}); -var steps K\n"
+      "# runs K steps instead of the whole {1} s, -var snapshot_every K dumps every K steps.\n",
+      s.name, exact(s.simulation.duration));
+  out += fmt::format(
+      "# The native scenario's system: its grains after the packing, materials, laws, timestep,\n"
+      "# gravity, wall particles and drivers. LAMMPS' atom ids are the native ids + 1. LAMMPS\n"
+      "# integrates with velocity Verlet (the scenario: {}); compute erotate/sphere counts\n"
+      "# 2/5 m r^2 for every atom (the native disks have 1/2 m r^2).\n",
+      to_string(b.config.integrator));
+  return out;
+}
+
+std::string pair_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
+  std::string out = fmt::format("pair_style granthesis {} {}\n", name_of(s.simulation.normal_law),
+                                name_of(s.simulation.tangential_law));
+  for (std::size_t k = 0; k < t.key_of.size(); ++k)
+    out += fmt::format(
+        "pair_coeff {0} {0} {1}\n", k + 1,
+        pair_coefficient_words(b.world.materials[static_cast<std::size_t>(t.key_of[k].second)]));
+  return out;
+}
+
+// The uniform frost rule: the native engine tests the kinetic energy at its thermo output,
+// against kinetic_threshold x sum(m g R) of the grains, and heaves above the container's floor.
+std::string frost_section(const Scenario& s, const BuiltScenario& b, std::uint64_t thermo) {
+  if (s.frost.model != "uniform") return "";
+  const Particles& p = b.world.particles;
+  double scale = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i)) scale += p.mass[i] * norm(b.world.gravity) * p.radius[i];
+  std::string out = fmt::format(
+      "fix frost grains frost/heave epsilon {} factor {} table {} interval {} every {} "
+      "initial_wait yes inertia {}\n",
+      exact(s.frost.kinetic_threshold * scale), exact(s.frost.heave_factor), exact(b.bounds.lo.y),
+      exact(s.frost.min_interval), thermo, s.particles.shape == Shape::disk ? "disc" : "sphere");
+  if (s.frost.cycles > 0)
+    out += fmt::format("variable heaves equal f_frost\nfix cycles grains halt {} v_heaves >= {} "
+                       "error continue\n",
+                       thermo, s.frost.cycles);
+  return out;
+}
+
+std::string motion_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
+  std::string out = fmt::format("group grains type {}\n", type_list(t.role_types[0]));
+  if (!t.role_types[1].empty())
+    out += fmt::format("group fixed_walls type {}\n", type_list(t.role_types[1]));
+  for (std::size_t k = 0; k < b.world.drivers.size(); ++k)
+    if (!t.role_types[2 + k].empty())
+      out += fmt::format("group drive{} type {}\n", k + 1, type_list(t.role_types[2 + k]));
+  out += fmt::format("fix integrate grains nve/sphere{}\n",
+                     s.particles.shape == Shape::disk ? " disc" : "");
+  if (const double g = norm(b.world.gravity); g > 0.0)
+    out += fmt::format("fix gravity grains gravity {} vector {} {} 0\n", exact(g),
+                       exact(b.world.gravity.x / g), exact(b.world.gravity.y / g));
+  for (std::size_t k = 0; k < b.world.drivers.size(); ++k)
+    if (!t.role_types[2 + k].empty()) out += driver_fix(b.world.drivers[k], k);
+  return out + "fix plane all enforce2d\n";
+}
+
+std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, const Box& box,
+                 const std::string& command) {
+  const double dt = b.config.timestep;
+  const std::uint64_t thermo = steps_of(s.output.thermo_interval, dt);
+  std::string out = deck_header(s, b, command) + "\n";
+  out += fmt::format("variable steps index {}\n", steps_of(s.simulation.duration, dt));
+  if (s.output.snapshot_interval > 0.0)
+    out +=
+        fmt::format("variable snapshot_every index {}\n", steps_of(s.output.snapshot_interval, dt));
+  out += "\n";
+  out += fmt::format("units si\ndimension 2\natom_style sphere\natom_modify map array\n"
+                     "boundary {} {} p\ncomm_modify vel yes\n",
+                     box.periodic_x ? "p" : "f", box.periodic_y ? "p" : "f");
+  out += fmt::format("read_data data.{0}\ninclude masses.{0}\n\n", s.name);
+  out += pair_section(s, b, t) + "\n" + motion_section(s, b, t);
+  out += frost_section(s, b, thermo) + "\n";
+  out += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\ntimestep {}\n\n",
+                     exact(b.world.particles.min_radius()), exact(dt));
+  out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n";
+  out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation pe press{}\n",
+                     s.frost.model == "uniform" ? " f_frost" : "");
+  out += fmt::format("thermo {}\nthermo_modify norm no\n", thermo);
+  if (s.output.snapshot_interval > 0.0)
+    out += fmt::format("dump snapshots all custom ${{snapshot_every}} dump.{}.lammpstrj id type "
+                       "radius mass x y vx vy omegaz\ndump_modify snapshots sort id format float "
+                       "%.17g\n",
+                       s.name);
+  return out + "\nrun ${steps}\n";
+}
+
+} // namespace
+
+void check_lammps_export(const Scenario& s) {
+  if (const auto why = refusal(s)) throw InvalidArgument(*why);
+}
+
+LammpsCase export_lammps(const Scenario& s, const BuiltScenario& built,
+                         const std::string& command) {
+  check_lammps_export(s);
+  if (!built.world.walls.empty())
+    throw InvalidArgument(refused("geometry", "the built scenario has segment walls"));
+  const Typing t = assign_types(built);
+  const Box box = lammps_box(built);
+  return {.name = s.name,
+          .deck = deck(s, built, t, box, command),
+          .data = data_file(s, built, t, box),
+          .masses = masses_file(built),
+          .scenario = to_toml(s)};
+}
+
+void write_lammps_case(const LammpsCase& c, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path d(dir);
+  write_file_atomically((d / ("data." + c.name)).string(), c.data);
+  write_file_atomically((d / ("masses." + c.name)).string(), c.masses);
+  write_file_atomically((d / "scenario.toml").string(), c.scenario);
+  write_file_atomically((d / ("in." + c.name)).string(), c.deck);
+}
+
+} // namespace talus
