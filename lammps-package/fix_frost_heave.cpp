@@ -12,7 +12,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "lammps_error.hpp"
+#include "host_api.hpp"
 #include "pair_coefficients.hpp"
 #include "update.h"
 #include "utils.h"

@@ -1,5 +1,6 @@
-// talus-lmp: LAMMPS with the talus styles registered. It takes lmp's command line (-in, -var,
-// -log, -screen, ...) and runs under mpirun -np N as lmp does.
+// talus-lmp: LAMMPS with the talus styles registered (built for LIGGGHTS: talus-liggghts, with
+// the pair style). It takes the host program's command line (-in, -var, -log, -screen, ...) and
+// runs under mpirun -np N as the host program does.
 #include <cstdio>
 #include <exception>
 

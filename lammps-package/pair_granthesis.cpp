@@ -11,7 +11,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "lammps_error.hpp"
+#include "host_api.hpp"
 #include "memory.h"
 #include "neigh_list.h"
 #include "pair_coefficients.hpp"
@@ -19,7 +19,6 @@
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
 #include "update.h"
-#include "utils.h"
 
 namespace talus::lammps {
 
@@ -34,7 +33,9 @@ PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
   single_extra = 6;
   svector = svector_storage_;
   restartinfo = 1;
-  finitecutflag = 1;
+#ifndef TALUS_HOST_LIGGGHTS
+  finitecutflag = 1; // LIGGGHTS' neighbour lists add the skin to init_one's reach anyway
+#endif
   no_virial_fdotr_compute = 1;
 }
 
@@ -92,8 +93,8 @@ void PairGranthesis::coeff(int narg, char** arg) {
     fail("usage: pair_coeff I J key value ... (keys: " + pair_coefficient_names() + ")");
   if (!allocated) allocate();
   int ilo = 0, ihi = 0, jlo = 0, jhi = 0;
-  LAMMPS_NS::utils::bounds(__FILE__, __LINE__, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  LAMMPS_NS::utils::bounds(__FILE__, __LINE__, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  type_bounds(lmp, arg[0], atom->ntypes, ilo, ihi);
+  type_bounds(lmp, arg[1], atom->ntypes, jlo, jhi);
   Material m;
   try {
     m = parse_pair_coefficients(std::vector<std::string>(arg + 2, arg + narg));
@@ -138,10 +139,11 @@ void PairGranthesis::init_style() {
            "from the restitution at its impact speed; talus export lammps writes that value)");
   }
   if (domain->dimension == 3 && comm->me == 0)
-    error->warning(__FILE__, __LINE__,
-                   std::string(style_name) +
-                       ": in 3d the contacts must lie in the x-y plane (spheres moving in a "
-                       "plane); a contact out of it stops the run");
+    warn(error,
+         std::string(style_name) +
+             ": in 3d the contacts must lie in the x-y plane (spheres moving in a plane); a "
+             "contact out of it stops the run",
+         __FILE__, __LINE__);
   double local = 0.0;
   for (int i = 0; i < atom->nlocal; ++i) local = std::max(local, atom->radius[i]);
   MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -164,7 +166,14 @@ void PairGranthesis::compute(int eflag, int vflag) {
 }
 
 template <class N, class T> void PairGranthesis::compute_with(int eflag, int vflag) {
+#ifdef TALUS_HOST_LIGGGHTS
+  if (eflag || vflag)
+    ev_setup(eflag, vflag);
+  else
+    evflag = vflag_fdotr = 0;
+#else
   ev_init(eflag, vflag);
+#endif
   double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
@@ -247,10 +256,9 @@ void PairGranthesis::write_restart_settings(FILE* file) {
   std::fwrite(laws, sizeof(int), 2, file);
 }
 
-void PairGranthesis::read_restart_settings(FILE* file) {
+void PairGranthesis::read_settings(FILE* file) {
   int laws[2] = {0, 0};
-  if (comm->me == 0)
-    LAMMPS_NS::utils::sfread(__FILE__, __LINE__, laws, sizeof(int), 2, file, nullptr, error);
+  if (comm->me == 0) read_restart_items(lmp, laws, sizeof(int), 2, file);
   MPI_Bcast(laws, 2, MPI_INT, 0, world);
   normal_ = static_cast<NormalLaw>(laws[0]);
   tangential_ = static_cast<TangentialLaw>(laws[1]);
@@ -277,15 +285,14 @@ void PairGranthesis::write_restart(FILE* file) {
     }
 }
 
-void PairGranthesis::read_restart(FILE* file) {
-  read_restart_settings(file);
+void PairGranthesis::read_coefficients(FILE* file) {
+  read_settings(file);
   allocate();
   for (int i = 1; i <= ntypes_; ++i)
     for (int j = i; j <= ntypes_; ++j) {
       const std::size_t ij = slot(i, j);
       int flags[2] = {0, 0};
-      if (comm->me == 0)
-        LAMMPS_NS::utils::sfread(__FILE__, __LINE__, flags, sizeof(int), 2, file, nullptr, error);
+      if (comm->me == 0) read_restart_items(lmp, flags, sizeof(int), 2, file);
       MPI_Bcast(flags, 2, MPI_INT, 0, world);
       if (i == j) given_[static_cast<std::size_t>(i)] = static_cast<char>(flags[0]);
       explicit_pair_[ij] = static_cast<char>(flags[1]);
@@ -294,19 +301,31 @@ void PairGranthesis::read_restart(FILE* file) {
         Material& m = material_[static_cast<std::size_t>(i)];
         for (const MaterialKey& k : material_keys) {
           double value = 0.0;
-          if (comm->me == 0)
-            LAMMPS_NS::utils::sfread(__FILE__, __LINE__, &value, sizeof(double), 1, file, nullptr,
-                                     error);
+          if (comm->me == 0) read_restart_items(lmp, &value, sizeof(double), 1, file);
           MPI_Bcast(&value, 1, MPI_DOUBLE, 0, world);
           m.*k.field = value;
         }
       } else if (flags[1]) {
-        if (comm->me == 0)
-          LAMMPS_NS::utils::sfread(__FILE__, __LINE__, &pair_[ij], sizeof(PairParameters), 1, file,
-                                   nullptr, error);
+        if (comm->me == 0) read_restart_items(lmp, &pair_[ij], sizeof(PairParameters), 1, file);
         MPI_Bcast(&pair_[ij], sizeof(PairParameters), MPI_BYTE, 0, world);
       }
     }
 }
+
+#ifdef TALUS_HOST_LIGGGHTS
+void PairGranthesis::read_restart_settings(FILE* file, const int, const int) {
+  read_settings(file);
+}
+void PairGranthesis::read_restart(FILE* file, const int, const int) {
+  read_coefficients(file);
+}
+#else
+void PairGranthesis::read_restart_settings(FILE* file) {
+  read_settings(file);
+}
+void PairGranthesis::read_restart(FILE* file) {
+  read_coefficients(file);
+}
+#endif
 
 } // namespace talus::lammps

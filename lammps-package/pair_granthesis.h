@@ -34,14 +34,26 @@ public:
   double single(int i, int j, int itype, int jtype, double rsq, double factor_coul,
                 double factor_lj, double& fforce) override;
   void write_restart(FILE* file) override;
+#ifdef TALUS_HOST_LIGGGHTS
+  void read_restart(FILE* file, int major, int minor) override;
+#else
   void read_restart(FILE* file) override;
+#endif
   void write_restart_settings(FILE* file) override;
+#ifdef TALUS_HOST_LIGGGHTS
+  void read_restart_settings(FILE* file, int major, int minor) override;
+#else
   void read_restart_settings(FILE* file) override;
+#endif
 
   /// The pair parameters of types i and j (1-based), as mixed or given.
   const PairParameters& parameters(int i, int j) const;
-  NormalLaw normal_law() const { return normal_; }
-  TangentialLaw tangential_law() const { return tangential_; }
+  NormalLaw normal_law() const {
+    return normal_;
+  }
+  TangentialLaw tangential_law() const {
+    return tangential_;
+  }
 
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
@@ -52,6 +64,8 @@ private:
            static_cast<std::size_t>(j);
   }
   [[noreturn]] void fail(const std::string& message) const;
+  void read_settings(FILE* file);     ///< the laws, from a restart file
+  void read_coefficients(FILE* file); ///< the laws and the coefficients, from a restart file
 
   NormalLaw normal_ = law_id<HertzViscoelastic>;
   TangentialLaw tangential_ = law_id<ViscousCoulomb>;

@@ -1,10 +1,12 @@
 #include "register.hpp"
 
-#include "fix_frost_heave.h"
 #include "force.h"
 #include "lammps.h"
 #include "modify.h"
 #include "pair_granthesis.h"
+#ifndef TALUS_HOST_LIGGGHTS
+#include "fix_frost_heave.h"
+#endif
 
 namespace {
 
@@ -12,14 +14,18 @@ LAMMPS_NS::Pair* create_pair_granthesis(LAMMPS_NS::LAMMPS* lmp) {
   return new talus::lammps::PairGranthesis(lmp);
 }
 
+#ifndef TALUS_HOST_LIGGGHTS
 LAMMPS_NS::Fix* create_fix_frost_heave(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
   return new talus::lammps::FixFrostHeave(lmp, narg, arg);
 }
+#endif
 
 } // namespace
 
 extern "C" void talus_lammps_register(void* lmp) {
   auto* instance = static_cast<LAMMPS_NS::LAMMPS*>(lmp);
   (*instance->force->pair_map)["granthesis"] = &create_pair_granthesis;
+#ifndef TALUS_HOST_LIGGGHTS // the LIGGGHTS adapter carries the pair style only
   (*instance->modify->fix_map)["frost/heave"] = &create_fix_frost_heave;
+#endif
 }

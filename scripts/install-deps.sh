@@ -14,6 +14,7 @@ packages=(
   lammps                    # talus bench --lammps: the reference engine on the same system
   liblammps-dev             # the LAMMPS package (lammps-package/): pair_style granthesis
   python3-lammps            # its tests: the styles registered in LAMMPS' Python module
+  liggghts libliggghts-dev  # the same pair style in LIGGGHTS (lammps-package/liggghts/)
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #pragma once
-// A LAMMPS instance in the test process, with the talus styles registered: commands go in one at
-// a time, and the atoms' arrays are read directly. LAMMPS stops a bad command by throwing (Debian
-// builds it with exceptions), which the tests catch as std::exception.
+// A LAMMPS (or, with TALUS_HOST_LIGGGHTS, a LIGGGHTS) instance in the test process, with the talus
+// styles registered: commands go in one at a time, and the atoms' arrays are read directly. LAMMPS
+// stops a bad command by throwing (Debian builds it with exceptions), which the tests catch as
+// std::exception.
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -22,27 +23,46 @@ class LammpsInstance {
 public:
   /// registered = false: a bare LAMMPS, for styles registered another way (the plugin test)
   explicit LammpsInstance(bool registered = true) {
-    std::vector<std::string> words{"talus-tests", "-log", "none", "-screen", "none", "-nocite"};
+    std::vector<std::string> words{"talus-tests", "-log", "none", "-screen", "none"};
+#ifndef TALUS_HOST_LIGGGHTS
+    words.emplace_back("-nocite"); // LIGGGHTS has no such option
+#endif
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
     lmp_ = new LAMMPS_NS::LAMMPS(static_cast<int>(argv.size()), argv.data(), MPI_COMM_WORLD);
     if (registered) talus_lammps_register(lmp_);
   }
-  ~LammpsInstance() { delete lmp_; }
+  ~LammpsInstance() {
+    delete lmp_;
+  }
   LammpsInstance(const LammpsInstance&) = delete;
   LammpsInstance& operator=(const LammpsInstance&) = delete;
 
-  void command(const std::string& line) { lmp_->input->one(line); }
+  void command(const std::string& line) {
+    lmp_->input->one(line.c_str());
+  }
   void commands(const std::vector<std::string>& lines) {
     for (const std::string& l : lines) command(l);
   }
-  LAMMPS_NS::LAMMPS* lmp() { return lmp_; }
+  LAMMPS_NS::LAMMPS* lmp() {
+    return lmp_;
+  }
   /// The local index of the atom with this tag (needs atom_modify map array).
-  int index(int tag) { return lmp_->atom->map(tag); }
-  double* force(int tag) { return lmp_->atom->f[index(tag)]; }
-  double* torque(int tag) { return lmp_->atom->torque[index(tag)]; }
-  double* position(int tag) { return lmp_->atom->x[index(tag)]; }
-  double* velocity(int tag) { return lmp_->atom->v[index(tag)]; }
+  int index(int tag) {
+    return lmp_->atom->map(tag);
+  }
+  double* force(int tag) {
+    return lmp_->atom->f[index(tag)];
+  }
+  double* torque(int tag) {
+    return lmp_->atom->torque[index(tag)];
+  }
+  double* position(int tag) {
+    return lmp_->atom->x[index(tag)];
+  }
+  double* velocity(int tag) {
+    return lmp_->atom->v[index(tag)];
+  }
 
 private:
   LAMMPS_NS::LAMMPS* lmp_ = nullptr;

@@ -3,7 +3,7 @@
 // (in namespace fmt::v7_lmp) and that Debian does not ship; Debian's libfmt-dev 9 lacks what those
 // headers name (make_args_checked). This header declares just the names the LAMMPS headers
 // mention, so that they parse. The package never instantiates LAMMPS' formatting templates: it
-// hands Error and utils whole std::string messages (lammps_error.hpp), so nothing declared here is
+// hands Error and utils whole std::string messages (host_api.hpp), so nothing declared here is
 // called or linked.
 #include <string_view>
 
