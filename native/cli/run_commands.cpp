@@ -1,4 +1,5 @@
 // `talus run`, `talus resume`, `talus scenarios` and `talus convert`.
+#include <cmath>
 #include <filesystem>
 #include <memory>
 
@@ -22,6 +23,19 @@ int& exit_status() {
 }
 
 namespace {
+
+// --stop-at: a finite time >= 0 s (CLI11's NonNegativeNumber lets NaN through).
+const CLI::Validator stop_time(
+    [](const std::string& text) -> std::string {
+      try {
+        std::size_t used = 0;
+        const double t = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(t) && t >= 0.0) return {};
+      } catch (const std::exception&) {
+      }
+      return text + ": allowed: a finite time >= 0 s";
+    },
+    "TIME >= 0");
 
 std::string describe(std::string_view toml_text) {
   try {
@@ -50,16 +64,14 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--threads", o->run.threads, "threads (0: all cores; default: the scenario's)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--stop-at", o->run.stop_at,
-                  "stop at this simulated time (s) after a checkpoint; continue with talus resume");
+                  "stop at this simulated time (s) after a checkpoint; continue with talus resume")
+      ->check(stop_time);
   cmd->add_flag("--quiet", o->run.quiet, "no progress output");
   cmd->callback([o] {
     const Scenario s = resolve_scenario(o->scenario, o->set);
     const std::string dir = o->out.empty() ? "runs/" + s.name : o->out;
-    if (fs::exists(dir) && !fs::is_empty(dir))
-      throw InvalidArgument("run folder '" + dir +
-                            "' already exists and is not empty; choose "
-                            "another with --out, or continue it with: talus resume " +
-                            dir);
+    // the folder and its lock before the settling, which can take minutes
+    RunFolder folder = RunFolder::create(dir, s);
     if (!o->run.quiet)
       fmt::print("talus run {}: {}\n", s.name,
                  s.description.empty() ? "(no description)" : s.description);
@@ -72,8 +84,12 @@ void add_run_command(CLI::App& app) {
         fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
         std::fflush(stdout);
       });
-    } catch (const ScenarioError& e) { // say which file the key is in
+    } catch (const ScenarioError& e) { // say which file the key is in; leave nothing behind
+      folder.discard();
       throw ScenarioError(o->scenario + ": " + e.what());
+    } catch (...) {
+      folder.discard();
+      throw;
     }
     if (!o->run.quiet) {
       std::size_t free = built.world.particles.count(Kind::free);
@@ -86,7 +102,7 @@ void add_run_command(CLI::App& app) {
       if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
       std::fflush(stdout);
     }
-    exit_status() = start_run(s, std::move(built), dir, o->run);
+    exit_status() = start_run(s, std::move(built), std::move(folder), o->run);
   });
 }
 
@@ -97,7 +113,8 @@ void add_resume_command(CLI::App& app) {
                                                "(bit-identical to an uninterrupted run)");
   cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--stop-at", o->stop_at, "stop again at this simulated time (s)");
+  cmd->add_option("--stop-at", o->stop_at, "stop again at this simulated time (s)")
+      ->check(stop_time);
   cmd->add_flag("--quiet", o->quiet, "no progress output");
   cmd->callback([dir, o] { exit_status() = resume_run(*dir, *o); });
 }

@@ -1,5 +1,7 @@
 #include "cli/run_loop.hpp"
 
+#include "cli/run_folder.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -156,6 +158,7 @@ public:
     record_track();
     write_snapshot();
     if (out_.is_open()) out_ << thesis_out_block(sim_);
+    checkpoint(0.0); // a run killed before its first interval continues from here
   }
 
   int loop() {
@@ -488,15 +491,7 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
 
 } // namespace
 
-int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
-  const fs::path d(dir);
-  if (fs::exists(d) && !fs::is_empty(d))
-    throw InvalidArgument("run folder '" + dir +
-                          "' already exists and is not empty; choose "
-                          "another with --out, or continue it with: talus resume " +
-                          dir);
-  fs::create_directories(d / "snapshots");
-  write_file_atomically((d / "scenario.toml").string(), to_toml(s));
+int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
   RunBook book;
   book.tracked = built.tracked;
   book.groups = built.groups;
@@ -505,15 +500,20 @@ int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, co
   book.settle_time = built.settle_time;
   book.collision_time = built.collision_time;
   Simulation sim(std::move(built.world), with_threads(built.config, o));
-  Run run(s, std::move(sim), std::move(book), d, o);
+  Run run(s, std::move(sim), std::move(book), folder.path(), o);
   run.open_files(true);
   return run.loop();
+}
+
+int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
+  return start_run(s, std::move(built), RunFolder::create(dir, s), o);
 }
 
 int resume_run(const std::string& dir, const RunOptions& o) {
   const fs::path d(dir);
   if (!fs::exists(d / "scenario.toml"))
     throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
+  const RunFolder folder = RunFolder::open(dir); // held until the run ends
   const Scenario s = load_scenario_file((d / "scenario.toml").string());
   std::optional<Checkpoint> c;
   for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
@@ -526,6 +526,10 @@ int resume_run(const std::string& dir, const RunOptions& o) {
       fmt::print(stderr, "talus: {}; trying the previous checkpoint\n", e.what());
     }
   }
+  if (!c && never_checkpointed(d))
+    throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped before its first " +
+                          "(while settling, say); start it again with: talus run " +
+                          (d / "scenario.toml").string() + " --out " + dir);
   if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
   RunBook book = RunBook::decode(c->run_data);
   // cut the outputs back to what they held at the checkpoint

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/run_folder.hpp"
 #include "scenario/build.hpp"
 #include "scenario/scenario.hpp"
 
@@ -39,7 +40,9 @@ inline constexpr int exit_completed = 0;
 inline constexpr int exit_interrupted = 130; ///< stopped by SIGINT/SIGTERM after a checkpoint
 inline constexpr int exit_stopped = 4;       ///< stopped by --stop-at after a checkpoint
 
-/// Starts a new run in `dir` (must not exist or be empty) from a built scenario.
+/// Starts a new run in a run folder made (and locked) by RunFolder::create.
+int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o);
+/// Starts a new run in `dir` (see RunFolder::create for what dir may hold) from a built scenario.
 int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o);
 /// Continues the run in `dir` from its last good checkpoint.
 int resume_run(const std::string& dir, const RunOptions& o);

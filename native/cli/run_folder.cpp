@@ -1,0 +1,120 @@
+#include "cli/run_folder.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include "io/checkpoint.hpp"
+#include "scenario/load.hpp"
+#include "talus/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+constexpr const char* lock_name = ".lock";
+
+// The lock on dir/.lock, or -1 with the holder's pid in `holder` (empty if unknown).
+int take_lock(const fs::path& dir, std::string& holder) {
+  const fs::path path = dir / lock_name;
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw InvalidArgument("cannot open " + path.string() + ": " + std::strerror(errno));
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    // the holder writes its pid just after taking the lock: give it a moment
+    for (int tries = 0; tries < 50 && holder.empty(); ++tries) {
+      std::ifstream in(path);
+      std::getline(in, holder);
+      if (holder.empty()) ::usleep(10'000);
+    }
+    ::close(fd);
+    return -1;
+  }
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+    // the lock holds without the pid; a refused process then names no holder
+  }
+  return fd;
+}
+
+[[noreturn]] void in_use(const fs::path& dir, const std::string& holder) {
+  throw InvalidArgument("run folder '" + dir.string() + "' is in use by " +
+                        (holder.empty() ? std::string("another process") : "process " + holder) +
+                        " (talus run or talus resume); wait for it to end, or stop it (a stopped "
+                        "run continues with: talus resume " +
+                        dir.string() + ")");
+}
+
+bool empty_but_lock(const fs::path& dir) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename() != lock_name) return false;
+  return true;
+}
+
+} // namespace
+
+bool never_checkpointed(const fs::path& dir) {
+  return fs::exists(dir / "scenario.toml") && !fs::exists(dir / "checkpoint.bin") &&
+         !fs::exists(dir / "checkpoint.prev.bin") && !fs::exists(dir / "run.json");
+}
+
+RunFolder RunFolder::create(const std::string& dir, const Scenario& s) {
+  const fs::path d(dir);
+  if (fs::exists(d) && !fs::is_directory(d))
+    throw InvalidArgument("--out '" + dir + "' is a file, not a folder; choose another with --out");
+  const bool existed = fs::exists(d);
+  fs::create_directories(d);
+  std::string holder;
+  const int fd = take_lock(d, holder);
+  if (fd < 0) in_use(d, holder);
+  RunFolder folder(d, fd);
+  folder.created_ = !existed;
+  if (!empty_but_lock(d)) {
+    if (!never_checkpointed(d))
+      throw InvalidArgument("run folder '" + dir +
+                            "' already exists and is not empty; choose another with --out, or "
+                            "continue it with: talus resume " +
+                            dir);
+    // a run stopped before its first checkpoint: nothing in it can be continued
+    for (const auto& e : fs::directory_iterator(d))
+      if (e.path().filename() != lock_name) fs::remove_all(e.path());
+  }
+  fs::create_directories(d / "snapshots");
+  write_file_atomically((d / "scenario.toml").string(), to_toml(s));
+  return folder;
+}
+
+RunFolder RunFolder::open(const std::string& dir) {
+  const fs::path d(dir);
+  std::string holder;
+  const int fd = take_lock(d, holder);
+  if (fd < 0) in_use(d, holder);
+  return RunFolder(d, fd);
+}
+
+RunFolder::RunFolder(RunFolder&& other) noexcept
+    : dir_(std::move(other.dir_)), fd_(other.fd_), created_(other.created_) {
+  other.fd_ = -1;
+}
+
+RunFolder::~RunFolder() {
+  if (fd_ >= 0) ::close(fd_); // releases the lock
+}
+
+void RunFolder::discard() {
+  std::error_code ignored;
+  if (created_) {
+    fs::remove_all(dir_, ignored);
+    return;
+  }
+  for (const auto& e : fs::directory_iterator(dir_, ignored))
+    if (e.path().filename() != lock_name) fs::remove_all(e.path(), ignored);
+}
+
+} // namespace talus::cli

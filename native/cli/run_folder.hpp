@@ -1,0 +1,42 @@
+#pragma once
+// A run folder held by one process: `talus run` and `talus resume` take an advisory lock on
+// DIR/.lock (flock), which the system releases when the process ends however it ends, so a
+// second process on the same folder is refused with the holder's pid, and a killed run's folder
+// is free again at once.
+#include <filesystem>
+#include <string>
+
+#include "scenario/scenario.hpp"
+
+namespace talus::cli {
+
+class RunFolder {
+public:
+  /// A folder for a new run: `dir` must not exist, be empty, or hold a run that was stopped
+  /// before its first checkpoint (killed while settling, say), which is cleared. Takes the lock,
+  /// makes snapshots/ and writes the scenario as scenario.toml. Throws InvalidArgument (naming
+  /// the holder's pid, or saying how to continue the run already there) otherwise.
+  static RunFolder create(const std::string& dir, const Scenario& s);
+  /// A run folder to resume: takes the lock. Throws InvalidArgument if another process holds it.
+  static RunFolder open(const std::string& dir);
+
+  RunFolder(RunFolder&& other) noexcept;
+  RunFolder& operator=(RunFolder&&) = delete;
+  RunFolder(const RunFolder&) = delete;
+  ~RunFolder();
+
+  const std::filesystem::path& path() const { return dir_; }
+  /// Removes what create() wrote (the scenario could not be built: nothing is left behind).
+  void discard();
+
+private:
+  RunFolder(std::filesystem::path dir, int fd) : dir_(std::move(dir)), fd_(fd) {}
+  std::filesystem::path dir_;
+  int fd_ = -1;
+  bool created_ = false; ///< create() made the folder (discard removes it)
+};
+
+/// Whether dir holds a run that never wrote a checkpoint (and has not ended).
+bool never_checkpointed(const std::filesystem::path& dir);
+
+} // namespace talus::cli

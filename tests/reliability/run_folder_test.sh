@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# One run folder, one process: a second talus run or resume on a folder in use is refused with the
+# holder's pid; two resumes at once leave one whole thermo.csv. A run killed while settling (no
+# checkpoint yet) is started again by the command resume names; one killed just after its start
+# resumes from the checkpoint every run writes at t = 0.
+set -u
+talus="$1"
+dir="$(mktemp -d)"
+trap 'kill -KILL $(jobs -p) 2>/dev/null; rm -rf "$dir"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+wait_for() { for _ in $(seq 1 400); do [ -e "$1" ] && return 0; sleep 0.05; done; fail "no $1"; }
+
+# the drum settles for seconds: the folder and its lock exist from the start
+settle=(drum --quiet --set simulation.duration=0.05 --set packing.settle_max_time=3)
+"$talus" run "${settle[@]}" --out "$dir/a" &
+pid=$!
+wait_for "$dir/a/scenario.toml"
+sleep 0.2
+out=$("$talus" resume "$dir/a" 2>&1) && fail "a resume of a folder in use succeeded"
+echo "$out" | grep -q "in use by process $pid" || fail "resume: $out"
+out=$("$talus" run "${settle[@]}" --out "$dir/a" 2>&1) && fail "a second run on a folder in use"
+echo "$out" | grep -q "in use by process $pid" || fail "run: $out"
+echo "ok: a folder in use is refused, naming process $pid"
+
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+[ -e "$dir/a/checkpoint.bin" ] && fail "killed too late: the run had started stepping"
+out=$("$talus" resume "$dir/a" 2>&1) && fail "resume of a run killed while settling succeeded"
+command=$(echo "$out" | sed -n 's/.*start it again with: //p')
+[ "$command" = "talus run $dir/a/scenario.toml --out $dir/a" ] || fail "resume said: $out"
+${command/talus/$talus} --quiet || fail "the command resume gave failed: $command"
+grep -q '"ended_by": "duration"' "$dir/a/run.json" || fail "the restarted run did not finish"
+echo "ok: a run killed while settling starts again with: $command"
+
+# killed right after its start: the t = 0 checkpoint is there to resume from
+fast=(drum --quiet --set particles.count=100 --set packing.settle_max_time=0.05
+      --set simulation.duration=0.3 --set output.checkpoint_interval=10)
+"$talus" run "${fast[@]}" --out "$dir/b" &
+pid=$!
+wait_for "$dir/b/checkpoint.bin"
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+"$talus" resume "$dir/b" --quiet || fail "resume after a kill at the start"
+echo "ok: a run killed at its start resumes"
+
+# two resumes at once: one is refused, the other finishes; time never runs backwards
+"$talus" run "${fast[@]}" --set simulation.duration=1 --out "$dir/c" --stop-at 0.05 || [ $? -eq 4 ] || fail "--stop-at run"
+"$talus" resume "$dir/c" --quiet > "$dir/r1.txt" 2>&1 &
+p1=$!
+"$talus" resume "$dir/c" --quiet > "$dir/r2.txt" 2>&1 &
+p2=$!
+wait "$p1"; s1=$?
+wait "$p2"; s2=$?
+if ! { [ "$s1" -eq 0 ] && [ "$s2" -ne 0 ]; } && ! { [ "$s2" -eq 0 ] && [ "$s1" -ne 0 ]; }; then
+  fail "two resumes: statuses $s1 and $s2 (one must succeed, one be refused)"
+fi
+grep -q "is in use by process [0-9]" "$dir/r1.txt" "$dir/r2.txt" || fail "no refusal: $(cat "$dir"/r?.txt)"
+awk -F, 'NR > 1 { if ($1 + 0 < last) { print "time runs backwards at line " NR; exit 1 }
+                  last = $1 + 0 }' "$dir/c/thermo.csv" || fail "thermo.csv"
+echo "ok: of two resumes at once one is refused; thermo.csv runs forward"
