@@ -2,6 +2,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -35,6 +36,10 @@ int main(int argc, char** argv) {
   } catch (const talus::InstabilityError& e) {
     fmt::print(stderr, "talus: the run went unstable: {}\n", e.what());
     return 3;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "talus: error: out of memory (a run keeps its last checkpoint; fewer "
+                       "particles, or more memory, then talus resume)\n");
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());
     return 1;

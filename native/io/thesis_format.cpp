@@ -68,6 +68,11 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file) {
         fail("particle line: column " + std::to_string(c + 1) + " (" + columns[c] +
              ") is missing or not a number; a line has 13 columns: x y angle vx vy omega mass "
              "radius type mu gamma_t Y A");
+    std::string extra;
+    if (row >> extra)
+      fail("particle line: more than 13 columns ('" + extra +
+           "' after A); a line has 13 columns: x y angle vx vy omega mass radius type mu gamma_t "
+           "Y A");
     if (v[6] <= 0 || v[7] <= 0) fail("particle line: mass and radius must be > 0");
     // check the range before converting: a double beyond int's range cannot be cast (found by
     // fuzz_thesis_in)
@@ -76,6 +81,13 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file) {
     const int type = static_cast<int>(v[8]);
     f.particles.push_back(
         {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], type, v[9], v[10], v[11], v[12]});
+  }
+  // nothing but blank lines may follow the N particle lines: a surplus line means N is wrong
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+      fail("a particle line beyond the N = " + std::to_string(n) +
+           " of line 1; correct N, or remove the line");
   }
   return f;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <sys/resource.h>
 #include <tuple>
 #include <unistd.h>
 
@@ -47,8 +48,34 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
   return out;
 }
 
-// Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius, and
-// must not reach through an extra wall segment.
+// Refuses what the machine, or this process' limits (ulimit -v, -d), cannot hold, before
+// allocating it: a generous bound per particle on the neighbour list, contact history and the
+// run's buffers (docs/performance.md, "Memory").
+void check_memory(std::size_t particles) {
+  const double need = 700.0 * static_cast<double>(particles);
+  const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
+  const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
+  double room = pages > 0 && page > 0 ? 0.8 * pages * page : HUGE_VAL;
+  std::string what = "this machine has " + std::to_string(room / 0.8 / 1e9) + " GB";
+  for (const auto& [resource, name] :
+       {std::pair{RLIMIT_AS, "ulimit -v"}, {RLIMIT_DATA, "ulimit -d"}}) {
+    rlimit limit{};
+    if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
+    // the process itself (code, libraries, threads' stacks) takes some of a limit
+    const double usable = 0.8 * static_cast<double>(limit.rlim_cur) - 200e6;
+    if (usable < room) {
+      room = usable;
+      what = "this process may use " + std::to_string(static_cast<double>(limit.rlim_cur) / 1e9) +
+             " GB (" + name + ")";
+    }
+  }
+  if (need > room)
+    throw ScenarioError("key 'particles.count': " + std::to_string(particles) +
+                        " particles need about " + std::to_string(need / 1e9) + " GB; " + what);
+}
+
+// Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius (walls:
+// check_listed_grains_clear_of_walls).
 void check_start_overlaps(const Scenario& s) {
   const auto& list = s.particles.list;
   for (std::size_t a = 0; a < list.size(); ++a) {
@@ -60,13 +87,6 @@ void check_start_overlaps(const Scenario& s) {
         throw ScenarioError("key 'particles.list': grains " + std::to_string(a) + " and " +
                             std::to_string(b) + " overlap by " + std::to_string(overlap) +
                             " m at the start; allowed: at most 1% of the smaller radius");
-    }
-    for (const SegmentSpec& seg : s.geometry.segments) {
-      const Segment w{seg.a, seg.b};
-      if (list[a].kind == "free" &&
-          norm(list[a].position - closest_point(w, list[a].position)) < 0.99 * list[a].radius)
-        throw ScenarioError("key 'particles.list': grain " + std::to_string(a) +
-                            " overlaps a wall segment at the start");
     }
   }
 }
@@ -109,6 +129,45 @@ void check_wall_gaps(const Scenario& s, double r_min, double r_max) {
   }
 }
 
+// Listed grains must start inside the container and clear of its walls: segments and wall
+// particles (the builder's or listed ones) overlapping a grain by more than 1% of the smaller
+// radius are refused, as grains overlapping each other are.
+void check_listed_grains_clear_of_walls(const Scenario& s, const World& w, const Rect& bounds) {
+  const Particles& p = w.particles;
+  const bool has_bounds = bounds.hi.x > bounds.lo.x && bounds.hi.y > bounds.lo.y;
+  for (std::size_t k = 0; k < s.particles.list.size(); ++k) {
+    const ExplicitParticle& e = s.particles.list[k];
+    if (e.kind != "free") continue;
+    const std::string grain = "key 'particles.list': grain " + std::to_string(k) + " at (" +
+                              std::to_string(e.position.x) + ", " + std::to_string(e.position.y) +
+                              ") m";
+    if (has_bounds && (e.position.x < bounds.lo.x || e.position.x > bounds.hi.x ||
+                       e.position.y < bounds.lo.y || e.position.y > bounds.hi.y))
+      throw ScenarioError(grain + " is outside the container (x in [" +
+                          std::to_string(bounds.lo.x) + ", " + std::to_string(bounds.hi.x) +
+                          "], y in [" + std::to_string(bounds.lo.y) + ", " +
+                          std::to_string(bounds.hi.y) + "] m)");
+    for (std::size_t j = 0; j < w.walls.size(); ++j) {
+      const Segment& seg = w.walls[j];
+      const double overlap = e.radius - norm(e.position - closest_point(seg, e.position));
+      if (overlap > 0.01 * e.radius)
+        throw ScenarioError(grain + " overlaps wall segment " + std::to_string(j) + " by " +
+                            std::to_string(overlap) +
+                            " m at the start; allowed: at most 1% of "
+                            "its radius");
+    }
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.kind[i] == Kind::free) continue;
+      const double overlap = e.radius + p.radius[i] - norm(e.position - p.position[i]);
+      if (overlap > 0.01 * std::min(e.radius, p.radius[i]))
+        throw ScenarioError(grain + " overlaps wall particle " + std::to_string(i) + " by " +
+                            std::to_string(overlap) +
+                            " m at the start; allowed: at most 1% of the smaller radius (move "
+                            "the grain, or set geometry.wall_particle_radius)");
+    }
+  }
+}
+
 } // namespace
 
 double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
@@ -133,17 +192,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   w.gravity = s.simulation.gravity;
   RandomStream rng(s.simulation.seed, 1);
 
-  // refuse what the machine cannot hold before allocating it (a generous bound per particle on
-  // the neighbour list, contact history and the run's buffers: docs/performance.md, "Memory")
-  {
-    const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
-    const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
-    const double need = 700.0 * static_cast<double>(s.particles.count + s.particles.list.size());
-    if (pages > 0 && page > 0 && need > 0.8 * pages * page)
-      throw ScenarioError("key 'particles.count': " + std::to_string(s.particles.count) +
-                          " grains need about " + std::to_string(need / 1e9) +
-                          " GB; this machine has " + std::to_string(pages * page / 1e9) + " GB");
-  }
+  check_memory(s.particles.count + s.particles.list.size());
   check_start_overlaps(s);
 
   // grain sizes first: they set the wall particle radius, the timestep and the Hertz damping
@@ -218,6 +267,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   }
 
   // grains: the explicit list, then the counted ones placed in the fill region
+  check_listed_grains_clear_of_walls(s, w, out.bounds);
   for (const ExplicitParticle& e : s.particles.list)
     w.add_particle({.position = e.position,
                     .radius = e.radius,

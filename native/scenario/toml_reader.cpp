@@ -160,7 +160,10 @@ Vec2 TableReader::vec2(std::string_view key, Vec2 fallback) {
   const toml::array* a = n->as_array();
   if (!a || a->size() != 2 || !(*a)[0].value<double>() || !(*a)[1].value<double>())
     fail(key, "expected two numbers [x, y]");
-  return {*(*a)[0].value<double>(), *(*a)[1].value<double>()};
+  const Vec2 v{*(*a)[0].value<double>(), *(*a)[1].value<double>()};
+  if (!std::isfinite(v.x) || !std::isfinite(v.y))
+    fail(key, "[" + show(v.x) + ", " + show(v.y) + "]; allowed: two finite numbers [x, y]");
+  return v;
 }
 
 std::optional<std::vector<double>> TableReader::optional_numbers(std::string_view key) {
@@ -172,6 +175,7 @@ std::optional<std::vector<double>> TableReader::optional_numbers(std::string_vie
   for (const auto& e : *a) {
     const auto v = e.value<double>();
     if (!v) fail(key, "expected an array of numbers [a, b, ...]");
+    if (!std::isfinite(*v)) fail(key, show(*v) + " in the array; allowed: finite numbers");
     out.push_back(*v);
   }
   return out;

@@ -3,6 +3,7 @@
 
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"
+#include "support/builtin_scenario.hpp"
 
 namespace talus {
 namespace {
@@ -143,6 +144,53 @@ TEST(ScenarioBuild, OverlappingGrainsAtTheStartAreRefused) {
     FAIL() << "accepted";
   } catch (const ScenarioError& e) {
     EXPECT_NE(std::string(e.what()).find("overlap"), std::string::npos) << e.what();
+  }
+}
+
+// A listed grain overlapping a wall (a segment of the builder's box, a wall particle) by more than
+// 1% of its radius, or outside the container, is refused naming the grain; touching is fine.
+TEST(ScenarioBuild, GrainsOverlappingWallsOrOutsideTheContainerAreRefused) {
+  const auto refusal = [](const std::string& grain, const std::string& walls) {
+    const std::string text =
+        "[geometry]\nbuilder = \"box\"\nwidth = 0.1\nheight = 0.1\nwalls = \"" + walls +
+        "\"\nwall_particle_radius = 0.002\n[[particles.list]]\n" + grain;
+    try {
+      build_scenario(load_scenario(text, "t"));
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(refusal("position = [0.001, 0.05]\nradius = 0.003\n", "segments")
+                .find("grain 0 at (0.001000, 0.050000) m overlaps wall segment"),
+            std::string::npos);
+  // 17% of the radius: not silent
+  EXPECT_NE(refusal("position = [0.05, 0.0025]\nradius = 0.003\n", "segments").find("overlaps"),
+            std::string::npos);
+  EXPECT_NE(refusal("position = [0.05, -0.01]\nradius = 0.003\n", "segments")
+                .find("is outside the container"),
+            std::string::npos);
+  EXPECT_NE(refusal("position = [0.05, 0.003]\nradius = 0.003\n", "particles")
+                .find("overlaps wall particle"),
+            std::string::npos);
+  EXPECT_EQ(refusal("position = [0.05, 0.003]\nradius = 0.003\n", "segments"), "(accepted)");
+  EXPECT_EQ(refusal("position = [0.05, 0.005]\nradius = 0.003\n", "particles"), "(accepted)");
+}
+
+// inf and nan are TOML numbers: every key refuses them, whole vectors and lists included.
+TEST(ScenarioLoader, NonFiniteNumbersAreRefusedEverywhere) {
+  for (const std::string set : {"simulation.gravity=[0,inf]", "simulation.gravity=[nan,0]",
+                                "packing.region=[0,0,inf,1]", "particles.list[0].velocity=[nan,0]",
+                                "simulation.duration=inf", "materials[0].friction=nan"}) {
+    try {
+      testing::builtin("collisions", {set});
+      ADD_FAILURE() << set << " accepted";
+    } catch (const ScenarioError& e) {
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("finite") != std::string::npos ||
+                  what.find("out of range") != std::string::npos)
+          << set << ": " << what;
+    }
   }
 }
 

@@ -191,5 +191,25 @@ TEST(ThesisFormat, BadLinesNameTheLineAndColumn) {
   EXPECT_THROW(read_thesis_in("1\n7\n", "c.in"), ScenarioError);
 }
 
+// More particle lines than N, or a 14th column, would silently drop or misread a particle.
+TEST(ThesisFormat, SurplusLinesAndColumnsAreRefused) {
+  const std::string head = "1\n1\n0.5\n1e-06\n0 -9.81 0\n";
+  const std::string grain = "0.01 0.02 0 0.1 0 0 0.001 0.002 0 0.5 0.01 10000 50";
+  const auto refusal = [](const std::string& text) {
+    try {
+      read_thesis_in(text, "d.in");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(
+      refusal(head + grain + "\n" + grain + "\n").find("d.in:7: a particle line beyond the N = 1"),
+      std::string::npos);
+  EXPECT_NE(refusal(head + grain + " 7\n").find("d.in:6: particle line: more than 13 columns"),
+            std::string::npos);
+  EXPECT_EQ(refusal(head + grain + "\n\n  \n"), "(accepted)"); // trailing blank lines are fine
+}
+
 } // namespace
 } // namespace talus
