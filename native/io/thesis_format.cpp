@@ -26,7 +26,7 @@ int thesis_tag_of(NormalLaw law) {
 }
 } // namespace
 
-ThesisFile read_thesis_in(const std::string& text, const std::string& file) {
+ThesisFile read_thesis_in(const std::string& text, const std::string& file, After after) {
   std::istringstream in(text);
   std::string line;
   int line_no = 0;
@@ -83,7 +83,7 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file) {
         {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], type, v[9], v[10], v[11], v[12]});
   }
   // nothing but blank lines may follow the N particle lines: a surplus line means N is wrong
-  while (std::getline(in, line)) {
+  while (after == After::nothing && std::getline(in, line)) {
     ++line_no;
     if (line.find_first_not_of(" \t\r") != std::string::npos)
       fail("a particle line beyond the N = " + std::to_string(n) +

@@ -25,8 +25,13 @@ struct ThesisFile {
   std::vector<ThesisParticle> particles;
 };
 
-/// Parses an .in file; errors name the file, the line and the column.
-ThesisFile read_thesis_in(const std::string& text, const std::string& file);
+/// Whether text may follow the N particle lines: an .in file ends there; a .out file holds more
+/// snapshots, each as an .in file's block.
+enum class After { nothing, more_blocks };
+/// Parses an .in file (or the first block of a .out file); errors name the file, the line and the
+/// column.
+ThesisFile read_thesis_in(const std::string& text, const std::string& file,
+                          After after = After::nothing);
 std::string write_thesis_in(const ThesisFile& f);
 
 /// A scenario with the file's particles as an explicit list. The mapping: law 1 (linear) uses

@@ -47,7 +47,7 @@ TEST_P(BuiltinScenario, BuildsAndRunsShortened) {
   if (name == "collisions") { // the thesis' .out format: its 5-line header, then 13 columns
     const std::string out = read_file((dir / "run.out").string());
     EXPECT_EQ(out.substr(0, out.find('\n')), "4");
-    const ThesisFile back = read_thesis_in(out, "run.out"); // the first block reads as an .in
+    const ThesisFile back = read_thesis_in(out, "run.out", After::more_blocks); // the first block
     EXPECT_EQ(back.particles.size(), 4U);
     EXPECT_DOUBLE_EQ(back.particles[0].vx, 0.01);
   }
