@@ -454,12 +454,13 @@ private:
         "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
         "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
         "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
+        "  \"threads_asked\": {},\n"
         "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.3f},\n"
         "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
         "\"{}\"\n}}\n",
         TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),
         sim_.config().timestep, book_.collision_time, to_string(sim_.config().integrator),
-        sim_.threads(), book_.settle_time, wall,
+        sim_.threads(), sim_.config().threads, book_.settle_time, wall,
         wall > 0
             ? static_cast<double>(steps_done) * static_cast<double>(n) / std::max(wall - 0.0, 1e-9)
             : 0.0,
@@ -489,6 +490,17 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
   return c;
 }
 
+// The engine uses fewer threads than asked where a thread would have too few particles to
+// repay its cost: say so rather than leave the user to wonder.
+void report_threads(const Simulation& sim, const RunOptions& o) {
+  const int asked = sim.config().threads;
+  if (o.quiet || asked <= 0 || sim.threads() >= asked) return;
+  fmt::print("  {} of the {} threads asked: {} particles, and a thread needs about {} to pay for "
+             "itself\n",
+             sim.threads(), asked, sim.world().particles.size(),
+             sim.config().min_particles_per_thread);
+}
+
 } // namespace
 
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
@@ -500,6 +512,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   book.settle_time = built.settle_time;
   book.collision_time = built.collision_time;
   Simulation sim(std::move(built.world), with_threads(built.config, o));
+  report_threads(sim, o);
   Run run(s, std::move(sim), std::move(book), folder.path(), o);
   run.open_files(true);
   return run.loop();
@@ -542,6 +555,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
       fs::remove(entry.path());
   }
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
+  report_threads(sim, o);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
   Run run(s, std::move(sim), std::move(book), d, o);
