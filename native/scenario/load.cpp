@@ -64,11 +64,23 @@ void apply_override(toml::table& root, const std::string& assignment) {
   }
   toml::node* node = &root;
   for (std::size_t k = 0; k + 1 < parts.size(); ++k) node = child(*node, parts[k], true, key);
+  // the value's source is the command line: errors about it name "--set KEY=VALUE", not a line
+  // of the scenario file (TableReader::where)
+  const std::string source = "--set " + assignment;
   toml::table parsed;
   try {
-    parsed = toml::parse("v = " + value);
+    parsed = toml::parse("v = " + value, source);
   } catch (const toml::parse_error&) {
-    parsed = toml::table{{"v", value}}; // a bare word: a string
+    std::string quoted; // a bare word: a string
+    for (const char c : value) {
+      if (c == '"' || c == '\\') quoted += '\\';
+      quoted += c;
+    }
+    try {
+      parsed = toml::parse("v = \"" + quoted + "\"", source);
+    } catch (const toml::parse_error&) {
+      throw ScenarioError(source + ": not a TOML value (a number, \"text\", [a, b] or true)");
+    }
   }
   if (auto* t = node->as_table())
     t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
@@ -88,9 +100,14 @@ Rect rect(TableReader& r, std::string_view key) {
 void read_simulation(TableReader& r, SimulationSection& s) {
   s.duration = r.number("duration", s.duration, 0.0, inf, "> 0 s");
   if (s.duration <= 0.0) r.fail("duration", "must be > 0 s");
+  // a number, or "auto" (the collision time / timestep_factor)
   if (r.has("timestep")) {
-    if (r.text("timestep", "auto") != "auto")
+    if (r.is_number("timestep")) {
+      s.timestep = r.optional_number("timestep", 0.0, inf, "> 0 s or \"auto\"");
+      if (!(*s.timestep > 0.0)) r.fail("timestep", "must be > 0 s or \"auto\"");
+    } else if (r.text("timestep", "auto") != "auto") {
       r.fail("timestep", "allowed: a number in s, or \"auto\"");
+    }
   }
   s.timestep_factor = r.number("timestep_factor", s.timestep_factor, 1.0, 1e6, ">= 1");
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
@@ -309,20 +326,8 @@ Scenario load_scenario(std::string_view text, const std::string& file,
   TableReader top(root, file, "");
   s.name = top.text("name", s.name);
   s.description = top.text("description", "");
-  // simulation.timestep is a number or "auto": handled before the generic reader
   if (const toml::table* t = top.table("simulation")) {
-    toml::table copy = *t;
-    if (const toml::node* n = t->get("timestep")) {
-      if (const auto v = n->value<double>()) {
-        if (*v <= 0.0 || !std::isfinite(*v))
-          throw ScenarioError(file + ":" + std::to_string(n->source().begin.line) +
-                              ": key 'simulation.timestep': must be > 0 s or \"auto\"");
-        s.simulation.timestep = *v;
-        copy.erase("timestep");
-        copy.insert("timestep", "auto");
-      }
-    }
-    TableReader r(copy, file, "simulation");
+    TableReader r(*t, file, "simulation");
     read_simulation(r, s.simulation);
     r.finish();
   }

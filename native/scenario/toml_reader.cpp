@@ -59,6 +59,9 @@ std::string TableReader::qualified(std::string_view key) const {
 }
 
 std::string TableReader::where(const toml::node* node) const {
+  // a value given on the command line (load.cpp, apply_override) names its --set
+  if (node && node->source().path && node->source().path->starts_with("--set "))
+    return *node->source().path;
   const auto line = node ? node->source().begin.line : table_.source().begin.line;
   std::string out = file_;
   if (line > 0) out.append(":").append(std::to_string(line));

@@ -57,6 +57,11 @@ public:
 
   /// Throws for the first key that was never read, suggesting the nearest known one.
   void finish() const;
+  /// Whether the key holds a number (an integer or a float).
+  bool is_number(std::string_view key) const {
+    const toml::node* n = table_.get(key);
+    return n && (n->is_integer() || n->is_floating_point());
+  }
   /// Error at a key of this table (its line if present).
   [[noreturn]] void fail(std::string_view key, const std::string& problem) const;
   /// Error at this table.

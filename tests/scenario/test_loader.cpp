@@ -194,6 +194,26 @@ TEST(ScenarioLoader, NonFiniteNumbersAreRefusedEverywhere) {
   }
 }
 
+// A bad value from --set names the --set; one from the file names its line, [simulation] too.
+TEST(ScenarioLoader, ErrorsNameTheCommandLineOrTheFileLine) {
+  const auto refusal = [](const std::string& text, const std::vector<std::string>& set) {
+    try {
+      load_scenario(text, "f.toml", set);
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  const std::string file = "name = \"x\"\n[simulation]\nduration = 1\nintegrator = \"rk4\"\n";
+  EXPECT_EQ(refusal(file, {}).rfind("f.toml:4: key 'simulation.integrator'", 0), 0u)
+      << refusal(file, {});
+  const std::string good = "name = \"x\"\n[simulation]\nduration = 1\n";
+  for (const std::string set : {"simulation.integrator=rk4", "simulation.gravity=[0,inf]",
+                                "simulation.timestep=-1", "particles.count=abc"})
+    EXPECT_EQ(refusal(good, {set}).rfind("--set " + set + ": key '", 0), 0u)
+        << refusal(good, {set});
+}
+
 TEST(ScenarioBuild, ImpossibleMemoryIsRefusedBeforeAllocating) {
   const Scenario s = load_scenario("[particles]\ncount = 100000000\n", "t");
   try {
