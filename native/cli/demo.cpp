@@ -53,6 +53,8 @@ void run_demo(const DemoOptions& o) {
   Simulation sim(std::move(box.world), box.config);
 
   const std::filesystem::path dir(o.out);
+  if (std::filesystem::exists(dir / "thermo.csv"))
+    fmt::print("talus demo: replacing the earlier demo in {} (--out DIR keeps it)\n", dir.string());
   std::filesystem::create_directories(dir);
   const auto steps = static_cast<std::uint64_t>(std::ceil(o.duration / box.config.timestep));
   const std::uint64_t every = std::max<std::uint64_t>(1, steps / 200);

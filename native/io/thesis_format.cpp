@@ -1,5 +1,6 @@
 #include "io/thesis_format.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -106,7 +107,11 @@ std::string write_thesis_in(const ThesisFile& f) {
 
 Scenario scenario_from_thesis(const ThesisFile& f, const std::string& name) {
   Scenario s;
-  s.name = name;
+  // the file's stem, as a scenario name may be (it names the run folder): other characters as _
+  s.name = name.empty() ? "thesis" : name;
+  for (char& c : s.name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
+  if (s.name == "." || s.name == "..") s.name = "thesis";
   s.description = "converted from the thesis' .in format";
   s.simulation.duration = f.t_max;
   s.simulation.timestep = f.dt;

@@ -325,6 +325,13 @@ Scenario load_scenario(std::string_view text, const std::string& file,
   Scenario s;
   TableReader top(root, file, "");
   s.name = top.text("name", s.name);
+  // the name makes the default run folder runs/NAME: one plain folder name, nothing that climbs
+  if (s.name.empty() || s.name == "." || s.name == ".." ||
+      s.name.find_first_not_of(
+          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
+    top.fail("name", "'" + s.name +
+                         "'; allowed: letters, digits, '_', '-' and '.' (it names the "
+                         "run folder runs/NAME)");
   s.description = top.text("description", "");
   if (const toml::table* t = top.table("simulation")) {
     TableReader r(*t, file, "simulation");

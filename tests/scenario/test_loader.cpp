@@ -214,6 +214,13 @@ TEST(ScenarioLoader, ErrorsNameTheCommandLineOrTheFileLine) {
         << refusal(good, {set});
 }
 
+// The name makes the run folder runs/NAME: nothing that climbs out of runs/ or names a path.
+TEST(ScenarioLoader, NameMustBeAPlainFolderName) {
+  for (const std::string name : {"../../escape", "a/b", "..", ""})
+    EXPECT_THROW(load_scenario("name = \"" + name + "\"\n", "n.toml"), ScenarioError) << name;
+  EXPECT_EQ(load_scenario("name = \"silo-2.v1_b\"\n", "n.toml").name, "silo-2.v1_b");
+}
+
 TEST(ScenarioBuild, ImpossibleMemoryIsRefusedBeforeAllocating) {
   const Scenario s = load_scenario("[particles]\ncount = 100000000\n", "t");
   try {
