@@ -129,6 +129,8 @@ public:
     track_every_ = std::max<std::uint64_t>(1, every(s.output.track_interval, dt));
     checkpoint_every_ = every(s.output.checkpoint_interval, dt);
     tty_ = !o.quiet && ::isatty(STDERR_FILENO);
+    checkpointed_ = !book_.file_bytes.empty(); // resumed: from a checkpoint
+    checkpointed_snapshots_ = book_.snapshots;
     if (s.frost.model == "front") {
       front_.emplace(front_parameters(s, sim_.world().particles, book_.bounds));
       if (!book_.front_state.empty())
@@ -144,7 +146,7 @@ public:
     if (!book_.tracked.empty()) track_.open(dir_ / "track.csv", mode);
     if (s_.output.thesis_out) out_.open(dir_ / "run.out", mode);
     if (s_.frost.model != "none") frost_.open(dir_ / "frost.csv", mode);
-    if (!thermo_) throw std::runtime_error("cannot write " + (dir_ / "thermo.csv").string());
+    if (!thermo_) throw WriteError("cannot write " + (dir_ / "thermo.csv").string());
     if (!fresh) return;
     std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
                        "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
@@ -161,9 +163,13 @@ public:
     checkpoint(0.0); // a run killed before its first interval continues from here
   }
 
-  int loop() {
+  // Opens the outputs (fresh: a new run) and steps to the end.
+  int loop(bool fresh) {
     try {
+      open_files(fresh);
       return loop_steps();
+    } catch (const WriteError& e) {
+      stop_on_write_failure(e);
     } catch (const InstabilityError&) {
       write_run_json(book_.wall_seconds, 0, "unstable"); // the last checkpoint stays as it was
       throw;
@@ -396,16 +402,7 @@ private:
                            {&out_, "run.out"},
                            {&frost_, "frost.csv"}}) {
       f->flush();
-      if (f->is_open() && !*f) {
-        // leave no half-written line: cut every output back to the last good checkpoint
-        for (std::ofstream* g : {&thermo_, &track_, &out_, &frost_}) g->close();
-        std::error_code ignored;
-        for (const auto& [file, bytes] : book_.file_bytes)
-          fs::resize_file(dir_ / file, bytes, ignored);
-        throw std::runtime_error("cannot write " + (dir_ / name).string() +
-                                 " (disk full or a file size limit?); the outputs are cut back to "
-                                 "the last checkpoint, which is kept");
-      }
+      if (f->is_open() && !*f) throw WriteError("cannot write " + (dir_ / name).string());
     }
     book_.file_bytes.clear();
     for (const char* name : {"thermo.csv", "track.csv", "run.out", "frost.csv"})
@@ -416,6 +413,37 @@ private:
     const fs::path latest = dir_ / "checkpoint.bin", previous = dir_ / "checkpoint.prev.bin";
     if (fs::exists(latest)) fs::rename(latest, previous);
     write_file_atomically(latest.string(), encode_checkpoint(c));
+    checkpointed_ = true;
+    checkpointed_snapshots_ = book_.snapshots;
+  }
+
+  // A write failed (a full disk, a file size limit): every output is cut back to what the last
+  // checkpoint holds, so the folder reads as the run stopped there and resume continues it.
+  [[noreturn]] void stop_on_write_failure(const WriteError& e) {
+    for (std::ofstream* g : {&thermo_, &track_, &out_, &frost_}) g->close();
+    std::error_code ignored;
+    if (!checkpointed_) // nothing to continue from: the command that starts it again
+      throw std::runtime_error(std::string(e.what()) +
+                               " (disk full or a file size limit?) before the run's first "
+                               "checkpoint; make room, then start it again with: talus run " +
+                               (dir_ / "scenario.toml").string() + " --out " + dir_.string());
+    for (const auto& [file, bytes] : book_.file_bytes) fs::resize_file(dir_ / file, bytes, ignored);
+    for (const auto& entry : fs::directory_iterator(dir_ / "snapshots", ignored)) {
+      unsigned long k = 0;
+      const std::string f = entry.path().filename().string();
+      if (std::sscanf(f.c_str(), "%*[a-z]_%lu.vtp", &k) == 1 && k >= checkpointed_snapshots_)
+        fs::remove(entry.path(), ignored);
+    }
+    book_.snapshots = checkpointed_snapshots_;
+    try { // the collections and run.json need a little room too; the checkpoint is what counts
+      write_collections();
+      write_run_json(book_.wall_seconds, 0, "write_error");
+    } catch (const WriteError&) {
+    }
+    throw std::runtime_error(std::string(e.what()) +
+                             " (disk full or a file size limit?); the outputs are cut back to the "
+                             "last checkpoint, which is kept; make room, then: talus resume " +
+                             dir_.string());
   }
 
   void progress(double wall, std::uint64_t steps_done) {
@@ -482,6 +510,8 @@ private:
   std::uint64_t renumberings_seen_ = 0;
   double next_report_ = 0.1;
   double last_kinetic_ = 0.0;
+  bool checkpointed_ = false;                ///< a checkpoint of this run exists
+  std::uint64_t checkpointed_snapshots_ = 0; ///< the snapshots the last checkpoint counts
   std::chrono::steady_clock::time_point last_print_{};
 };
 
@@ -514,8 +544,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   report_threads(sim, o);
   Run run(s, std::move(sim), std::move(book), folder.path(), o);
-  run.open_files(true);
-  return run.loop();
+  return run.loop(true);
 }
 
 int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
@@ -559,8 +588,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
   Run run(s, std::move(sim), std::move(book), d, o);
-  run.open_files(false);
-  return run.loop();
+  return run.loop(false);
 }
 
 } // namespace talus::cli

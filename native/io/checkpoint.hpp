@@ -9,6 +9,12 @@
 namespace talus {
 
 /// A checkpoint that cannot be used: missing, truncated, corrupted or of another version.
+/// A file could not be written (a full disk, a file size limit, no permission).
+class WriteError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
 class CheckpointError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
@@ -28,7 +34,7 @@ std::string encode_checkpoint(const Checkpoint& c);
 Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source);
 
 /// Writes `bytes` to path atomically: a temporary file, flushed and fsync'ed, then renamed over
-/// path. Throws std::runtime_error naming the file (full disk, no permission) and leaves no
+/// path. Throws WriteError naming the file (full disk, no permission) and leaves no
 /// partial file behind.
 void write_file_atomically(const std::string& path, const std::string& bytes);
 /// Reads a whole file; throws std::runtime_error naming it.

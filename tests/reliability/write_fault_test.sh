@@ -33,3 +33,23 @@ if [ -f "$dir/full/thermo.csv" ]; then
   [ -z "$(tail -c 1 "$dir/full/thermo.csv")" ] || { echo "thermo.csv ends mid-line"; exit 1; }
   echo "thermo.csv cut back cleanly to $(wc -l < "$dir/full/thermo.csv") whole lines"
 fi
+
+# 4. the limit is hit while a snapshot's collection (particles.pvd) is written: the outputs are cut
+# back to the last checkpoint (snapshot files included), run.json says why, and a resume with room
+# again ends in the state of a run that never failed
+snap=(collisions --quiet --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.01
+      --set output.thermo_interval=0.01 --set output.track_interval=0.01)
+( ulimit -f 8; "$talus" run "${snap[@]}" --out "$dir/snap" ) 2> "$dir/err4.txt"
+[ $? -ne 0 ] || { echo "a failed snapshot went unnoticed"; exit 1; }
+grep -q "cannot write $dir/snap/particles.pvd: .*the outputs are cut back to the last checkpoint" \
+  "$dir/err4.txt" || { echo "snapshot fault, unclear message:"; cat "$dir/err4.txt"; exit 1; }
+grep -q '"ended_by": "write_error"' "$dir/snap/run.json" || { echo "run.json does not say why"; exit 1; }
+listed=$(grep -c 'file="snapshots/particles_' "$dir/snap/particles.pvd")
+present=$(ls "$dir/snap/snapshots" | grep -c '^particles_')
+[ "$listed" -eq "$present" ] || { echo "particles.pvd lists $listed snapshots, $present on disk"; exit 1; }
+"$talus" resume "$dir/snap" --quiet || { echo "resume after the snapshot fault failed"; exit 1; }
+"$talus" run "${snap[@]}" --out "$dir/whole" || { echo "the uninterrupted run failed"; exit 1; }
+[ "$("$talus" checkpoint "$dir/snap" | grep state_hash)" = "$("$talus" checkpoint "$dir/whole" | grep state_hash)" ] \
+  || { echo "resumed after the snapshot fault: another state"; exit 1; }
+cmp -s "$dir/snap/thermo.csv" "$dir/whole/thermo.csv" || { echo "thermo.csv differs after the fault"; exit 1; }
+echo "snapshot fault: cut back to $present snapshots, resumed to the same state"
