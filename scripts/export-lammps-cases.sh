@@ -8,6 +8,8 @@
 # - the thesis' particle walls for segment walls (no LAMMPS style has the native wall law);
 # - where particle walls take room: the hourglass holds 1780 grains, not 1859, and the frost box's
 #   stones sit a wall particle's radius higher.
+# The viscous friction holds no static pile: the hourglass' packing still creeps when its
+# settle_max_time (3 s) ends, and export says so; its case starts from there.
 # The deck's header repeats the command, and scenario.toml beside it is the native twin.
 set -euo pipefail
 cd "$(dirname "$0")/.."

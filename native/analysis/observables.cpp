@@ -149,4 +149,12 @@ double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi) {
   return covered / region;
 }
 
+double disc_area_fraction(const Simulation& sim, Vec2 centre, double radius) {
+  const Particles& p = sim.world().particles;
+  double covered = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i) && norm(p.position[i] - centre) < radius) covered += p.radius[i] * p.radius[i];
+  return covered / (radius * radius); // the factors pi cancel
+}
+
 } // namespace talus

@@ -28,6 +28,9 @@ double coordination_number(const Simulation& sim);
 std::size_t contact_count(const Simulation& sim);
 /// Fraction of the rectangle [lo, hi] covered by free particles (exact disk-rectangle overlap).
 double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi);
+/// Area of the free grains with their centres in the disc of this centre and radius, over the
+/// disc's area (a drum's filling).
+double disc_area_fraction(const Simulation& sim, Vec2 centre, double radius);
 /// Total force the grains put on the given wall particles (fixed or moved), N.
 Vec2 force_on_particles(const Simulation& sim, const std::vector<std::uint32_t>& indices);
 

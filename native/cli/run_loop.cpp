@@ -247,8 +247,8 @@ public:
     if (ended != "stop_at") scenario_pictures();
     write_run_json(wall_now(), sim_.step_count() - first_step, ended);
     if (!o_.quiet)
-      fmt::print("{} at t = {:.6g} s after {} steps; run folder {}\n",
-                 ended == "stop_at" ? "stopped (--stop-at)" : "finished", sim_.time(),
+      fmt::print("{} at t = {} s after {} steps; run folder {}\n",
+                 ended == "stop_at" ? "stopped (--stop-at)" : "finished", time_text(sim_.time()),
                  sim_.step_count(), dir_.string());
     return ended == "stop_at" ? exit_stopped : exit_completed;
   }
@@ -278,7 +278,7 @@ private:
         "{:.9g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},{},{:.6f}",
         sim_.time(), sim_.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
         e.total(), p.x, p.y, angular_momentum(sim_), coordination_number(sim_), contact_count(sim_),
-        packing_fraction(sim_, book_.fill.lo, packing_top()));
+        packing());
     for (const auto& [name, g] : book_.groups) {
       Vec2 f = force_on_particles(sim_, g.particles);
       for (const auto sidx : g.segments) f += sim_.world().walls[sidx].force;
@@ -286,6 +286,16 @@ private:
     }
     thermo_ << row << "\n";
     last_kinetic_ = e.kinetic();
+  }
+
+  // The packing fraction of the container: in the drum, of the whole drum (how full it is; the
+  // fill region is a square inside it); elsewhere of the fill region, up to a lid.
+  double packing() const {
+    if (s_.geometry.builder == "drum") {
+      const double r = s_.geometry.radius;
+      return disc_area_fraction(sim_, Vec2{r, r}, r);
+    }
+    return packing_fraction(sim_, book_.fill.lo, packing_top());
   }
 
   // The packing region's top corner: the fill region's, or below a pressing lid (the grain
@@ -463,11 +473,19 @@ private:
       printed_ = true;
     } else if (fraction >= next_report_) {
       next_report_ = std::floor(fraction * 10.0 + 1.0) / 10.0;
-      fmt::print(
-          "t = {:.5g} / {:.5g} s ({:.0f}%), {:.3g} steps/s, E_kin = {:.4e} J, ETA {:.0f} s\n",
-          sim_.time(), s_.simulation.duration, 100.0 * fraction, rate, last_kinetic_, eta);
+      fmt::print("t = {} / {} s ({:.0f}%), {:.3g} steps/s, E_kin = {:.4e} J, ETA {:.0f} s\n",
+                 time_text(sim_.time()), time_text(s_.simulation.duration), 100.0 * fraction, rate,
+                 last_kinetic_, eta);
       std::fflush(stdout);
     }
+  }
+
+  // A time as the thermo interval resolves it: 0.61 s, not the 0.60999 s of a step's rounding.
+  std::string time_text(double t) const {
+    const double interval = std::max(s_.output.thermo_interval, sim_.config().timestep);
+    const int decimals =
+        std::clamp(static_cast<int>(std::ceil(-std::log10(interval) - 1e-9)), 0, 9);
+    return fmt::format("{:.{}f}", t, decimals);
   }
 
   void finish_progress() {

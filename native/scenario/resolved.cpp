@@ -1,5 +1,10 @@
 // Scenario -> TOML, with every key written: the run folder's scenario.toml reruns the same run.
+#include <cctype>
+#include <charconv>
 #include <sstream>
+#include <string_view>
+
+#include <fmt/format.h>
 
 #include "scenario/load.hpp"
 #include "talus/material_keys.hpp"
@@ -18,6 +23,58 @@ toml::array list(const std::vector<double>& v) {
   toml::array a;
   for (const double x : v) a.push_back(x);
   return a;
+}
+
+// toml++ writes a float with 17 significant digits (0.10000000000000001 for 0.1): each float
+// outside a string is written again as the shortest text that reads back to the same double.
+std::string shortest_floats(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  char quote = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    if (quote) { // inside a string: copied as it is, escapes included
+      out += c;
+      if (c == '\\' && quote == '"' && i + 1 < text.size())
+        out += text[++i];
+      else if (c == quote)
+        quote = 0;
+      ++i;
+      continue;
+    }
+    if (c == '"' || c == '\'') quote = c;
+    if (c == '#') { // a comment runs to the end of the line
+      const std::size_t end = text.find('\n', i);
+      out.append(text, i, end == std::string::npos ? std::string::npos : end - i);
+      i = end == std::string::npos ? text.size() : end;
+      continue;
+    }
+    const bool starts_number =
+        (c == '-' || c == '+' || std::isdigit(static_cast<unsigned char>(c))) &&
+        (i == 0 || std::string_view(" [=,").find(text[i - 1]) != std::string_view::npos);
+    if (starts_number) {
+      std::size_t end = i + 1;
+      while (end < text.size() &&
+             std::string_view("0123456789.eE+-_").find(text[end]) != std::string_view::npos)
+        ++end;
+      const std::string token = text.substr(i, end - i);
+      double v = 0.0;
+      const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), v);
+      if (ec == std::errc() && ptr == token.data() + token.size() &&
+          token.find_first_of(".eE") != std::string::npos) {
+        std::string shortest = fmt::format("{}", v);
+        if (shortest.find_first_of(".eEn") == std::string::npos) shortest += ".0"; // still a float
+        out += shortest;
+      } else {
+        out += token;
+      }
+      i = end;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  return out;
 }
 
 } // namespace
@@ -156,7 +213,7 @@ std::string to_toml(const Scenario& s) {
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";
-  return out.str();
+  return shortest_floats(out.str());
 }
 
 } // namespace talus
