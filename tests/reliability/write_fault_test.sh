@@ -53,3 +53,12 @@ present=$(ls "$dir/snap/snapshots" | grep -c '^particles_')
   || { echo "resumed after the snapshot fault: another state"; exit 1; }
 cmp -s "$dir/snap/thermo.csv" "$dir/whole/thermo.csv" || { echo "thermo.csv differs after the fault"; exit 1; }
 echo "snapshot fault: cut back to $present snapshots, resumed to the same state"
+
+# 5. more particles than this process may allocate (ulimit -v): refused before allocating, with
+# the limit named, and no run folder left
+( ulimit -v 2000000; "$talus" run drum --quiet --set particles.count=3000000 --out "$dir/big" ) \
+  2> "$dir/err5.txt"
+[ $? -ne 0 ] || { echo "a run past ulimit -v was accepted"; exit 1; }
+grep -q "ulimit -v" "$dir/err5.txt" || { echo "ulimit -v, unclear message:"; cat "$dir/err5.txt"; exit 1; }
+[ ! -e "$dir/big" ] || { echo "a refused run left its folder"; exit 1; }
+echo "ulimit -v: $(head -c 200 "$dir/err5.txt")"
