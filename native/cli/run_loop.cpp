@@ -239,6 +239,17 @@ public:
       }
     }
     if (sim_.step_count() < total_ && ended == "duration") ended = "stop_at";
+    // the end's state is always recorded, though an interval may not divide the duration
+    if (ended != "stop_at") {
+      const std::uint64_t k = sim_.step_count();
+      if (k % thermo_every_ != 0) record_thermo();
+      if (!book_.tracked.empty() && k % track_every_ != 0) record_track();
+      // (a snapshot less than half an interval before the end stands for it: no near-twin frames)
+      if (snapshot_every_ && k % snapshot_every_ >= (snapshot_every_ + 1) / 2) {
+        write_snapshot();
+        if (out_.is_open()) out_ << thesis_out_block(sim_);
+      }
+    }
     checkpoint(wall_now());
     finish_progress();
     if (ended != "stop_at" && s_.output.picture) {
@@ -343,9 +354,11 @@ private:
   void record_track() {
     const Particles& p = sim_.world().particles;
     for (const auto i : book_.tracked)
-      track_ << fmt::format("{:.9g},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g}\n", sim_.time(),
-                            p.id[i], p.position[i].x, p.position[i].y, p.angle[i], p.velocity[i].x,
-                            p.velocity[i].y, p.angular_velocity[i]);
+      // every number as the shortest text that reads back to the engine's double: the tracks
+      // compare with another engine's to rounding
+      track_ << fmt::format("{},{},{},{},{},{},{},{}\n", sim_.time(), p.id[i], p.position[i].x,
+                            p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
+                            p.angular_velocity[i]);
   }
 
   void write_snapshot() {

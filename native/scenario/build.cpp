@@ -410,9 +410,13 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
       if (s.track.select == "smallest") return p.radius[i];
       return norm2(p.position[i] - s.track.at);
     };
-    std::stable_sort(free.begin(), free.end(), [&](auto a, auto b) { return key(a) < key(b); });
-    for (std::size_t k = 0; k < std::min(s.track.count, free.size()); ++k)
-      out.tracked.push_back(free[k]);
+    if (s.track.select != "all") // "all": every grain, in id order
+      std::stable_sort(free.begin(), free.end(), [&](auto a, auto b) { return key(a) < key(b); });
+    const std::size_t n =
+        s.track.select == "all" ? free.size() : std::min(s.track.count, free.size());
+    for (std::size_t k = 0; k < n; ++k)
+      if (std::find(out.tracked.begin(), out.tracked.end(), free[k]) == out.tracked.end())
+        out.tracked.push_back(free[k]); // a particle listed in ids too is tracked once
   }
   return out;
 }

@@ -236,7 +236,7 @@ DriverSection read_driver(TableReader& r) {
 void read_track(TableReader& r, TrackSection& t) {
   for (const double id : r.numbers("ids", 0.0, 4.0e9, "particle ids >= 0"))
     t.ids.push_back(static_cast<std::uint32_t>(id));
-  t.select = r.choice("select", t.select, {"none", "largest", "smallest", "nearest"});
+  t.select = r.choice("select", t.select, {"none", "largest", "smallest", "nearest", "all"});
   t.at = r.vec2("at", t.at);
   t.count = static_cast<std::size_t>(r.integer("count", 1, 1, 100000));
 }
@@ -380,7 +380,7 @@ Scenario load_scenario(std::string_view text, const std::string& file,
     if (parse_picture_request(p).tracks && !tracking)
       throw ScenarioError(file + ": key 'output.pictures': '" + p +
                           "' draws tracks, but [track] selects no particles; set track.ids or "
-                          "track.select (largest, smallest, nearest)");
+                          "track.select (largest, smallest, nearest, all)");
   return s;
 }
 

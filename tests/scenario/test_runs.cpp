@@ -6,6 +6,7 @@
 #include "cli/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
+#include "io/track_csv.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"
 
@@ -149,6 +150,27 @@ TEST(Resume, TruncatedCheckpointIsDetected) {
   EXPECT_THROW(decode_checkpoint(bytes.substr(0, bytes.size() - 9), "cut"), CheckpointError);
   EXPECT_THROW(decode_checkpoint("not a checkpoint", "text"), CheckpointError);
   fs::remove_all(dir);
+}
+
+// track.select = "all" follows every grain at full precision (the last track point is the final
+// state, bit for bit), and the end of a run is a snapshot even where the interval does not
+// divide the duration (unless one falls within half an interval of it).
+TEST(RunOutputs, EveryGrainTrackedExactlyAndTheEndIsASnapshot) {
+  const fs::path dir = fresh_dir("track_all");
+  const Scenario s = builtin("collisions", {"track.select=all", "output.snapshot_interval=0.08"});
+  ASSERT_EQ(run(s, dir), cli::exit_completed);
+  const auto tracks = read_tracks((dir / "track.csv").string());
+  ASSERT_EQ(tracks.size(), 4u);
+  const Checkpoint c = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "c");
+  const Particles& p = c.state.world.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const TrackPoint& last = tracks.at(p.id[i]).back();
+    EXPECT_EQ(last.position.x, p.position[i].x) << "id " << p.id[i];
+    EXPECT_EQ(last.velocity.y, p.velocity[i].y) << "id " << p.id[i];
+  }
+  // snapshots at 0 and 0.08 s, and the end at 0.15 s
+  EXPECT_TRUE(fs::exists(dir / "snapshots/particles_000002.vtp"));
+  EXPECT_FALSE(fs::exists(dir / "snapshots/particles_000003.vtp"));
 }
 
 TEST(RunFolder, NothingIsWrittenWhenTheScenarioIsBad) {
