@@ -2,6 +2,7 @@
 // Time integration of the free particles. Each scheme is split into the stage before the force
 // evaluation (predict) and the stage after it (correct); fixed and moved particles are skipped.
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,22 @@
 namespace talus {
 
 enum class Integrator { gear, verlet };
+
+/// The velocity velocity Verlet gives the contact laws while F(t + dt) is computed: the
+/// prediction v(t) + dt a(t) (Groot & Warren 1997, lambda = 1: damping lags by O(dt^2)), or the
+/// half-step v(t) + dt/2 a(t) of LAMMPS' fix nve/sphere (lambda = 1/2: it lags by O(dt)), with
+/// which the native engine reproduces LAMMPS to rounding. Positions and the velocities after a
+/// step are velocity Verlet's either way.
+enum class VerletVelocity : std::uint8_t { predicted, half_step };
+
+std::string_view to_string(VerletVelocity v);
+/// Parses "predicted" / "half_step"; throws InvalidArgument listing the allowed names otherwise.
+VerletVelocity parse_verlet_velocity(std::string_view name);
+/// The share of dt/2 a(t) the force-time velocity carries beyond the half kick: 1 (predicted) or
+/// 0 (half_step). Multiplying by 1 and adding 1 are exact, so the default's bits are unchanged.
+inline double verlet_lag(VerletVelocity v) {
+  return v == VerletVelocity::predicted ? 1.0 : 0.0;
+}
 
 std::string_view to_string(Integrator integrator);
 /// Parses "gear" / "verlet"; throws InvalidArgument listing the allowed names otherwise.
@@ -65,30 +82,31 @@ PassReport gear_correct_predict(Particles& p, double dt, Vec2 gravity, int threa
 
 /// Velocity Verlet's first half kick and drift for particle i (half = dt / 2), with the forces
 /// in `force` and no branch on the kind: fixed and moved particles have inv_mass = 0 (no kick),
-/// fixed ones are at rest and drivers overwrite moved ones. The velocity it leaves is the
-/// prediction v(t) + dt a(t) the contact laws see. Returns the squared displacement.
-inline double verlet_predict_one(Particles& p, std::size_t i, double dt, double half) {
+/// fixed ones are at rest and drivers overwrite moved ones. The velocity it leaves is the one the
+/// contact laws see: v(t) + (1 + lag) dt/2 a(t) (lag: verlet_lag). Returns the squared
+/// displacement.
+inline double verlet_predict_one(Particles& p, std::size_t i, double dt, double half, double lag) {
   const Vec2 kick = half * p.inv_mass[i] * p.force[i];
   const Vec2 displacement = dt * (p.velocity[i] + kick);
   p.position[i] += displacement;
-  p.velocity[i] += 2.0 * kick; // predicted v(t + dt)
+  p.velocity[i] += (1.0 + lag) * kick; // predicted v(t + dt), or the half step's
   const double spin_kick = half * p.inv_inertia[i] * p.torque[i];
   p.angle[i] += dt * (p.angular_velocity[i] + spin_kick);
-  p.angular_velocity[i] += 2.0 * spin_kick;
+  p.angular_velocity[i] += (1.0 + lag) * spin_kick;
   return norm2(displacement);
 }
 
 /// Velocity Verlet: half kick with the old forces, then drift; F(t) moves to force_previous (the
 /// force stage must then set every force). Returns the largest squared displacement.
-double verlet_predict(Particles& p, double dt, int threads);
+double verlet_predict(Particles& p, double dt, int threads, double lag);
 /// Velocity Verlet's second half kick for particle i, with the new forces (half = dt / 2): it
 /// replaces the predicted one. The force stage calls it for each particle as soon as that
 /// particle's force is complete (one pass less over memory), and inside Simulation::run
 /// verlet_predict_one for the next step right after it. Returns false if the particle's
 /// velocity came out non-finite (a non-finite position or force makes it so).
-inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
-  p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - p.force_previous[i]);
-  p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - p.torque_previous[i]);
+inline bool verlet_correct_one(Particles& p, std::size_t i, double half, double lag) {
+  p.velocity[i] += half * p.inv_mass[i] * (p.force[i] - lag * p.force_previous[i]);
+  p.angular_velocity[i] += half * p.inv_inertia[i] * (p.torque[i] - lag * p.torque_previous[i]);
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
 }
 
@@ -98,7 +116,7 @@ inline bool verlet_correct_one(Particles& p, std::size_t i, double half) {
 /// Clears a lane of `finite` for a non-finite corrected velocity; returns
 /// the squared displacements.
 inline Lanes verlet_correct_predict_two(Particles& p, std::size_t k, double dt, double half,
-                                        LaneMask& finite) {
+                                        double lag, LaneMask& finite) {
   // every load before the first store: the stores cannot change what is still to be read
   const Lanes hm = half * lanes_at(p.inv_mass.data() + k);
   const Lanes hi = half * lanes_at(p.inv_inertia.data() + k);
@@ -111,17 +129,18 @@ inline Lanes verlet_correct_predict_two(Particles& p, std::size_t k, double dt, 
   const Lanes w0 = lanes_at(p.angular_velocity.data() + k);
   const Lanes angle0 = lanes_at(p.angle.data() + k);
   // the correction
-  const Lanes vx = vx0 + hm * (fx - gx), vy = vy0 + hm * (fy - gy);
-  const Lanes w = w0 + hi * (torque - torque_previous);
+  const Lanes vx = vx0 + hm * (fx - lag * gx), vy = vy0 + hm * (fy - lag * gy);
+  const Lanes w = w0 + hi * (torque - lag * torque_previous);
   finite &= magnitude(vx + vy + w) <= std::numeric_limits<double>::max();
   // the prediction
   const Lanes kick_x = hm * fx, kick_y = hm * fy;
   const Lanes dx = dt * (vx + kick_x), dy = dt * (vy + kick_y);
   const Lanes spin_kick = hi * torque;
   store_components(p.position.data() + k, x0 + dx, y0 + dy);
-  store_components(p.velocity.data() + k, vx + 2.0 * kick_x, vy + 2.0 * kick_y);
+  const double ahead = 1.0 + lag;
+  store_components(p.velocity.data() + k, vx + ahead * kick_x, vy + ahead * kick_y);
   store_lanes(p.angle.data() + k, angle0 + dt * (w + spin_kick));
-  store_lanes(p.angular_velocity.data() + k, w + 2.0 * spin_kick);
+  store_lanes(p.angular_velocity.data() + k, w + ahead * spin_kick);
   return dx * dx + dy * dy;
 }
 

@@ -26,7 +26,7 @@ struct Checkpoint {
   std::string run_data; ///< opaque to the engine: the command line's own bookkeeping
 };
 
-inline constexpr std::uint32_t checkpoint_version = 3; // 3: sort_interval in the config
+inline constexpr std::uint32_t checkpoint_version = 4; // 4: verlet_velocity in the config
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

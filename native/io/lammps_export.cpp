@@ -218,6 +218,13 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
       "# integrates with velocity Verlet (the scenario: {}); compute erotate/sphere counts\n"
       "# 2/5 m r^2 for every atom (the native disks have 1/2 m r^2).\n",
       to_string(b.config.integrator));
+  if (b.config.integrator == Integrator::verlet)
+    out +=
+        b.config.verlet_velocity == VerletVelocity::half_step
+            ? "# The scenario's Verlet gives the dampers the half-step velocity, as LAMMPS does:\n"
+              "# the two engines agree to rounding until chaos parts them.\n"
+            : "# The scenario's Verlet gives the dampers the predicted velocity; with\n"
+              "# simulation.verlet_velocity = half_step it gives LAMMPS' half-step one.\n";
   return out;
 }
 

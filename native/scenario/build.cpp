@@ -300,6 +300,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   out.collision_time = shortest_collision_time(s, w.materials, r_min);
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
+  c.verlet_velocity = s.simulation.verlet_velocity;
   c.normal_law = s.simulation.normal_law;
   c.tangential_law = s.simulation.tangential_law;
   c.threads = s.simulation.threads;

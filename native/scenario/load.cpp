@@ -111,6 +111,8 @@ void read_simulation(TableReader& r, SimulationSection& s) {
   }
   s.timestep_factor = r.number("timestep_factor", s.timestep_factor, 1.0, 1e6, ">= 1");
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
+  s.verlet_velocity =
+      parse_verlet_velocity(r.choice("verlet_velocity", "predicted", {"predicted", "half_step"}));
   s.normal_law = parse_normal_law(r.choice("normal_law", "linear", NormalLaws::names));
   s.tangential_law =
       parse_tangential_law(r.choice("tangential_law", "cundall_strack", TangentialLaws::names));

@@ -34,10 +34,11 @@ PassReport ForceStage::compute(World& world, NeighbourList& list, const PairTabl
   return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
     switch (finish) {
     case Finish::verlet_correct:
-      return run<N, T>(world, list, pairs, refresh, VerletCorrect{p, 0.5 * dt}, threads);
+      return run<N, T>(world, list, pairs, refresh, VerletCorrect{p, 0.5 * dt, verlet_lag_},
+                       threads);
     case Finish::verlet_correct_predict:
       return run<N, T>(world, list, pairs, refresh,
-                       VerletCorrectPredict{p, dt, 0.5 * dt, world.gravity}, threads);
+                       VerletCorrectPredict{p, dt, 0.5 * dt, verlet_lag_, world.gravity}, threads);
     case Finish::nothing:
       break;
     }

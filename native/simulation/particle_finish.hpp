@@ -21,11 +21,11 @@ struct NothingMore {
 // velocity Verlet's correction (single steps)
 struct VerletCorrect {
   Particles& p;
-  double half;
+  double half, lag;
   [[gnu::noinline]] PassReport range(std::size_t first, std::size_t last) const {
-    const double h = half; // a local: the stores below could otherwise change the member
+    const double h = half, c = lag; // locals: the stores below could otherwise change the members
     bool finite = true;
-    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, h) && finite;
+    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, h, c) && finite;
     return {finite, 0.0};
   }
 };
@@ -37,17 +37,17 @@ struct VerletCorrect {
 // systems).
 struct VerletCorrectPredict {
   Particles& p;
-  double dt, half;
+  double dt, half, lag;
   Vec2 gravity;
   [[gnu::noinline]] PassReport range(std::size_t first, std::size_t last) const {
-    const double step = dt, h = half;
+    const double step = dt, h = half, c = lag;
     const Vec2 g = gravity;
     // two particles at a time, one per lane
     LaneMask finite_lanes = {-1, -1};
     Lanes far{0.0, 0.0};
     std::size_t k = first;
     for (; k + 1 < last; k += 2) {
-      const Lanes d2 = verlet_correct_predict_two(p, k, step, h, finite_lanes);
+      const Lanes d2 = verlet_correct_predict_two(p, k, step, h, c, finite_lanes);
       far = select(d2 > far, d2, far);
       start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
       start_forces(p, k + 1, g, p.force_previous.data(), p.torque_previous.data());
@@ -55,8 +55,8 @@ struct VerletCorrectPredict {
     bool finite = finite_lanes[0] != 0 && finite_lanes[1] != 0;
     double farthest2 = std::max(far[0], far[1]);
     for (; k < last; ++k) {
-      finite = verlet_correct_one(p, k, h) && finite;
-      farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h));
+      finite = verlet_correct_one(p, k, h, c) && finite;
+      farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h, c));
       start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
     }
     return {finite, farthest2};

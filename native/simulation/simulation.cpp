@@ -46,8 +46,9 @@ Simulation Simulation::restore(SimulationState state, SimulationConfig config) {
 
 Simulation::Simulation(SimulationState state, SimulationConfig config, bool restoring)
     : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
-      forces_(config.normal_law, config.tangential_law, config.timestep), time_(state.time),
-      steps_(state.steps) {
+      forces_(config.normal_law, config.tangential_law, config.timestep,
+              verlet_lag(config.verlet_velocity)),
+      time_(state.time), steps_(state.steps) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
@@ -103,8 +104,9 @@ bool Simulation::predict() {
   if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
   Particles& p = world_.particles;
   const double dt = config_.timestep;
-  return drifted(config_.integrator == Integrator::verlet ? verlet_predict(p, dt, threads_)
-                                                          : gear_predict(p, dt, threads_));
+  return drifted(config_.integrator == Integrator::verlet
+                     ? verlet_predict(p, dt, threads_, verlet_lag(config_.verlet_velocity))
+                     : gear_predict(p, dt, threads_));
 }
 
 void Simulation::move_bodies(double t) {

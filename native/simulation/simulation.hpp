@@ -20,6 +20,7 @@ struct SimulationConfig {
   Integrator integrator = Integrator::gear;
   NormalLaw normal_law = law_id<LinearSpringDashpot>;
   TangentialLaw tangential_law = law_id<CundallStrack>;
+  VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< velocity Verlet's damper velocity
   double skin = 0.0; ///< m; 0: automatic, chosen at every build (neighbours/skin.hpp)
   int threads = 0;   ///< 0: all cores (OpenMP default)
   /// Fewer particles than this per thread is not worth the threads' overhead: small systems

@@ -58,7 +58,8 @@ inline void set_up(LammpsInstance& l, const std::string& laws, const Material& m
 
 // The same disks in the native engine: the forces its first force stage computes.
 inline Simulation native(const std::string& normal, const std::string& tangential,
-                         const Material& m, const std::vector<Disk>& disks, double dt) {
+                         const Material& m, const std::vector<Disk>& disks, double dt,
+                         VerletVelocity velocity = VerletVelocity::predicted) {
   World w;
   w.materials = {m};
   for (const Disk& d : disks)
@@ -70,6 +71,7 @@ inline Simulation native(const std::string& normal, const std::string& tangentia
   SimulationConfig c;
   c.timestep = dt;
   c.integrator = Integrator::verlet;
+  c.verlet_velocity = velocity;
   c.normal_law = parse_normal_law(normal);
   c.tangential_law = parse_tangential_law(tangential);
   return Simulation(std::move(w), c);

@@ -78,7 +78,7 @@ TEST(ListReuse, EveryPassReportsHowFarItMovedTheFarthestGrain) {
     const double dt = s.config().timestep;
     Particles p = start;
     if (integrator == Integrator::verlet) {
-      const double moved = std::sqrt(verlet_predict(p, dt, 1));
+      const double moved = std::sqrt(verlet_predict(p, dt, 1, 1.0));
       EXPECT_GT(moved, 1e-8);
       EXPECT_NEAR(moved, farthest(start, p), rounding);
       continue;
