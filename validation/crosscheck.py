@@ -1,0 +1,283 @@
+#!/usr/bin/python3
+"""Cross-check: the same case in the native engine and in LAMMPS, trajectories diffed.
+
+    /usr/bin/python3 validation/crosscheck.py [CASE ...] [--quick] [--build build] [--out DIR]
+
+A case is a folder of inputs/validation/ with the native scenario.toml and tolerances.toml (the
+bound of each comparison, with its reason). Each case runs in:
+
+- the native engine with velocity Verlet and LAMMPS' damper velocity (verlet_velocity =
+  half_step), with velocity Verlet and the native default (predicted), and with Gear;
+- LAMMPS with pair_style granthesis (talus-lmp), on 1 rank and on 2, from the deck that
+  `talus export lammps` writes of the same scenario.
+
+Every grain is tracked at full precision in both (track.csv, the LAMMPS dump); the trajectories
+are compared by id at the common times: the largest and the RMS position difference, in mean
+radii, against time. The summary (validation/results/index.html, opening offline) and a chart of
+the differences per case go to --out; a line per comparison is printed as it goes, and the exit
+status is 1 if any comparison fails its bound.
+"""
+import argparse
+import html
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+import tomllib
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CASES = os.path.join(ROOT, "inputs", "validation")
+# the cases the default test suite runs (seconds each on 2 cores)
+QUICK = {"two_disks_linear_headon", "two_disks_linear_oblique", "two_disks_hertz_headon",
+         "two_disks_hertz_oblique", "collisions", "settling_1000"}
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMP_NUM_THREADS="1")
+
+
+def run(command, cwd=None):
+    """Runs a command; returns its wall time, or exits with what it printed."""
+    start = time.monotonic()
+    done = subprocess.run(command, cwd=cwd, env=ENV, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"{' '.join(command)} failed ({done.returncode}):\n{done.stdout[-3000:]}"
+                 f"\n{done.stderr[-3000:]}")
+    return time.monotonic() - start
+
+
+def read_track(path):
+    """{step index: {id: (x, y, vx, vy, omega)}} from a native track.csv (ids as LAMMPS': +1)."""
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    frames = {}
+    for row in np.atleast_1d(data):
+        frames.setdefault(float(row["time"]), {})[int(row["id"]) + 1] = (
+            row["x"], row["y"], row["vx"], row["vy"], row["omega"])
+    return frames
+
+
+def read_dump(path, dt):
+    """The same from a LAMMPS dump of `id type radius mass x y vx vy omegaz`, keyed by time."""
+    frames = {}
+    with open(path) as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        step, count = int(lines[k + 1]), int(lines[k + 3])
+        columns = lines[k + 8].split()[2:]
+        at = {c: i for i, c in enumerate(columns)}
+        atoms = {}
+        for line in lines[k + 9:k + 9 + count]:
+            v = line.split()
+            atoms[int(v[at["id"]])] = tuple(float(v[at[c]]) for c in ("x", "y", "vx", "vy",
+                                                                      "omegaz"))
+        frames[step * dt] = atoms
+        k += 9 + count
+    return frames
+
+
+def align(a, b, dt):
+    """The frames of a and b at common times (to within a hundredth of a step)."""
+    keys_b = {round(t / dt): t for t in b}
+    pairs = []
+    for t in sorted(a):
+        s = round(t / dt)
+        if s in keys_b:
+            pairs.append((s * dt, a[t], b[keys_b[s]]))
+    return pairs
+
+
+def differences(a, b, dt, radius):
+    """Times, the largest and the RMS position difference (mean radii) of trajectories a and b."""
+    times, largest, rms = [], [], []
+    for t, fa, fb in align(a, b, dt):
+        ids = sorted(set(fa) & set(fb))
+        if not ids:
+            continue
+        d = np.array([np.hypot(fa[i][0] - fb[i][0], fa[i][1] - fb[i][1]) for i in ids]) / radius
+        times.append(t)
+        largest.append(d.max())
+        rms.append(np.sqrt(np.mean(d * d)))
+    return np.array(times), np.array(largest), np.array(rms)
+
+
+class Case:
+    def __init__(self, name, out, build):
+        self.name, self.folder = name, os.path.join(CASES, name)
+        self.out = os.path.join(out, name)
+        self.talus = os.path.join(build, "native", "talus")
+        self.lmp = os.path.join(build, "lammps-package", "talus-lmp")
+        with open(os.path.join(self.folder, "tolerances.toml"), "rb") as f:
+            self.tolerances = tomllib.load(f)
+        # the scenario: the case's own, or one it names (a built-in experiment's)
+        self.scenario_file = os.path.normpath(os.path.join(
+            self.folder, self.tolerances.get("scenario", "scenario.toml")))
+        with open(self.scenario_file, "rb") as f:
+            self.scenario = tomllib.load(f)
+        self.chaotic = self.tolerances["trajectory"].get("chaotic", False)
+        self.rows = []    # (comparison, value, bound, passed, note)
+        self.speeds = {}  # engine: wall seconds per particle-step
+
+    def native(self, label, sets):
+        folder = os.path.join(self.out, label)
+        shutil.rmtree(folder, ignore_errors=True)
+        command = [self.talus, "run", self.scenario_file, "--out", folder,
+                   "--quiet", "--threads", "1", "--set", "track.select=all"]
+        for s in sets:
+            command += ["--set", s]
+        wall = run(command)
+        return read_track(os.path.join(folder, "track.csv")), wall, folder
+
+    def lammps(self, ranks, deck_dir, every):
+        folder = os.path.join(self.out, f"lammps-{ranks}")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(deck_dir, folder)
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks), self.lmp, "-in",
+                   f"in.{self.name}", "-var", "snapshot_every", str(every), "-log", "log.lammps",
+                   "-screen", "none"]
+        wall = run(command, cwd=folder)
+        return read_dump(os.path.join(folder, f"dump.{self.name}.lammpstrj"), self.dt), wall
+
+    def compare(self, what, a, b, bound_key, kind):
+        t, largest, rms = differences(a, b, self.dt, self.radius)
+        bound = self.tolerances["trajectory"][bound_key]
+        worst = float(largest.max()) if len(largest) else float("nan")
+        if self.chaotic:
+            # many grains: rounding grows exponentially; the pass rule is how long the engines
+            # stay within the bound, and the report says when they part by 1% of a radius
+            apart = t[largest > bound]
+            since = float(apart[0]) if len(apart) else float(t[-1])
+            need = self.tolerances["trajectory"].get(f"{kind}_until", 0.0)
+            passed = since >= need
+            over = t[largest > 0.01]
+            note = (f"within {bound:g} radii until t = {since:.4g} s (needed: {need:g} s); "
+                    + (f"0.01 radii at t = {over[0]:.4g} s" if len(over) else
+                       "below 0.01 radii throughout"))
+        else:
+            passed = bool(len(largest)) and worst <= bound
+            note = f"over {len(t)} times to t = {t[-1]:.4g} s" if len(t) else "no common times"
+        self.rows.append((what, worst, bound, passed, note))
+        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: {what}: largest {worst:.3e} radii, "
+              f"RMS at the end {rms[-1] if len(rms) else float('nan'):.3e} (bound {bound:g}; "
+              f"{note})")
+        return t, largest
+
+    def run_all(self, ranks):
+        os.makedirs(self.out, exist_ok=True)
+        half, wall_h, folder = self.native("native-verlet-half_step",
+                                           ["simulation.integrator=verlet",
+                                            "simulation.verlet_velocity=half_step"])
+        with open(os.path.join(folder, "run.json")) as f:
+            info = json.load(f)
+        self.dt, steps, n = info["timestep"], info["steps"], info["particles"]
+        radii = [p["radius"] for p in self.scenario["particles"].get("list", [])]
+        self.radius = float(np.mean(radii)) if radii else self.scenario["particles"]["size"][
+            "mean_radius"]
+        predicted, wall_p, _ = self.native("native-verlet-predicted",
+                                           ["simulation.integrator=verlet",
+                                            "simulation.verlet_velocity=predicted"])
+        gear, wall_g, _ = self.native("native-gear", ["simulation.integrator=gear"])
+        deck = os.path.join(self.out, "deck")
+        shutil.rmtree(deck, ignore_errors=True)
+        run([self.talus, "export", "lammps", self.scenario_file, deck,
+             "--quiet", "--set", "simulation.integrator=verlet", "--set",
+             "simulation.verlet_velocity=half_step"])
+        every = max(1, round(self.scenario["output"]["track_interval"] / self.dt))
+        curves = {}
+        lmp1, wall_l1 = self.lammps(1, deck, every)
+        curves["Verlet (half step) - LAMMPS"] = self.compare(
+            "native Verlet (half_step) against LAMMPS granthesis, 1 rank", half, lmp1,
+            "rounding", "rounding")
+        if ranks > 1:
+            lmp2, _ = self.lammps(ranks, deck, every)
+            curves[f"LAMMPS 1 - {ranks} ranks"] = self.compare(
+                f"LAMMPS on 1 rank against {ranks}", lmp1, lmp2, "rounding", "rounding")
+        curves["Verlet: predicted - half step"] = self.compare(
+            "native Verlet, predicted against half_step damper velocity", predicted, half,
+            "integrators", "integrators")
+        curves["Gear - Verlet"] = self.compare("native Gear against Verlet (half_step)", gear,
+                                               half, "integrators", "integrators")
+        for engine, wall in (("native Verlet", wall_h), ("native Gear", wall_g),
+                             ("LAMMPS granthesis", wall_l1)):
+            self.speeds[engine] = wall / max(1, steps * n)
+        self.chart(curves)
+        return all(r[3] for r in self.rows)
+
+    def chart(self, curves):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4))
+        for label, (t, largest) in curves.items():
+            ax.semilogy(t, np.maximum(largest, 1e-18), label=label)
+        ax.set_xlabel("time (s)")
+        ax.set_ylabel("largest position difference (mean radii)")
+        ax.set_title(self.name)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "position_difference.png"), dpi=110)
+        plt.close(fig)
+
+
+def summary(cases, out):
+    rows = []
+    for c in cases:
+        for what, value, bound, passed, note in c.rows:
+            rows.append(f"<tr><td>{html.escape(c.name)}</td><td>{html.escape(what)}</td>"
+                        f"<td>{value:.3e}</td><td>{bound:g}</td><td>{html.escape(note)}</td>"
+                        f"<td class={'ok' if passed else 'fail'}>{'pass' if passed else 'FAIL'}"
+                        f"</td></tr>")
+        speeds = ", ".join(f"{k}: {v * 1e9:.0f} ns" for k, v in c.speeds.items())
+        rows.append(f"<tr><td colspan=6>{html.escape(c.name)}: wall time per particle-step "
+                    f"(whole runs, start-up included): {html.escape(speeds)}<br>"
+                    f"<img src='{html.escape(c.name)}/position_difference.png'></td></tr>")
+    page = ("<!doctype html><meta charset=utf-8><title>talus cross-check</title><style>"
+            "body{font-family:sans-serif}td,th{padding:3px 8px;border-bottom:1px solid #ccc}"
+            ".ok{color:green}.fail{color:red;font-weight:bold}</style>"
+            "<h1>talus against LAMMPS: the cross-check</h1>"
+            "<p>Position differences in mean radii; bounds from each case's tolerances.toml."
+            "</p><table><tr><th>case</th><th>comparison</th><th>largest</th><th>bound</th>"
+            "<th></th><th></th></tr>" + "".join(rows) + "</table>")
+    with open(os.path.join(out, "index.html"), "w") as f:
+        f.write(page)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("cases", nargs="*", help="case folders of inputs/validation (all if none)")
+    parser.add_argument("--quick", action="store_true",
+                        help="the quick cases only (those of the default test suite)")
+    parser.add_argument("--ranks", type=int, default=2, help="LAMMPS' second run's ranks")
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"), help="the build folder")
+    parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results"))
+    args = parser.parse_args()
+    names = args.cases or sorted(os.listdir(CASES))
+    if args.quick:
+        names = [n for n in names if n in QUICK]
+    unknown = [n for n in names if not os.path.isdir(os.path.join(CASES, n))]
+    if unknown:
+        sys.exit(f"no case {', '.join(unknown)} in {CASES}; cases: {', '.join(sorted(os.listdir(CASES)))}")
+    if shutil.which("mpirun") is None:
+        print("mpirun not found (Debian package openmpi-bin): skipped")
+        sys.exit(77)
+    for tool in ("native/talus", "lammps-package/talus-lmp"):
+        if not os.path.exists(os.path.join(args.build, tool)):
+            print(f"{os.path.join(args.build, tool)} not built (the LAMMPS package needs Debian's "
+                  "lammps and liblammps-dev): skipped")
+            sys.exit(77)
+    os.makedirs(args.out, exist_ok=True)
+    cases, good = [], True
+    for name in names:
+        c = Case(name, args.out, args.build)
+        good = c.run_all(args.ranks) and good
+        cases.append(c)
+    summary(cases, args.out)
+    print(f"summary: {os.path.join(args.out, 'index.html')}")
+    sys.exit(0 if good else 1)
+
+
+if __name__ == "__main__":
+    main()
