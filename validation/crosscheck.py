@@ -78,6 +78,33 @@ def read_dump(path, dt):
     return frames
 
 
+def read_lammps_thermo(path):
+    """The thermo table of a LAMMPS log (the last run's), as a dict of arrays by column."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.split()[:2] == ["Step", "Time"])
+    names = lines[start].split()
+    rows = []
+    for line in lines[start + 1:]:
+        words = line.split()
+        if len(words) != len(names):
+            break
+        try:
+            rows.append([float(w) for w in words])
+        except ValueError:
+            break
+    table = np.array(rows)
+    return {n: table[:, k] for k, n in enumerate(names)}
+
+
+def block_mean(t, x, lo, hi, blocks):
+    """The mean of x over t in [lo, hi] and its standard error from `blocks` block averages
+    (blocks long against the correlation time keep the error honest)."""
+    x = np.asarray(x)[(np.asarray(t) >= lo) & (np.asarray(t) <= hi)]
+    means = np.array([b.mean() for b in np.array_split(x, blocks)])
+    return float(means.mean()), float(means.std(ddof=1) / np.sqrt(blocks))
+
+
 def align(a, b, dt):
     """The frames of a and b at common times (to within a hundredth of a step)."""
     keys_b = {round(t / dt): t for t in b}
@@ -119,6 +146,8 @@ class Case:
         self.chaotic = self.tolerances["trajectory"].get("chaotic", False)
         self.rows = []    # (comparison, value, bound, passed, note)
         self.speeds = {}  # engine: wall seconds per particle-step
+        self.lammps_logs = {}  # ranks: log.lammps
+        self.native_thermo = {}  # label: thermo.csv
 
     def native(self, label, sets):
         folder = os.path.join(self.out, label)
@@ -128,6 +157,7 @@ class Case:
         for s in sets:
             command += ["--set", s]
         wall = run(command)
+        self.native_thermo[label] = os.path.join(folder, "thermo.csv")
         return read_track(os.path.join(folder, "track.csv")), wall, folder
 
     def lammps(self, ranks, deck_dir, every):
@@ -138,6 +168,7 @@ class Case:
                    f"in.{self.name}", "-var", "snapshot_every", str(every), "-log", "log.lammps",
                    "-screen", "none"]
         wall = run(command, cwd=folder)
+        self.lammps_logs[ranks] = os.path.join(folder, "log.lammps")
         return read_dump(os.path.join(folder, f"dump.{self.name}.lammpstrj"), self.dt), wall
 
     def compare(self, what, a, b, bound_key, kind):
@@ -199,11 +230,51 @@ class Case:
             "integrators", "integrators")
         curves["Gear - Verlet"] = self.compare("native Gear against Verlet (half_step)", gear,
                                                half, "integrators", "integrators")
+        if "statistics" in self.tolerances:
+            self.statistics()
         for engine, wall in (("native Verlet", wall_h), ("native Gear", wall_g),
                              ("LAMMPS granthesis", wall_l1)):
             self.speeds[engine] = wall / max(1, steps * n)
         self.chart(curves)
         return all(r[3] for r in self.rows)
+
+    def statistics(self):
+        """Time averages over the case's window, each with its standard error from block
+        averages, of the native engine's default (Gear) and LAMMPS: the difference passes when
+        its z-score (difference over the combined error) is below the bound."""
+        spec = self.tolerances["statistics"]
+        lo, hi = spec["window"]
+        native = np.genfromtxt(self.native_thermo["native-gear"], delimiter=",", names=True)
+        lammps = read_lammps_thermo(self.lammps_logs[1])
+        self.stats = []
+        for quantity, column in spec["quantities"].items():
+            a = block_mean(native["time"], native[quantity], lo, hi, spec["blocks"])
+            b = block_mean(lammps["Time"], lammps[column], lo, hi, spec["blocks"])
+            z = abs(a[0] - b[0]) / max(np.hypot(a[1], b[1]), 1e-300)
+            passed = z <= spec["z_max"]
+            note = (f"native Gear {a[0]:.4g} +- {a[1]:.2g}, LAMMPS {b[0]:.4g} +- {b[1]:.2g} "
+                    f"over t in [{lo:g}, {hi:g}] s, {spec['blocks']} blocks")
+            self.rows.append((f"{quantity}: z-score, native Gear against LAMMPS", z,
+                              spec["z_max"], passed, note))
+            self.stats.append((quantity, a, b))
+            print(f"{'ok  ' if passed else 'FAIL'} {self.name}: {quantity}: z = {z:.2f} (bound "
+                  f"{spec['z_max']:g}; {note})")
+        self.statistics_chart()
+
+    def statistics_chart(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, len(self.stats), figsize=(3.5 * len(self.stats), 3.5),
+                                 squeeze=False)
+        for ax, (quantity, a, b) in zip(axes[0], self.stats):
+            ax.errorbar([0, 1], [a[0], b[0]], yerr=[a[1], b[1]], fmt="o", capsize=6)
+            ax.set_xticks([0, 1], ["native (Gear)", "LAMMPS"])
+            ax.set_xlim(-0.5, 1.5)
+            ax.set_title(quantity, fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "statistics.png"), dpi=110)
+        plt.close(fig)
 
     def chart(self, curves):
         import matplotlib
@@ -232,7 +303,9 @@ def summary(cases, out):
         speeds = ", ".join(f"{k}: {v * 1e9:.0f} ns" for k, v in c.speeds.items())
         rows.append(f"<tr><td colspan=6>{html.escape(c.name)}: wall time per particle-step "
                     f"(whole runs, start-up included): {html.escape(speeds)}<br>"
-                    f"<img src='{html.escape(c.name)}/position_difference.png'></td></tr>")
+                    f"<img src='{html.escape(c.name)}/position_difference.png'>"
+                    + (f"<img src='{html.escape(c.name)}/statistics.png'>"
+                       if "statistics" in c.tolerances else "") + "</td></tr>")
     page = ("<!doctype html><meta charset=utf-8><title>talus cross-check</title><style>"
             "body{font-family:sans-serif}td,th{padding:3px 8px;border-bottom:1px solid #ccc}"
             ".ok{color:green}.fail{color:red;font-weight:bold}</style>"
