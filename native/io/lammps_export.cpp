@@ -293,8 +293,12 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
   out += frost_section(s, b, thermo) + "\n";
   out += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\ntimestep {}\n\n",
                      exact(b.world.particles.min_radius()), exact(dt));
-  out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n";
-  out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation pe press{}\n",
+  // the coordination number as the native engine counts it: contacts per grain, with walls
+  out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n"
+         "compute contacts grains contact/atom\ncompute coordination grains reduce ave "
+         "c_contacts\n";
+  out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation c_coordination "
+                     "pe press{}\n",
                      s.frost.model == "uniform" ? " f_frost" : "");
   out += fmt::format("thermo {}\nthermo_modify norm no\n", thermo);
   if (s.output.snapshot_interval > 0.0)
