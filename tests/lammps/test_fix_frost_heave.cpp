@@ -69,7 +69,7 @@ TEST(FixFrostHeave, InitialWaitCountsTheIntervalFromTheStart) {
   LammpsInstance l;
   set_up(l, "fix frost all frost/heave epsilon 1e-12 factor 1.5 table 0.01 interval 5e-5 "
             "initial_wait yes");
-  l.command("run 49"); // 49 us < 50 us: no heave yet, though at rest
+  l.command("run 49"); // 49 steps, short of the interval of 50: no heave yet, though at rest
   EXPECT_EQ(heaves(l), 0.0);
   EXPECT_EQ(l.position(1)[1], heights[0]);
   l.command("run 2"); // 50 x 1e-6 may round below 5e-5: the heave comes at step 50 or 51
