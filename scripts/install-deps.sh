@@ -8,6 +8,7 @@ packages=(
   libfmt-dev libcli11-dev   # formatting, command line
   libcairo2-dev pkg-config  # pictures
   libtomlplusplus-dev       # scenario files
+  nlohmann-json3-dev        # sweep plans and indexes (JSON)
   python3-vtk9              # tests: VTK reads the snapshots as ParaView does
   ffmpeg                    # talus movie
   python3-matplotlib        # talus analyze: charts

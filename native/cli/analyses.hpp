@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "post/discharge.hpp"
 #include "scenario/scenario.hpp"
 
 namespace talus::cli {
@@ -37,11 +38,12 @@ private:
 };
 
 struct AnalysisOptions {
-  std::string frames = "all";                    ///< forces: all or last
-  std::optional<std::pair<double, double>> band; ///< profiles: y0, y1 in m
-  std::size_t bins = 0;                          ///< profiles: bins across (0: automatic)
-  double from = 0.0;                             ///< s: ignore snapshots before this
-  double cell = 0.0;                             ///< speed map cell, m (0: automatic)
+  std::string frames = "all";                      ///< forces: all or last
+  std::optional<std::pair<double, double>> band;   ///< profiles: y0, y1 in m
+  std::size_t bins = 0;                            ///< profiles: bins across (0: automatic)
+  double from = 0.0;                               ///< s: ignore snapshots before this
+  double cell = 0.0;                               ///< speed map cell, m (0: automatic)
+  std::optional<std::pair<double, double>> window; ///< discharge: t0, t1 in s (none: steady)
 };
 
 /// What one analysis gives the report: its charts and key numbers.
@@ -71,6 +73,14 @@ Section analyze_thermo(RunData& run);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);
 Section analyze_profiles(RunData& run, const AnalysisOptions& o);
 Section analyze_tracks(RunData& run);
+
+/// The discharge through the run's orifice (post/discharge.hpp); throws InvalidArgument when the
+/// container has none.
+Discharge run_discharge(RunData& run, const AnalysisOptions& o);
+/// One line: the rate with its error and window, or why there is none.
+std::string discharge_text(const Discharge& q);
+/// discharge.csv and discharge.json in `out`.
+void write_discharge(const std::filesystem::path& out, const Discharge& q);
 Section analyze_segregation(RunData& run, const AnalysisOptions& o);
 Section analyze_frost(RunData& run);
 

@@ -1,5 +1,7 @@
 // `talus analyze DIR [WHAT]`: the thesis' analyses of a run (cli/analyses.hpp); with no WHAT,
 // every analysis that applies, and report.html.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -7,7 +9,11 @@
 #include <fmt/core.h>
 
 #include "cli/analyses.hpp"
+#include "cli/analyze_sweep.hpp"
 #include "cli/commands.hpp"
+#include "cli/sweep.hpp"
+#include "scenario/geometry.hpp"
+#include "scenario/load.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;
@@ -16,13 +22,16 @@ namespace talus::cli {
 
 namespace {
 
-std::pair<double, double> parse_band(const std::string& text) {
+// "A,B" with B > A, for --band (m) and --window (s).
+std::pair<double, double> parse_pair(const std::string& option, const std::string& text,
+                                     const std::string& expected) {
   std::istringstream in(text);
-  double y0 = 0, y1 = 0;
+  double a = 0, b = 0;
   char comma = 0;
-  if (!(in >> y0 >> comma >> y1) || comma != ',' || !(in >> std::ws).eof() || !(y1 > y0))
-    throw InvalidArgument("--band '" + text + "': expected Y0,Y1 in m with Y1 > Y0, e.g. 0,0.1");
-  return {y0, y1};
+  if (!(in >> a >> comma >> b) || comma != ',' || !(in >> std::ws).eof() || !(b > a) ||
+      !std::isfinite(a) || !std::isfinite(b))
+    throw InvalidArgument(option + " '" + text + "': expected " + expected);
+  return {a, b};
 }
 
 // Every analysis that applies to the run; one that cannot run says why and the others go on.
@@ -53,11 +62,31 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
   return out;
 }
 
+// A sweep folder: the discharge and its Beverloo fit, or one result of the index; "all" gives
+// the discharge where the container has an orifice, and the final state's main numbers.
+void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
+  if (what == "discharge") return analyze_sweep_discharge(dir, o);
+  if (what != "all") return analyze_sweep_result(dir, what);
+  const SweepPlan plan = read_plan(dir);
+  if (plan.runs.empty()) return;
+  const Scenario s =
+      load_scenario_file((dir / "scenarios" / (plan.runs[0].name + ".toml")).string());
+  if (has_orifice(s.geometry)) analyze_sweep_discharge(dir, o);
+  for (const char* r :
+       {"final_coordination", "final_packing_fraction", "final_kinetic_translational"}) {
+    try {
+      analyze_sweep_result(dir, r);
+    } catch (const InvalidArgument& e) {
+      fmt::print("{}: skipped ({})\n", r, e.what());
+    }
+  }
+}
+
 } // namespace
 
 void add_analyze_command(CLI::App& app) {
   struct Options {
-    std::string dir, what = "all", band;
+    std::string dir, what = "all", band, window;
     AnalysisOptions a;
   };
   auto o = std::make_shared<Options>();
@@ -67,12 +96,14 @@ void add_analyze_command(CLI::App& app) {
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
       "speed map, discharge), tracks, segregation, frost; with no WHAT every one that applies, "
       "and report.html");
-  cmd->add_option("dir", o->dir, "the run folder")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("dir", o->dir, "the run folder or sweep folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
-                  "thermo, forces, profiles, tracks, segregation, frost, or all (with report.html)")
-      ->capture_default_str()
-      ->check(
-          CLI::IsMember({"thermo", "forces", "profiles", "tracks", "segregation", "frost", "all"}));
+                  "thermo, forces, profiles, tracks, segregation, frost, or all (with "
+                  "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
+                  "result of its index.csv")
+      ->capture_default_str();
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "last"}));
@@ -82,6 +113,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--band", o->band,
                   "profiles: Y0,Y1 in m (default: just above an orifice, else the middle of the "
                   "bed)");
+  cmd->add_option("--window", o->window,
+                  "profiles: T0,T1 in s, the discharge window to fit (default: the steady part, "
+                  "found from the data)");
   cmd->add_option("--bins", o->a.bins, "profiles, segregation: bins across x (0: automatic)")
       ->capture_default_str()
       ->check(CLI::Range(0, 10000));
@@ -89,9 +123,22 @@ void add_analyze_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->callback([o] {
-    if (!o->band.empty()) o->a.band = parse_band(o->band);
-    RunData run{fs::path(o->dir)};
+    if (!o->band.empty())
+      o->a.band = parse_pair("--band", o->band, "Y0,Y1 in m with Y1 > Y0, e.g. 0,0.1");
+    if (!o->window.empty())
+      o->a.window = parse_pair("--window", o->window, "T0,T1 in s with T1 > T0, e.g. 0.5,2");
     const std::string& w = o->what;
+    if (is_sweep_folder(o->dir)) {
+      analyze_sweep(o->dir, w, o->a);
+      return;
+    }
+    const std::vector<std::string> allowed{"thermo",      "forces", "profiles", "tracks",
+                                           "segregation", "frost",  "all"};
+    if (std::find(allowed.begin(), allowed.end(), w) == allowed.end())
+      throw InvalidArgument("analyze: '" + w +
+                            "' is not an analysis of a run folder; allowed: "
+                            "thermo, forces, profiles, tracks, segregation, frost, all");
+    RunData run{fs::path(o->dir)};
     if (w == "all") {
       const auto sections = analyze_all(run, o->a);
       fmt::print("report: {}\n", write_report(run, sections).string());

@@ -9,7 +9,9 @@
 #include "cli/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "io/track_csv.hpp"
+#include "post/discharge.hpp"
 #include "post/flow_profiles.hpp"
+#include "scenario/geometry.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;
@@ -19,7 +21,7 @@ namespace talus::cli {
 namespace {
 
 bool has_orifice(const Scenario& s) {
-  return s.geometry.builder == "hourglass" || s.geometry.builder == "hopper";
+  return talus::has_orifice(s.geometry);
 }
 
 // Grows r to take in the free grains of a frame.
@@ -38,6 +40,51 @@ constexpr Rect empty_rect{
     {std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()}};
 
 } // namespace
+
+Discharge run_discharge(RunData& run, const AnalysisOptions& o) {
+  const GeometrySection& g = run.scenario().geometry;
+  if (!talus::has_orifice(g))
+    throw InvalidArgument("'" + run.dir().string() + "' has no orifice (builder '" + g.builder +
+                          "'): a discharge needs a hopper, an hourglass or a silo with an orifice");
+  const auto [x0, x1] = orifice_span(g);
+  DischargeOptions d;
+  d.window = o.window;
+  return discharge(run.frames(o.from), Orifice{0.0, x0, x1}, d);
+}
+
+std::string discharge_text(const Discharge& q) {
+  if (!q.why_no_rate.empty())
+    return fmt::format("no rate: {} ({} grains through in all)", q.why_no_rate, q.passed);
+  return fmt::format("{:.4g} +- {:.2g} grains/s over t = {:.4g} to {:.4g} s ({} window; halves "
+                     "{:.4g}, {:.4g}); {} grains through, {} at the end",
+                     q.rate, q.rate_error, q.window_from, q.window_to,
+                     q.window_given ? "given" : "steady", q.rate_first_half, q.rate_second_half,
+                     q.passed, to_string(q.end));
+}
+
+void write_discharge(const fs::path& out, const Discharge& q) {
+  std::string dc = "time,grains_below\n";
+  for (std::size_t k = 0; k < q.time.size(); ++k)
+    dc += fmt::format("{:.6g},{}\n", q.time[k], q.below[k]);
+  write_file_atomically((out / "discharge.csv").string(), dc);
+  std::string blocks;
+  for (const FlowBlock& b : q.blocks)
+    blocks += fmt::format("{}[{}, {}, {}]", blocks.empty() ? "" : ", ", json_number(b.from),
+                          json_number(b.to), json_number(b.rate));
+  std::string json = fmt::format(
+      "{{\"end\": \"{}\", \"passed\": {}, \"first_passage\": {}, \"last_passage\": {}, "
+      "\"rate\": {}, \"rate_error\": {}, \"intercept\": {}, \"window\": \"{}\", "
+      "\"window_from\": {}, \"window_to\": {}, \"rate_first_half\": {}, "
+      "\"rate_second_half\": {}, \"median_block_rate\": {}, \"blocks\": [{}]",
+      to_string(q.end), q.passed, json_number(q.first_passage), json_number(q.last_passage),
+      json_number(q.rate), json_number(q.rate_error), json_number(q.intercept),
+      q.window_given ? "given" : "steady", json_number(q.window_from), json_number(q.window_to),
+      json_number(q.rate_first_half), json_number(q.rate_second_half), json_number(q.median_rate),
+      blocks);
+  json.append(", \"why_no_rate\": ");
+  json.append(q.why_no_rate.empty() ? "null" : "\"" + q.why_no_rate + "\"");
+  write_file_atomically((out / "discharge.json").string(), json + "}\n");
+}
 
 Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   const Scenario& sc = run.scenario();
@@ -118,25 +165,11 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
                   json_number(m.region.lo.y), json_number(m.region.hi.x),
                   json_number(m.region.hi.y), frames.size()));
 
-  if (has_orifice(sc)) { // the discharge through the orifice at y = 0
-    const Discharge q = discharge(frames, 0.0);
-    std::string dc = "time,grains_below\n";
-    for (std::size_t k = 0; k < q.time.size(); ++k)
-      dc += fmt::format("{:.6g},{}\n", q.time[k], q.below[k]);
-    write_file_atomically((out / "discharge.csv").string(), dc);
-    json += fmt::format(", \"rate\": {}, \"rate_first_half\": {}, \"rate_second_half\": {}, "
-                        "\"flow_from\": {}, \"flow_to\": {}",
-                        json_number(q.rate), json_number(q.rate_first_half),
-                        json_number(q.rate_second_half), json_number(q.flow_from),
-                        json_number(q.flow_to));
-    s.numbers.emplace_back("flow rate (10% to 90% through)",
-                           fmt::format("{:.1f} grains/s", q.rate));
-    s.numbers.emplace_back(
-        "first half, second half",
-        fmt::format("{:.1f}, {:.1f} grains/s", q.rate_first_half, q.rate_second_half));
-    fmt::print(
-        "  discharge: {:.1f} grains/s from t = {:.3g} to {:.3g} s (halves: {:.1f}, {:.1f})\n",
-        q.rate, q.flow_from, q.flow_to, q.rate_first_half, q.rate_second_half);
+  if (has_orifice(sc)) {
+    const Discharge q = run_discharge(run, o);
+    write_discharge(out, q);
+    s.numbers.emplace_back("discharge", discharge_text(q));
+    fmt::print("  discharge: {}\n", discharge_text(q));
   }
   write_file_atomically((out / "profiles.json").string(), json + "}\n");
   if (plot(out, "profiles", out / "profiles.csv", out / "profiles.png", out / "profiles.json"))
@@ -144,7 +177,7 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   if (plot(out, "speed_map", out / "speed_map.csv", out / "speed_map.png", out / "speed_map.json"))
     s.charts.push_back(out / "speed_map.png");
   if (has_orifice(sc) &&
-      plot(out, "discharge", out / "discharge.csv", out / "discharge.png", out / "profiles.json"))
+      plot(out, "discharge", out / "discharge.csv", out / "discharge.png", out / "discharge.json"))
     s.charts.push_back(out / "discharge.png");
   for (const auto& c : s.charts) fmt::print("  chart: {}\n", c.string());
   return s;

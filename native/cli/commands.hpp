@@ -13,6 +13,8 @@ void add_demo_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 /// `talus resume DIR`: continue a stopped run from its last checkpoint.
 void add_resume_command(CLI::App& app);
+/// `talus sweep SCENARIO --vary KEY=V1,V2 [--seeds N]`: a parameter sweep.
+void add_sweep_command(CLI::App& app);
 /// `talus scenarios`: the built-in scenarios, one line each.
 void add_scenarios_command(CLI::App& app);
 /// `talus convert IN OUT`: thesis .in <-> scenario .toml.

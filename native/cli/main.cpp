@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   talus::cli::add_run_command(app);
   talus::cli::add_resume_command(app);
+  talus::cli::add_sweep_command(app);
   talus::cli::add_scenarios_command(app);
   talus::cli::add_convert_command(app);
   talus::cli::add_export_command(app);

@@ -72,13 +72,17 @@ elif kind == "discharge":
     t, n = col("time"), col("grains_below")
     fig, a = plt.subplots(figsize=(8, 5))
     a.plot(t, n, "o", ms=3, label="grains below the orifice")
-    if extra.get("rate", 0) > 0:
-        t0, t1 = extra["flow_from"], extra["flow_to"]
-        mid_t = 0.5 * (t0 + t1)
-        mid_n = sum(v for s, v in zip(t, n) if t0 <= s <= t1) / max(
-            1, len([s for s in t if t0 <= s <= t1]))
-        a.plot([t0, t1], [mid_n + extra["rate"] * (t0 - mid_t), mid_n + extra["rate"] * (t1 - mid_t)],
-               "-", label=f"fit: {extra['rate']:.1f} grains/s")
+    rate = extra.get("rate")
+    if rate is not None:
+        t0, t1, c = extra["window_from"], extra["window_to"], extra["intercept"]
+        a.axvspan(t0, t1, color="tab:orange", alpha=0.12,
+                  label=f"{extra['window']} window, {t0:.3g} to {t1:.3g} s")
+        a.plot([t0, t1], [c + rate * t0, c + rate * t1], "-", color="tab:orange", lw=2,
+               label=f"fit: {rate:.4g}" + ("" if extra["rate_error"] is None else
+                                           f" ± {extra['rate_error']:.2g}") + " grains/s")
+        a.set_title(f"{extra['passed']} grains through; {extra['end']} at the end")
+    else:
+        a.set_title(f"no rate: {extra.get('why_no_rate')}")
     a.set_xlabel("time [s]")
     a.set_ylabel("grains [-]")
     a.legend()
@@ -158,6 +162,70 @@ elif kind == "frost":
     c.axhline(0.0, color="grey", lw=0.5)
     c.set_xlabel("stone radius [mm]")
     c.set_ylabel("rise per cycle [mm]")
+elif kind == "sweep":
+    axes, result = extra["axes"], extra["result"]
+
+    def number(v):
+        try:
+            return float(v)
+        except ValueError:
+            return None
+
+    xs = [r[axes[0]] if axes else "" for r in rows]
+    numeric = all(number(x) is not None for x in xs)
+    order = sorted(set(xs), key=number) if numeric else list(dict.fromkeys(xs))
+    series = {}
+    for r in rows:
+        label = ", ".join(f"{k}={r[k]}" for k in axes[1:])
+        series.setdefault(label, []).append(r)
+    fig, a = plt.subplots(figsize=(8, 5))
+    for label, rs in series.items():
+        rs = [r for r in rs if r["mean"] != ""]
+        x = [number(r[axes[0]]) if numeric else order.index(r[axes[0]]) for r in rs]
+        y = [float(r["mean"]) for r in rs]
+        e = [float(r["sd"]) if r["sd"] != "" else 0.0 for r in rs]
+        a.errorbar(x, y, yerr=e, fmt="o-", capsize=3, label=label or None)
+    if not numeric:
+        a.set_xticks(range(len(order)), order)
+    a.set_xlabel(axes[0] if axes else "")
+    a.set_ylabel(result)
+    a.set_title(f"{result}: mean and standard deviation over {extra['seeds']} seed(s)")
+    if len(series) > 1:
+        a.legend(fontsize=8)
+elif kind == "beverloo":
+    d, axis = extra["d"], extra["orifice_axis"]
+    others = [k for k in extra["axes"] if k != axis]
+    fig, a = plt.subplots(figsize=(8, 5))
+    for n, fit in enumerate(extra["fits"]):
+        mine = [r for r in rows if [r[k] for k in others] == fit["values"]]
+        rs = [r for r in mine if r["rate"] != ""]
+        stuck = [float(r["D_over_d"]) for r in mine if r["rate"] == "" and r["end"] == "clogged"]
+        if stuck:
+            a.plot(stuck, [0.0] * len(stuck), "x", color=f"C{n}", ms=9, mew=2,
+                   label=f"clogged ({len(stuck)} runs; no rate)")
+        x, y = col("D_over_d", rs), col("rate", rs)
+        e = [float(r["rate_error"]) if r["rate_error"] != "" else 0.0 for r in rs]
+        colour = f"C{n}"
+        a.errorbar(x, y, yerr=e, fmt="o", color=colour, capsize=3,
+                   label=fit["label"] or "runs")
+        if not x:
+            continue
+        for key, style in (("free", "-"), ("fixed", "--")):
+            f = fit[key]
+            if not f["ok"]:
+                continue
+            lo, hi = f["k"] + 1e-3, max(x) * 1.05
+            u = [lo + (hi - lo) * i / 200 for i in range(201)]
+            nlabel = f"n = {f['n']:.2f}" + (" (fixed)" if f["n_fixed"] else
+                                           f" ± {f['n_error']:.2f}")
+            a.plot(u, [f["A"] * (v - f["k"]) ** f["n"] for v in u], style, color=colour,
+                   label=f"W = A (D/d - k)^n: k = {f['k']:.2f}, {nlabel}")
+    a.set_xlim(left=0)
+    a.set_ylim(bottom=0)
+    a.set_xlabel("orifice width D / mean grain diameter d")
+    a.set_ylabel("discharge rate W [grains/s]")
+    a.set_title(f"Beverloo fits, d = {1e3 * d:.3g} mm")
+    a.legend(fontsize=8)
 else:
     sys.exit(f"unknown chart {kind}")
 fig.tight_layout()

@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/run_loop.hpp"
 #include "cli/scenario_source.hpp"
+#include "cli/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/load.hpp"
@@ -109,14 +110,27 @@ void add_run_command(CLI::App& app) {
 void add_resume_command(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto o = std::make_shared<RunOptions>();
-  CLI::App* cmd = app.add_subcommand("resume", "continue a stopped run from its last checkpoint "
-                                               "(bit-identical to an uninterrupted run)");
-  cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
+  auto sweep = std::make_shared<SweepOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "resume", "continue a stopped run from its last checkpoint (bit-identical to an "
+                "uninterrupted run), or a stopped sweep with the runs it has not finished");
+  cmd->add_option("dir", *dir, "the run folder or sweep folder")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--jobs", sweep->jobs, "a sweep: runs at a time (0: one per core)")
+      ->check(CLI::Range(0u, 4096u));
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--stop-at", o->stop_at, "stop again at this simulated time (s)")
       ->check(stop_time);
   cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([dir, o] { exit_status() = resume_run(*dir, *o); });
+  cmd->callback([dir, o, sweep] {
+    if (is_sweep_folder(*dir)) {
+      sweep->quiet = o->quiet;
+      exit_status() = run_sweep(*dir, nullptr, *sweep);
+    } else {
+      exit_status() = resume_run(*dir, *o);
+    }
+  });
 }
 
 void add_scenarios_command(CLI::App& app) {

@@ -21,7 +21,8 @@ namespace {
 
 constexpr const char* lock_name = ".lock";
 
-// The lock on dir/.lock, or -1 with the holder's pid in `holder` (empty if unknown).
+} // namespace
+
 int take_lock(const fs::path& dir, std::string& holder) {
   const fs::path path = dir / lock_name;
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
@@ -42,6 +43,8 @@ int take_lock(const fs::path& dir, std::string& holder) {
   }
   return fd;
 }
+
+namespace {
 
 [[noreturn]] void in_use(const fs::path& dir, const std::string& holder) {
   throw InvalidArgument("run folder '" + dir.string() + "' is in use by " +

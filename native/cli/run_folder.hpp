@@ -36,6 +36,11 @@ private:
   bool created_ = false; ///< create() made the folder (discard removes it)
 };
 
+/// The advisory lock on dir/.lock (as a run folder takes it; a sweep folder takes the same): its
+/// file descriptor, held until closed or the process ends, or -1 with the holder's pid in
+/// `holder` (empty if unknown).
+int take_lock(const std::filesystem::path& dir, std::string& holder);
+
 /// Whether dir holds a run that never wrote a checkpoint (and has not ended).
 bool never_checkpointed(const std::filesystem::path& dir);
 

@@ -68,39 +68,4 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) {
   return sxx > 0.0 ? sxy / sxx : 0.0;
 }
 
-Discharge discharge(const std::vector<Frame>& frames, double orifice_y) {
-  Discharge d;
-  for (const Frame& f : frames) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < f.position.size(); ++i)
-      if (f.kind[i] == 0 && f.position[i].y < orifice_y) ++n;
-    d.time.push_back(f.time);
-    d.below.push_back(n);
-  }
-  if (d.below.size() < 2) return d;
-  const double first = static_cast<double>(d.below.front()),
-               last = static_cast<double>(d.below.back());
-  if (!(last > first)) return d;
-  // the flowing part: from 10% to 90% of what came through, so the start and the end (when the
-  // upper bulb runs dry) do not bias the rate
-  std::vector<double> t, n;
-  for (std::size_t k = 0; k < d.time.size(); ++k) {
-    const double u = (static_cast<double>(d.below[k]) - first) / (last - first);
-    if (u >= 0.1 && u <= 0.9) t.push_back(d.time[k]), n.push_back(static_cast<double>(d.below[k]));
-  }
-  if (t.size() < 2) return d;
-  d.flow_from = t.front(), d.flow_to = t.back();
-  d.rate = slope(t, n);
-  const std::size_t half = t.size() / 2;
-  const auto part = [&](std::size_t a, std::size_t b) {
-    return slope(std::vector<double>(t.begin() + static_cast<std::ptrdiff_t>(a),
-                                     t.begin() + static_cast<std::ptrdiff_t>(b)),
-                 std::vector<double>(n.begin() + static_cast<std::ptrdiff_t>(a),
-                                     n.begin() + static_cast<std::ptrdiff_t>(b)));
-  };
-  d.rate_first_half = part(0, half + 1);
-  d.rate_second_half = part(half, t.size());
-  return d;
-}
-
 } // namespace talus

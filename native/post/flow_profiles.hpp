@@ -1,6 +1,6 @@
 #pragma once
 // Flow seen in snapshots (thesis sec. 4.1, figs. 4.6-4.10): time-averaged velocity across a
-// horizontal band, a false-colour map of the mean speed, and the discharge through an orifice.
+// horizontal band and a false-colour map of the mean speed (the discharge: post/discharge.hpp).
 #include <cstddef>
 #include <vector>
 
@@ -32,18 +32,6 @@ struct SpeedMap {
 };
 
 SpeedMap speed_map(const std::vector<Frame>& frames, const Rect& region, double cell);
-
-/// Grains below the orifice height against time, and the flow rate fitted to them.
-struct Discharge {
-  std::vector<double> time;       ///< s, one per frame
-  std::vector<std::size_t> below; ///< free grains with centre below the orifice
-  double rate = 0.0;              ///< grains per s: least-squares slope over the flowing part
-  double rate_first_half = 0.0;   ///< the same fit over the first and second half of that part:
-  double rate_second_half = 0.0;  ///< equal for a constant flow (Beverloo)
-  double flow_from = 0.0, flow_to = 0.0; ///< s: from 10% to 90% of the grains that came through
-};
-
-Discharge discharge(const std::vector<Frame>& frames, double orifice_y);
 
 /// Least-squares slope of y against x (0 for fewer than two points).
 double slope(const std::vector<double>& x, const std::vector<double>& y);

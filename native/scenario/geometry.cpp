@@ -41,7 +41,41 @@ double funnel(ContainerShape& c, double w, double h, double orifice, double angl
   return rise;
 }
 
+// A flat-bottomed silo: vertical walls, a floor with an orifice of width `orifice` centred at
+// x = orifice_x, and a bin of the silo's width below it that catches what flows out. A floor
+// piece is left out where the orifice meets a side wall.
+void flat_silo(ContainerShape& c, const GeometrySection& g) {
+  const double w = g.width, h = g.height;
+  const auto [x0, x1] = orifice_span(g);
+  need(x0 >= 0.0 && x1 <= w, g.orifice_x ? "orifice_x" : "orifice",
+       "the orifice (" + std::to_string(x0) + " to " + std::to_string(x1) +
+           " m) must lie within the floor, 0 to width = " + std::to_string(w) + " m");
+  need(g.orifice < w, "orifice", "needs 0 < orifice < width");
+  const double depth = g.bin_depth.value_or(h);
+  need(depth > 0.0, "bin_depth", "needs bin_depth > 0 m");
+  if (x0 > 0.0) add(c, "floor", {0.0, 0.0}, {x0, 0.0});
+  if (x1 < w) add(c, "floor", {x1, 0.0}, {w, 0.0});
+  add(c, "left", {0.0, h}, {0.0, 0.0});
+  add(c, "right", {w, 0.0}, {w, h});
+  add(c, "lower", {0.0, 0.0}, {0.0, -depth});
+  add(c, "lower", {0.0, -depth}, {w, -depth});
+  add(c, "lower", {w, -depth}, {w, 0.0});
+  c.gate.push_back({{x0, 0.0}, {x1, 0.0}});
+  c.fill = {{0.0, 0.0}, {w, h}};
+  c.bounds = {{0.0, -depth}, {w, h}};
+}
+
 } // namespace
+
+bool has_orifice(const GeometrySection& g) {
+  return g.builder == "hopper" || g.builder == "hourglass" ||
+         (g.builder == "silo" && g.orifice > 0.0);
+}
+
+std::pair<double, double> orifice_span(const GeometrySection& g) {
+  const double centre = g.builder == "silo" ? g.orifice_x.value_or(0.5 * g.width) : 0.5 * g.width;
+  return {centre - 0.5 * g.orifice, centre + 0.5 * g.orifice};
+}
 
 ContainerShape build_container(const GeometrySection& g) {
   ContainerShape c;
@@ -50,7 +84,13 @@ ContainerShape build_container(const GeometrySection& g) {
     need(g.width > 0.0, "width", "builder '" + b + "' needs width > 0 m");
     need(g.height > 0.0, "height", "builder '" + b + "' needs height > 0 m");
   }
-  if (b == "box" || b == "silo" || b == "window_box" || b == "grain_press") {
+  const bool flat = b == "silo" && g.orifice > 0.0;
+  need(flat || (!g.orifice_x && !g.bin_depth), g.orifice_x ? "orifice_x" : "bin_depth",
+       "applies only to a silo with an orifice (builder = \"silo\", orifice > 0)");
+  if (flat) {
+    need(g.height > g.width, "height", "a silo is taller than wide");
+    flat_silo(c, g);
+  } else if (b == "box" || b == "silo" || b == "window_box" || b == "grain_press") {
     if (b == "silo") need(g.height > g.width, "height", "a silo is taller than wide");
     if (b == "window_box") need(g.width > g.height, "width", "a window box is wider than tall");
     rectangle(c, g.width, g.height, b == "box" || b == "grain_press");

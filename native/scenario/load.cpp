@@ -198,7 +198,11 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
   g.width = r.number("width", g.width, 0.0, inf, ">= 0 m");
   g.height = r.number("height", g.height, 0.0, inf, ">= 0 m");
   g.orifice = r.number("orifice", g.orifice, 0.0, inf, ">= 0 m");
-  g.wall_angle = r.number("wall_angle", g.wall_angle, 1.0, 89.0, "(1, 89) degrees");
+  if (r.has("orifice_x")) g.orifice_x = r.number("orifice_x", 0.0, 0.0, inf, ">= 0 m");
+  if (r.has("bin_depth")) g.bin_depth = r.number("bin_depth", 0.0, 0.0, inf, "> 0 m");
+  g.wall_angle = r.number("wall_angle", g.wall_angle, 1.0, 89.0,
+                          "(1, 89) degrees (a flat floor with an orifice: builder = \"silo\" "
+                          "with orifice = WIDTH)");
   g.lid_speed = r.number("lid_speed", g.lid_speed, 0.0, inf, ">= 0 m/s");
   g.radius = r.number("radius", g.radius, 0.0, inf, ">= 0 m");
   g.angular_velocity = r.number("angular_velocity", g.angular_velocity, -inf, inf, "rad/s");

@@ -154,6 +154,8 @@ std::string to_toml(const Scenario& s) {
                        {"wall_particle_radius", g.wall_particle_radius},
                        {"wall_material", g.wall_material},
                        {"periodic", g.periodic}};
+  if (g.orifice_x) geometry.insert("orifice_x", *g.orifice_x);
+  if (g.bin_depth) geometry.insert("bin_depth", *g.bin_depth);
   if (g.box) geometry.insert("box", rect(*g.box));
   toml::array segments;
   for (const SegmentSpec& seg : g.segments)

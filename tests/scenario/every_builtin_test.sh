@@ -20,6 +20,8 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
                         --set frost.freeze_time=0.1 --set frost.thaw_time=0.1 --set frost.heave_strain=0.1
                         --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e-1 --set frost.cycles=1) ;;
     hourglass) short=(--set particles.count=150 --set simulation.duration=0.1 --set packing.settle_max_time=0.2) ;;
+    silo_discharge) short=(--set particles.count=150 --set geometry.width=0.12 --set geometry.height=0.25
+                           --set simulation.duration=0.2 --set packing.settle_max_time=0.3) ;;
     silo_shake) short=(--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1) ;;
     *) fail "no short version in $0" ;;
   esac
@@ -39,7 +41,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
   [ -s "$run/analysis/profiles.csv" ] || fail "no profiles.csv"
   [ -f "$run/track.csv" ] && { [ -s "$run/analysis/tracks.csv" ] || fail "no tracks.csv"; }
   case "$name" in
-    hourglass) [ -s "$run/analysis/discharge.csv" ] || fail "no discharge.csv" ;;
+    hourglass|silo_discharge) [ -s "$run/analysis/discharge.json" ] || fail "no discharge.json" ;;
     silo_shake) [ -s "$run/analysis/segregation.csv" ] || fail "no segregation.csv" ;;
     frost_heave|frost_front) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
                  [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;

@@ -10,9 +10,11 @@
 
 #include "analysis/force_distribution.hpp"
 #include "analysis/frame.hpp"
+#include "post/discharge.hpp"
 #include "post/flow_profiles.hpp"
 #include "post/segregation.hpp"
 #include "scenario/build.hpp"
+#include "scenario/geometry.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"
 
@@ -56,7 +58,8 @@ TEST(Experiments, HourglassFlowsFastestOnTheCentreLineAtASteadyRate) {
   // packing and the flow are chaotic), so the bound leaves room below the lowest seen.
   EXPECT_LT(std::abs(edges), std::abs(centre) / 2.0) << "centre " << centre << ", edges " << edges;
 
-  const Discharge q = discharge(frames, 0.0);
+  const auto [x0, x1] = orifice_span(s.geometry);
+  const Discharge q = discharge(frames, Orifice{0.0, x0, x1});
   std::printf("hourglass: v_y centre %.3f m/s, edges %.3f m/s (%zu, %zu samples); %.1f grains/s "
               "(halves %.1f, %.1f)\n",
               centre, edges, p.count[first], p.count[last], q.rate, q.rate_first_half,

@@ -6,6 +6,7 @@
 
 #include "talus/error.hpp"
 
+#include "post/discharge.hpp"
 #include "post/flow_profiles.hpp"
 #include "post/frost_cycles.hpp"
 #include "post/segregation.hpp"
@@ -58,23 +59,104 @@ TEST(SpeedMap, MeanSpeedPerCell) {
   EXPECT_DOUBLE_EQ(m.mean_speed[3], 2.0);
 }
 
-TEST(Discharge, ConstantFlowGivesOneRateInBothHalves) {
-  // 5 grains per second pass y = 0 from t = 1 s to t = 9 s, 40 in all
-  std::vector<Frame> frames;
-  for (int k = 0; k <= 10; ++k) {
+// Frames every `dt` s, with `count(k)` grains below y = 0 at frame k out of `total`; the rest
+// sit at `above` (over the orifice from x = -0.05 to 0.05 when above.x is 0).
+std::vector<Frame> flow_frames(int frames, double dt, int total, auto count,
+                               Vec2 above = {0.5, 0.1}) {
+  std::vector<Frame> out;
+  for (int k = 0; k < frames; ++k) {
     Frame f;
-    f.time = k;
-    const int below = std::clamp(5 * (k - 1), 0, 40);
-    for (int i = 0; i < 40; ++i)
-      add(f, static_cast<std::uint32_t>(i), {0.0, i < below ? -0.1 : 0.1}, 0.01);
-    frames.push_back(f);
+    f.time = k * dt;
+    const int below = count(k);
+    for (int i = 0; i < total; ++i)
+      add(f, static_cast<std::uint32_t>(i), i < below ? Vec2{0.0, -0.1} : above, 0.01);
+    out.push_back(f);
   }
-  const Discharge d = discharge(frames, 0.0);
-  EXPECT_EQ(d.below.front(), 0u);
-  EXPECT_EQ(d.below.back(), 40u);
-  EXPECT_NEAR(d.rate, 5.0, 1e-12);
-  EXPECT_NEAR(d.rate_first_half, 5.0, 1e-12);
-  EXPECT_NEAR(d.rate_second_half, 5.0, 1e-12);
+  return out;
+}
+
+const Orifice orifice{0.0, -0.05, 0.05};
+
+TEST(Discharge, ConstantFlowGivesOneRateInBothHalves) {
+  // 50 grains per second pass y = 0 from t = 1 s until the 400 have gone (t = 9 s)
+  const auto frames =
+      flow_frames(21, 1.0, 400, [](int k) { return std::clamp(50 * (k - 1), 0, 400); });
+  const Discharge d = discharge(frames, orifice);
+  EXPECT_EQ(d.passed, 400u);
+  EXPECT_EQ(d.end, FlowEnd::drained); // 11 s without a grain, nothing over the orifice
+  EXPECT_TRUE(d.why_no_rate.empty()) << d.why_no_rate;
+  EXPECT_NEAR(d.rate, 50.0, 1e-9);
+  EXPECT_NEAR(d.rate_first_half, 50.0, 1e-9);
+  EXPECT_NEAR(d.rate_second_half, 50.0, 1e-9);
+  EXPECT_NEAR(d.rate_error, 0.0, 1e-9); // every block has the same rate
+  // the fitted line passes through the data: 0 grains at t = 1 s
+  EXPECT_NEAR(d.intercept + d.rate * 1.0, 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(d.window_from, 1.0);
+  EXPECT_DOUBLE_EQ(d.window_to, 9.0);
+}
+
+TEST(Discharge, SteadyWindowLeavesOutTheStartAndTheFinalDraining) {
+  // 2 s at 10 grains/s (the start), 10 s at 100 grains/s, then 8 s at 25 grains/s (the final
+  // draining): 20 + 1000 + 200 grains. A window from 10% to 90% of what came through would end
+  // at 1098 grains, 3 s into the draining, and give 84 grains/s.
+  const auto count = [](int k) {
+    const double t = 0.1 * k;
+    const double n = t < 2.0    ? 10.0 * t
+                     : t < 12.0 ? 20.0 + 100.0 * (t - 2.0)
+                                : 1020.0 + 25.0 * std::min(t - 12.0, 8.0);
+    return static_cast<int>(std::floor(n + 1e-9));
+  };
+  const auto frames = flow_frames(241, 0.1, 1220, count);
+  const Discharge d = discharge(frames, orifice);
+  EXPECT_EQ(d.end, FlowEnd::drained);
+  EXPECT_EQ(d.passed, 1220u);
+  // the window lies within the steady part, to within one block (about 20 grains, 0.2 s)
+  EXPECT_GE(d.window_from, 2.0 - 1e-9);
+  EXPECT_LE(d.window_from, 2.5);
+  EXPECT_LE(d.window_to, 12.0 + 1e-9);
+  EXPECT_GE(d.window_to, 11.5);
+  // whole grains only: the rate is 100 to within the rounding of the counts
+  EXPECT_NEAR(d.rate, 100.0, 0.5);
+  EXPECT_NEAR(d.rate_first_half / d.rate_second_half, 1.0, 0.01);
+}
+
+TEST(Discharge, GivenWindowIsFittedAsGiven) {
+  const auto frames =
+      flow_frames(21, 1.0, 400, [](int k) { return std::clamp(50 * (k - 1), 0, 400); });
+  DischargeOptions o;
+  o.window = std::pair{2.0, 5.0};
+  const Discharge d = discharge(frames, orifice, o);
+  EXPECT_TRUE(d.window_given);
+  EXPECT_DOUBLE_EQ(d.window_from, 2.0);
+  EXPECT_DOUBLE_EQ(d.window_to, 5.0);
+  EXPECT_NEAR(d.rate, 50.0, 1e-9);
+  o.window = std::pair{2.0, 2.5}; // one snapshot: no fit
+  EXPECT_THROW(discharge(frames, orifice, o), InvalidArgument);
+}
+
+TEST(Discharge, ClogIsSaidAndNeverReportedAsARate) {
+  // 6 grains pass in the first 0.04 s, then an arch holds the other 194 over the orifice
+  const auto frames = flow_frames(
+      11, 0.01, 200, [](int k) { return std::min(3 * k, 6); }, Vec2{0.0, 0.02});
+  const Discharge d = discharge(frames, orifice);
+  EXPECT_EQ(d.end, FlowEnd::clogged);
+  EXPECT_EQ(d.passed, 6u);
+  EXPECT_TRUE(std::isnan(d.rate));
+  EXPECT_NE(d.why_no_rate.find("clogged at t = 0.02 s, after 6 grains"), std::string::npos)
+      << d.why_no_rate;
+  // a window does not turn a clog into a rate
+  DischargeOptions o;
+  o.window = std::pair{0.0, 0.03};
+  EXPECT_TRUE(std::isnan(discharge(frames, orifice, o).rate));
+}
+
+TEST(Discharge, TooFewGrainsGiveNoRateAndAFlowGoingOnIsFlowing) {
+  const auto frames = flow_frames(11, 0.1, 100, [](int k) { return 3 * k; });
+  const Discharge d = discharge(frames, orifice);
+  EXPECT_EQ(d.end, FlowEnd::flowing);
+  EXPECT_EQ(d.passed, 30u);
+  EXPECT_TRUE(std::isnan(d.rate));
+  EXPECT_NE(d.why_no_rate.find("only 30 grains came through"), std::string::npos);
 }
 
 TEST(Segregation, IndexIsLargeMinusSmallMeanHeightOverBedHeight) {

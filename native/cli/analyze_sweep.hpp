@@ -1,0 +1,20 @@
+#pragma once
+// The analyses of a sweep folder (cli/sweep.hpp), written to SWEEP/analysis.
+#include <filesystem>
+#include <string>
+
+#include "cli/analyses.hpp"
+
+namespace talus::cli {
+
+/// One result of the index (a number every finished run reports) against the varied keys:
+/// RESULT.csv with the mean, standard deviation, least and greatest over the seeds of each
+/// combination, and RESULT.png. Throws InvalidArgument listing the results for an unknown one.
+void analyze_sweep_result(const std::filesystem::path& dir, const std::string& result);
+
+/// Every run's discharge (post/discharge.hpp, with o.window and o.from) in discharge.csv, and
+/// when the sweep varies geometry.orifice, the Beverloo fit over the widths, n free and n = 3/2,
+/// for each combination of the other keys: beverloo.csv, beverloo.json, beverloo.png.
+void analyze_sweep_discharge(const std::filesystem::path& dir, const AnalysisOptions& o);
+
+} // namespace talus::cli
