@@ -10,7 +10,7 @@
 #include <thread>
 
 #include <fcntl.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,8 +23,6 @@
 #include "io/checkpoint.hpp"
 #include "scenario/load.hpp"
 #include "talus/error.hpp"
-
-extern char** environ;
 
 namespace fs = std::filesystem;
 
@@ -72,15 +70,19 @@ pid_t launch(const fs::path& dir, const SweepRun& r) {
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   const std::string log = (dir / "logs" / (r.name + ".log")).string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  pid_t pid = 0;
-  const int err = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (err != 0)
-    throw InvalidArgument("talus sweep: cannot start " + exe + ": " + std::strerror(err));
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw InvalidArgument(std::string("talus sweep: fork: ") + std::strerror(errno));
+  if (pid == 0) {
+    // the run stops at a checkpoint when the sweep dies, however it dies (even by SIGKILL), so
+    // that talus resume finds no run still going
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(130);
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fd < 0 || ::dup2(fd, 1) < 0 || ::dup2(fd, 2) < 0) ::_exit(126);
+    ::execv(exe.c_str(), argv.data());
+    ::_exit(127);
+  }
   return pid;
 }
 

@@ -85,8 +85,10 @@ ContainerShape build_container(const GeometrySection& g) {
     need(g.height > 0.0, "height", "builder '" + b + "' needs height > 0 m");
   }
   const bool flat = b == "silo" && g.orifice > 0.0;
-  need(flat || (!g.orifice_x && !g.bin_depth), g.orifice_x ? "orifice_x" : "bin_depth",
+  need(flat || !g.orifice_x, "orifice_x",
        "applies only to a silo with an orifice (builder = \"silo\", orifice > 0)");
+  need(flat || b == "hopper" || !g.bin_depth, "bin_depth",
+       "applies only to a hopper or a silo with an orifice (builder = \"silo\", orifice > 0)");
   if (flat) {
     need(g.height > g.width, "height", "a silo is taller than wide");
     flat_silo(c, g);
@@ -107,7 +109,8 @@ ContainerShape build_container(const GeometrySection& g) {
     need(g.orifice > 0.0 && g.orifice < g.width, "orifice", "needs 0 < orifice < width");
     const double rise = funnel(c, g.width, g.height, g.orifice, g.wall_angle);
     need(rise < g.height, "height", "must exceed the funnel's rise " + std::to_string(rise) + " m");
-    const double depth = b == "hourglass" ? g.height : 0.5 * g.height;
+    const double depth = b == "hourglass" ? g.height : g.bin_depth.value_or(0.5 * g.height);
+    need(depth > 0.0, "bin_depth", "needs bin_depth > 0 m");
     if (b == "hourglass") { // the lower bulb: the funnel mirrored below the orifice
       const double x0 = 0.5 * (g.width - g.orifice), x1 = 0.5 * (g.width + g.orifice);
       add(c, "lower", {0.0, -rise}, {x0, 0.0});

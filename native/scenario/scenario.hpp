@@ -83,7 +83,7 @@ struct GeometrySection {
   double height = 0.0; ///< m
   double orifice = 0.0;              ///< m (hopper, hourglass; silo: 0 for a closed floor)
   std::optional<double> orifice_x;   ///< m: the orifice's centre (silo; default width / 2)
-  std::optional<double> bin_depth;   ///< m: the bin below a silo's orifice (default: height)
+  std::optional<double> bin_depth;   ///< m: the bin below the orifice (silo, hopper)
   double wall_angle = 60.0;          ///< degrees from horizontal (hopper, hourglass)
   double lid_speed = 0.0;            ///< m/s downward (grain_press)
   double radius = 0.0;               ///< m (drum)

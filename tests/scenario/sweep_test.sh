@@ -66,4 +66,19 @@ grep -q '"ok": true' "$sweep/analysis/beverloo.json" || fail "beverloo.json with
 [ "$(wc -l < "$sweep/analysis/final_coordination.csv")" -eq 3 ] || fail "final_coordination.csv rows"
 "$talus" analyze "$sweep" no_such_result 2> "$dir/err" && fail "an unknown result accepted"
 grep -q "its results: .*final_coordination" "$dir/err" || { cat "$dir/err"; fail "unknown result message"; }
-echo "sweep: stopped, resumed, identical to talus run, gathered"
+# SIGKILL of the sweep: its runs stop at a checkpoint by themselves, and resume finishes them
+killed="$dir/killed"
+"$talus" sweep silo_discharge "${small[@]}" --seeds 2 --jobs 2 --out "$killed" > "$dir/log3" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+  [ -f "$killed/run-001/thermo.csv" ] && [ -f "$killed/run-002/thermo.csv" ] && break
+  sleep 0.1
+done
+kill -KILL "$pid"
+wait "$pid" 2> /dev/null
+for _ in $(seq 1 30); do pgrep -f "$killed/run-" > /dev/null || break; sleep 0.1; done
+pgrep -f "$killed/run-" > /dev/null && fail "runs go on after the sweep was killed"
+grep -q '"ended_by": "signal"' "$killed"/run-00[12]/run.json || fail "no run stopped at a checkpoint"
+"$talus" resume "$killed" > "$dir/log4" 2>&1 || { cat "$dir/log4"; fail "resume after SIGKILL"; }
+[ "$(grep -c ',finished,' "$killed/index.csv")" -eq 2 ] || { cat "$killed/index.csv"; fail "not finished after SIGKILL and resume"; }
+echo "sweep: stopped, resumed, identical to talus run, gathered; SIGKILL stops its runs"
