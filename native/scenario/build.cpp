@@ -19,6 +19,10 @@ namespace talus {
 
 namespace {
 
+// Segment ends closer than this many smallest radii are one joint: far below any gap a grain
+// could notice, far above rounding.
+constexpr double joint_tolerance = 1e-6;
+
 std::uint32_t u32(std::size_t v) {
   return static_cast<std::uint32_t>(v);
 }
@@ -258,6 +262,9 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     }
   }
 
+  // segment ends a rounding step apart (polylines made by a script) are one joint
+  join_segment_ends(w.walls, joint_tolerance * r_min);
+
   // domain
   if (s.geometry.periodic != "none") {
     w.domain.lo = s.geometry.box->lo;
@@ -345,6 +352,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   if (s.packing.method == "sedimentation" && !radii.empty()) {
     World settling = w;
     for (const SegmentSpec& g : shape.gate) settling.add_wall(g.a, g.b, wall_mat);
+    join_segment_ends(settling.walls, joint_tolerance * r_min);
     Simulation sim(std::move(settling), c);
     double scale = 0.0;
     for (std::size_t i = 0; i < sim.world().particles.size(); ++i)

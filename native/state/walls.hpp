@@ -1,5 +1,6 @@
 #pragma once
 // Line-segment walls: straight, rigid, of one material, fixed or moved by a driver.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -30,5 +31,12 @@ inline Vec2 closest_point(const Segment& s, Vec2 p) {
 }
 
 using Segments = std::vector<Segment>;
+
+/// Makes segment end points closer than `tolerance` one point (the earliest segment's), so that
+/// two segments meeting there share it exactly: a particle touching the joint then touches it
+/// once (wall_pass.hpp). A tolerance small against the grains' size leaves the shape as it was:
+/// it only joins ends that a script meant to be one (two ends a rounding step apart would
+/// otherwise push a grain resting on the joint twice). Returns how many ends moved.
+std::size_t join_segment_ends(Segments& walls, double tolerance);
 
 } // namespace talus
