@@ -20,6 +20,8 @@ short_of() {
                   --set frost.freeze_time=0.1 --set frost.thaw_time=0.1 --set frost.heave_strain=0.1
                   --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e-1 --set frost.cycles=1" ;;
     hourglass) echo "--set particles.count=150 --set simulation.duration=0.1 --set packing.settle_max_time=0.2" ;;
+    silo_discharge) echo "--set particles.count=150 --set geometry.width=0.12 --set geometry.height=0.25
+                  --set simulation.duration=0.2 --set packing.settle_max_time=0.3" ;;
     silo_shake) echo "--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1" ;;
     *) echo "scripts/state-hashes.sh: no short version of '$1'" >&2; exit 1 ;;
   esac

@@ -108,6 +108,7 @@ void write_material(Writer& w, const Material& m) {
        {m.density, m.young, m.poisson, m.restitution, m.friction, m.tangential_damping,
         m.normal_stiffness, m.tangential_stiffness_ratio, m.normal_damping_rate, m.hertz_damping})
     w.pod(v);
+  w.pod<std::uint8_t>(m.rigid ? 1 : 0);
 }
 
 Material read_material(Reader& r) {
@@ -117,6 +118,7 @@ Material read_material(Reader& r) {
                     &m.tangential_damping, &m.normal_stiffness, &m.tangential_stiffness_ratio,
                     &m.normal_damping_rate, &m.hertz_damping})
     *v = r.pod<double>();
+  m.rigid = r.pod<std::uint8_t>() != 0;
   return m;
 }
 

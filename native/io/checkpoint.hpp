@@ -26,7 +26,7 @@ struct Checkpoint {
   std::string run_data; ///< opaque to the engine: the command line's own bookkeeping
 };
 
-inline constexpr std::uint32_t checkpoint_version = 4; // 4: verlet_velocity in the config
+inline constexpr std::uint32_t checkpoint_version = 5; // 5: rigid materials
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

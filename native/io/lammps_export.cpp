@@ -44,6 +44,11 @@ std::optional<std::string> refusal(const Scenario& s) {
                                "the thesis' eq. 2.12)",
                                name_of(s.simulation.tangential_law),
                                history_free_tangential_names()));
+  for (const Material& m : s.materials)
+    if (m.rigid)
+      return refused("materials", "material '" + m.name +
+                                      "' is rigid, which pair_coeff does not express yet; allowed: "
+                                      "rigid = false");
   if (s.frost.model == "front")
     return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
                                   "(fix frost/heave)");

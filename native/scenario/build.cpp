@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <sys/resource.h>
 #include <tuple>
@@ -174,18 +175,34 @@ void check_listed_grains_clear_of_walls(const Scenario& s, const World& w, const
 
 } // namespace
 
-double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
-                               double r_min) {
+std::vector<MeetingPair> meeting_pairs(const World& w) {
+  std::set<std::uint16_t> grains, walls;
+  const Particles& p = w.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) (p.is_free(i) ? grains : walls).insert(p.material[i]);
+  for (const Segment& seg : w.walls) walls.insert(seg.material);
+  std::vector<MeetingPair> out;
+  for (const std::uint16_t a : grains) {
+    for (const std::uint16_t b : grains)
+      if (b >= a) out.push_back({a, b, false});
+    for (const std::uint16_t b : walls) out.push_back({a, b, true});
+  }
+  return out;
+}
+
+double shortest_collision_time(const Scenario& s, const World& w, double r_min) {
   double shortest = std::numeric_limits<double>::max();
-  for (const Material& a : materials)
-    for (const Material& b : materials) {
-      const PairParameters p = mix(a, b);
-      const double m_eff = 0.5 * std::min(grain_mass(s, a, r_min), grain_mass(s, b, r_min));
-      const double tc = with_normal_law(s.simulation.normal_law, [&]<class N>() {
-        return N::collision_time(p, m_eff, 0.5 * r_min, s.simulation.impact_speed);
-      });
-      shortest = std::min(shortest, tc);
-    }
+  for (const MeetingPair& m : meeting_pairs(w)) {
+    const Material &a = w.materials[m.a], &b = w.materials[m.b];
+    const PairParameters p = mix(a, b);
+    // against a wall: the grain's own mass and radius (a segment is flat and immovable)
+    const double m_eff = m.wall ? grain_mass(s, a, r_min)
+                                : 0.5 * std::min(grain_mass(s, a, r_min), grain_mass(s, b, r_min));
+    const double r_eff = m.wall ? r_min : 0.5 * r_min;
+    const double tc = with_normal_law(s.simulation.normal_law, [&]<class N>() {
+      return N::collision_time(p, m_eff, r_eff, s.simulation.impact_speed);
+    });
+    shortest = std::min(shortest, tc);
+  }
   return shortest;
 }
 
@@ -304,7 +321,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   }
 
   // timestep
-  out.collision_time = shortest_collision_time(s, w.materials, r_min);
+  out.collision_time = shortest_collision_time(s, w, r_min);
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
   c.verlet_velocity = s.simulation.verlet_velocity;
@@ -316,17 +333,19 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
   if (s.simulation.timestep) {
-    // the stiffest oscillation: linear k_n, or Hertz' tangent stiffness at the impact speed
+    // the stiffest oscillation of the pairs that can meet: linear k_n, or Hertz' tangent
+    // stiffness at the impact speed, for the lightest grain (the bound is then conservative)
     double k_max = 0.0, m_min = std::numeric_limits<double>::max();
-    for (const Material& a : w.materials) {
-      m_min = std::min(m_min, 0.5 * grain_mass(s, a, r_min));
-      for (const Material& b : w.materials) {
-        const PairParameters p = mix(a, b);
-        const double k = with_normal_law(c.normal_law, [&]<class N>() {
-          return N::peak_stiffness(p, m_min, 0.5 * r_min, s.simulation.impact_speed);
-        });
-        k_max = std::max(k_max, k);
-      }
+    const auto pairs = meeting_pairs(w);
+    for (const MeetingPair& m : pairs)
+      m_min = std::min(m_min, 0.5 * grain_mass(s, w.materials[m.a], r_min));
+    for (const MeetingPair& m : pairs) {
+      const PairParameters p = mix(w.materials[m.a], w.materials[m.b]);
+      const double k = with_normal_law(c.normal_law, [&]<class N>() {
+        return N::peak_stiffness(p, m.wall ? 2.0 * m_min : m_min, m.wall ? r_min : 0.5 * r_min,
+                                 s.simulation.impact_speed);
+      });
+      k_max = std::max(k_max, k);
     }
     const double bound = max_stable_timestep(c.integrator, k_max, m_min);
     if (*s.simulation.timestep > bound) {

@@ -29,8 +29,19 @@ using SettleProgress = std::function<void(double time, double kinetic_energy)>;
 /// (too many grains for the region, a timestep above the stability bound, an unknown group).
 BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress = {});
 
-/// Shortest collision time of a grain pair of the smallest size, for each material pair used.
-double shortest_collision_time(const Scenario& s, const std::vector<Material>& materials,
-                               double r_min);
+/// A pair of materials that can meet: two grains' (a <= b), or a grain's (a) and a wall's (b).
+/// Two walls never meet, so their pair never sets the timestep.
+struct MeetingPair {
+  std::uint16_t a = 0, b = 0;
+  bool wall = false;
+};
+
+/// The material pairs that can meet in w: free particles' materials with each other and with
+/// those of the wall particles and segments.
+std::vector<MeetingPair> meeting_pairs(const World& w);
+
+/// Shortest collision time over the pairs that can meet, for grains of the smallest size
+/// (against a wall, the grain's own mass and radius).
+double shortest_collision_time(const Scenario& s, const World& w, double r_min);
 
 } // namespace talus

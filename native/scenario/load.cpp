@@ -132,6 +132,7 @@ Material read_material(TableReader& r, std::size_t index) {
   m.name = r.text("name", "material" + std::to_string(index));
   for (const MaterialKey& k : material_keys)
     m.*k.field = r.number(k.name, k.fallback, k.lowest, k.highest, k.allowed.data());
+  m.rigid = r.boolean("rigid", false);
   return m;
 }
 

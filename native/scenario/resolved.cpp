@@ -108,6 +108,7 @@ std::string to_toml(const Scenario& s) {
   for (const Material& m : s.materials) {
     toml::table row{{"name", m.name}};
     for (const MaterialKey& k : material_keys) row.insert(k.name, m.*k.field);
+    row.insert("rigid", m.rigid);
     materials.push_back(std::move(row));
   }
   root.insert("materials", materials);

@@ -26,9 +26,13 @@ inline double log_loss(double x) {
 }
 } // namespace closed_form_detail
 
+/// The least restitution the never-attractive linear spring-dashpot reaches: exp(-2), as its
+/// damping grows without bound.
+inline const double linear_restitution_floor = std::exp(-2.0);
+
 /// The damping ratio zeta = eta / (2 sqrt(k m)) that gives restitution e (exact, by bisection).
 inline double linear_damping_ratio(double restitution) {
-  const double e_min = std::exp(-2.0);
+  const double e_min = linear_restitution_floor;
   require(restitution > e_min && restitution <= 1.0,
           "restitution = " + std::to_string(restitution) +
               " cannot be reached by the linear spring-dashpot; allowed: (0.1354, 1]");

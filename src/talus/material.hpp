@@ -19,6 +19,8 @@ struct Material {
   /// LAMMPS' convention) and `restitution` is ignored by the linear law. Negative: not given.
   double normal_damping_rate = -1.0;
   double hertz_damping = 0.0; ///< A, s: dissipative constant of the viscoelastic Hertz law
+  /// A wall that does not deform: a contact with it has the other side's stiffness alone.
+  bool rigid = false;
 };
 
 /// Effective Young's modulus E* of a pair (Hertz): 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.

@@ -46,7 +46,7 @@ struct LinearSpringDashpot {
       return "material '" + m.name +
              "': normal_stiffness must be > 0 N/m for the linear normal law (or choose normal "
              "law 'hertz')";
-    if (!(m.normal_damping_rate >= 0.0 || m.restitution > std::exp(-2.0)))
+    if (!(m.normal_damping_rate >= 0.0 || m.restitution > linear_restitution_floor))
       return "material '" + m.name + "': restitution = " + std::to_string(m.restitution) +
              " cannot be reached by the never-attractive linear spring-dashpot; allowed: "
              "(0.1354, 1]";

@@ -53,8 +53,23 @@ template <class R> struct PairParametersOf {
 };
 using PairParameters = PairParametersOf<double>;
 
-/// The parameters of a contact between materials a and b (for a wall, b is its material).
+/// The parameters of a contact between materials a and b (for a wall, b is its material). A rigid
+/// material adds no compliance: against it the stiffness, E* and G* are the other material's
+/// alone (E* = E / (1 - nu^2), G* = E / (2 (2 - nu) (1 + nu)), k_n its own); restitution,
+/// friction and damping still mix by the mean. Two rigid materials never meet; their pair mixes
+/// as if neither were rigid, so that it stays finite.
 inline PairParameters mix(const Material& a, const Material& b) {
+  if (a.rigid != b.rigid) {
+    const Material& soft = a.rigid ? b : a;
+    Material wall = a.rigid ? a : b; // its dissipation and friction mix as usual
+    wall.rigid = false;
+    wall.normal_stiffness = soft.normal_stiffness; // (the harmonic mean is then soft's own)
+    PairParameters p = mix(soft, wall);
+    const double nu = soft.poisson;
+    p.effective_young = soft.young / (1.0 - nu * nu);
+    p.effective_shear = soft.young / (2.0 * (2.0 - nu) * (1.0 + nu));
+    return p;
+  }
   PairParameters p;
   const auto mean = [](double x, double y) { return 0.5 * (x + y); };
   if (a.normal_stiffness > 0.0 && b.normal_stiffness > 0.0)
@@ -64,10 +79,10 @@ inline PairParameters mix(const Material& a, const Material& b) {
   if (a.normal_damping_rate >= 0.0 || b.normal_damping_rate >= 0.0) {
     p.damping_rate =
         mean(std::max(a.normal_damping_rate, 0.0), std::max(b.normal_damping_rate, 0.0));
-  } else {
+  } else if (p.restitution > linear_restitution_floor) {
     p.damping_sqrt_coeff =
         2.0 * linear_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
-  }
+  } // below the floor only the Hertz law reaches e; the linear law's material check refuses it
   p.tangential_stiffness_ratio = mean(a.tangential_stiffness_ratio, b.tangential_stiffness_ratio);
   p.tangential_damping = mean(a.tangential_damping, b.tangential_damping);
   p.friction = mean(a.friction, b.friction);

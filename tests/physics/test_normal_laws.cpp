@@ -128,6 +128,26 @@ TEST(HertzLaw, ViscoelasticRestitutionFollowsRamirez) {
   }
 }
 
+// The Hertz law reaches any restitution in (0, 1], below the linear law's floor exp(-2) too: a
+// material with e = 0.1 or 0.05 mixes (the linear dashpot is not derived for it) and a head-on
+// collision at the impact speed rebounds with it. Tolerance 1e-3 (absolute): strong damping
+// makes the grains part mid-step, resolved here with t_c / 1000.
+TEST(HertzLaw, AnyRestitutionIsReachedBelowTheLinearFloor) {
+  const double v = 0.5, mass = shape_mass(Shape::sphere, r, 2650.0);
+  for (const double e : {0.1, 0.05}) {
+    Material m = hertz_material();
+    m.restitution = e, m.hertz_damping = -1.0;
+    HertzViscoelastic::resolve_damping(m, 0.5 * mass, 0.5 * r, v);
+    EXPECT_EQ(HertzViscoelastic::material_error(m), "");
+    EXPECT_NE(LinearSpringDashpot::material_error(m), "") << "the linear law cannot reach it";
+    const PairParameters p = mix(m, m); // no longer refused with the linear law's message
+    const double tc = HertzViscoelastic::collision_time(p, 0.5 * mass, 0.5 * r, v);
+    const Outcome o =
+        head_on(m, law_id<HertzViscoelastic>, Integrator::gear, v, tc / 1000.0, Shape::sphere);
+    EXPECT_NEAR(o.restitution, e, 1e-3) << "e = " << e;
+  }
+}
+
 TEST(HertzLaw, DampingForRestitutionInvertsRestitution) {
   const double m_eff = 1.0e-5, rho = hertz_rho(5.0e7, 5.0e-4);
   for (const double e : {0.95, 0.8, 0.5}) {

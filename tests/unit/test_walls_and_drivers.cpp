@@ -6,6 +6,7 @@
 
 #include "analysis/observables.hpp"
 #include "simulation/simulation.hpp"
+#include "talus/closed_forms.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -251,6 +252,55 @@ TEST(Materials, MixingRulesAndValidation) {
     EXPECT_NE(what.find("restitution"), std::string::npos);
     EXPECT_NE(what.find("(0, 1]"), std::string::npos);
   }
+}
+
+// A rigid wall adds no compliance: the pair has the grain's stiffness alone, whichever side the
+// wall is on; two rigid materials (which never meet) still mix to finite values.
+TEST(Materials, RigidWallHasTheGrainsStiffnessAlone) {
+  Material grain, wall;
+  grain.young = 1e9, grain.poisson = 0.25, grain.normal_stiffness = 2e5, grain.friction = 0.2;
+  wall.young = 1e30, wall.poisson = 0.1, wall.normal_stiffness = 1e30, wall.friction = 0.6;
+  wall.rigid = true;
+  for (const PairParameters& p : {mix(grain, wall), mix(wall, grain)}) {
+    EXPECT_DOUBLE_EQ(p.effective_young, 1e9 / (1.0 - 0.0625));
+    EXPECT_DOUBLE_EQ(p.effective_shear, 1e9 / (2.0 * 1.75 * 1.25));
+    EXPECT_DOUBLE_EQ(p.normal_stiffness, 2e5);
+    EXPECT_DOUBLE_EQ(p.friction, 0.4); // friction and dissipation mix as for any pair
+  }
+  const PairParameters both = mix(wall, wall);
+  EXPECT_TRUE(std::isfinite(both.effective_young) && std::isfinite(both.normal_stiffness));
+}
+
+// A grain dropped on a rigid floor with the linear law: the overlap lasts the closed-form time of
+// the never-attractive spring-dashpot with the grain's own k_n and mass, and the rebound keeps the
+// asked restitution. Tolerances: the contact's start and end are seen to within a step (t_c /
+// 1000), and the restitution to 1e-3, the bound.
+TEST(SegmentWalls, ImpactOnARigidWallHasTheGrainsCollisionTime) {
+  Material grain = stiff(), wall;
+  grain.restitution = 0.7;
+  wall.rigid = true;
+  wall.normal_stiffness = 1e30;
+  wall.restitution = 0.7; // the pair's restitution is the mean of the two materials'
+  World w;
+  w.materials = {grain, wall};
+  w.add_wall({-0.05, 0.0}, {0.05, 0.0}, 1);
+  const double v = 0.5;
+  w.add_particle({.position = {0.0, 1.0e-3 + 1e-6}, .radius = 1e-3, .velocity = {0.0, -v}});
+  const double m = w.particles.mass[0], k = grain.normal_stiffness;
+  const double eta = 2.0 * linear_damping_ratio(0.7) * std::sqrt(k * m);
+  const double tc = linear_collision_time(k, eta, m);
+  Simulation s(std::move(w), config(tc / 1000.0));
+  const auto& p = s.world().particles;
+  double start = -1.0, end = -1.0;
+  for (int step = 0; step < 10'000 && end < 0.0; ++step) {
+    s.step();
+    const bool touching = p.position[0].y < p.radius[0];
+    if (touching && start < 0.0) start = s.time();
+    if (!touching && start >= 0.0) end = s.time();
+  }
+  ASSERT_GT(end, 0.0) << "no rebound";
+  EXPECT_NEAR(end - start, tc, 2.0 * tc / 1000.0);
+  EXPECT_NEAR(p.velocity[0].y / v, 0.7, 1e-3);
 }
 
 // A grain bouncing on a floor whose spring is far too stiff for the timestep (omega dt = 5)
