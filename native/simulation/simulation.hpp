@@ -2,6 +2,7 @@
 // The facade a user drives: owns the World, runs the stages of a step, calls observers.
 #include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <limits>
 #include <vector>
 
@@ -139,6 +140,9 @@ private:
   void correct(bool fuse, const PassReport& forces);
   /// Stage 6: the stability guard (non-finite state, overlap too deep, a grain escaped).
   void guard() const;
+  void describe_deepest_contact(std::ostringstream& msg) const;
+  /// A contact resolved in fewer steps than this is blamed on the timestep.
+  static constexpr double min_steps_per_contact = 10.0;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
   /// The neighbour list's drift test for the particles, after a pass that moved them at most

@@ -328,6 +328,53 @@ TEST(Stability, AnExplodingRunStopsWithADiagnosis) {
   }
 }
 
+// A grain at 5 m/s into a resting one, with the timestep at the collision time / 50 and 6% of a
+// radius per step: the contact is resolved, and no timestep stops the grains from
+// overlapping past half a radius at that speed (this stiffness allows about 2.5 m/s). The guard
+// says so and proposes no timestep.
+TEST(Stability, AnImpactTooFastForTheStiffnessIsNotBlamedOnTheTimestep) {
+  World w;
+  Material m = stiff();
+  m.restitution = 1.0;
+  w.materials = {m};
+  w.add_particle({.position = {0.0, 0.0}, .radius = 1e-3, .velocity = {5.0, 0.0}});
+  w.add_particle({.position = {2.1e-3, 0.0}, .radius = 1e-3});
+  const double m_eff = 0.5 * w.particles.mass[0];
+  const double tc = std::numbers::pi * std::sqrt(m_eff / m.normal_stiffness);
+  Simulation s(std::move(w), config(tc / 50.0));
+  try {
+    s.run(10'000);
+    FAIL() << "no instability detected";
+  } catch (const InstabilityError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the timestep is not the cause"), std::string::npos) << what;
+    EXPECT_NE(what.find("an impact faster than about 2.4"), std::string::npos) << what;
+    EXPECT_EQ(what.find("would resolve it"), std::string::npos) << what; // no timestep proposed
+  }
+}
+
+// The same at 60 m/s: now one step closes 0.77 of a radius, and that is the timestep's fault; the
+// guard proposes a timestep, smaller than the one in use.
+TEST(Stability, AnImpactTooFastForTheTimestepGetsASmallerOne) {
+  World w;
+  Material m = stiff();
+  w.materials = {m};
+  w.add_particle({.position = {0.0, 0.0}, .radius = 1e-3, .velocity = {60.0, 0.0}});
+  w.add_particle({.position = {2.1e-3, 0.0}, .radius = 1e-3});
+  const double dt = std::numbers::pi * std::sqrt(0.5 * w.particles.mass[0] / 1e5) / 50.0;
+  Simulation s(std::move(w), config(dt));
+  try {
+    s.run(10'000);
+    FAIL() << "no instability detected";
+  } catch (const InstabilityError& e) {
+    const std::string what = e.what();
+    const auto at = what.find("a timestep of about ");
+    ASSERT_NE(at, std::string::npos) << what;
+    EXPECT_NE(what.find("too large for this speed"), std::string::npos) << what;
+    EXPECT_LT(std::stod(what.substr(at + 20)), dt) << what;
+  }
+}
+
 } // namespace
 } // namespace talus
 
