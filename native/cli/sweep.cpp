@@ -86,7 +86,7 @@ std::map<std::string, double> last_thermo_row(const fs::path& file) {
 }
 
 std::string status_of(const std::string& ended_by) {
-  if (ended_by == "duration") return "finished";
+  if (ended_by == "duration" || ended_by == "cycles") return "finished"; // cycles: frost front
   if (ended_by == "signal") return "interrupted";
   if (ended_by == "stop_at") return "stopped";
   return ended_by; // unstable, write_error
