@@ -16,9 +16,7 @@
 
 #include <fmt/core.h>
 
-#include "cli/analyses.hpp"
 #include "cli/run_folder.hpp"
-#include "cli/scenario_source.hpp"
 #include "cli/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/load.hpp"
