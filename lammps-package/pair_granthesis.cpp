@@ -68,12 +68,14 @@ const PairParameters& PairGranthesis::parameters(int i, int j) const {
   return pair_[slot(i, j)];
 }
 
-// pair_style granthesis NORMAL TANGENTIAL
+// pair_style granthesis NORMAL TANGENTIAL [impact_speed V]
 void PairGranthesis::settings(int narg, char** arg) {
   const std::string usage =
-      "usage: pair_style granthesis NORMAL TANGENTIAL; NORMAL: " + law_names<NormalLaw>() +
-      "; TANGENTIAL: " + history_free_tangential_names();
-  if (narg != 2) fail(usage);
+      "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V]; NORMAL: " +
+      law_names<NormalLaw>() + "; TANGENTIAL: " + history_free_tangential_names() +
+      "; V: the impact speed (m/s, > 0, default 1) at which a Hertz damping left to be derived "
+      "(hertz_damping -1) reaches the restitution";
+  if (narg != 2 && narg != 4) fail(usage);
   try {
     normal_ = parse_normal_law(arg[0]);
     tangential_ = parse_tangential_law(arg[1]);
@@ -84,6 +86,12 @@ void PairGranthesis::settings(int narg, char** arg) {
     fail("tangential law '" + std::string(arg[1]) +
          "' keeps a contact history, which this pair style does not yet store; allowed: " +
          history_free_tangential_names());
+  impact_speed_ = 1.0;
+  if (narg == 4) {
+    const std::optional<double> v = finite_number(arg[3]);
+    if (std::string(arg[2]) != "impact_speed" || !v || !(*v > 0.0)) fail(usage);
+    impact_speed_ = *v;
+  }
 }
 
 // pair_coeff I J key value ...: I = J (or a range through both) sets the materials of those types;
@@ -108,7 +116,7 @@ void PairGranthesis::coeff(int narg, char** arg) {
       if (i == j) {
         material_[static_cast<std::size_t>(i)] = m;
       } else {
-        pair_[ij] = mix(m, m);
+        pair_[ij] = mix(m, m, impact_speed_);
         explicit_pair_[ij] = 1;
       }
       if (i == j) given_[static_cast<std::size_t>(i)] = 1;
@@ -124,7 +132,6 @@ void PairGranthesis::init_style() {
   if (!allocated)
     fail("no pair_coeff given (pair_coeff I I key value ...; keys: " + pair_coefficient_names() +
          ")");
-  const bool hertz = normal_ == law_id<HertzViscoelastic>;
   for (int i = 1; i <= ntypes_; ++i) {
     if (given_[static_cast<std::size_t>(i)] == 0)
       fail("no pair_coeff for type " + std::to_string(i) + " (pair_coeff " + std::to_string(i) +
@@ -133,10 +140,6 @@ void PairGranthesis::init_style() {
     const std::string problem =
         with_normal_law(normal_, [&]<class N>() { return N::material_error(m); });
     if (!problem.empty()) fail("type " + std::to_string(i) + ": " + problem);
-    if (hertz && m.hertz_damping < 0.0)
-      fail("type " + std::to_string(i) +
-           ": the hertz law needs hertz_damping (s) >= 0 in LAMMPS (the native engine derives it "
-           "from the restitution at its impact speed; talus export lammps writes that value)");
   }
   if (domain->dimension == 3 && comm->me == 0)
     warn(error,
@@ -153,7 +156,8 @@ void PairGranthesis::init_style() {
 double PairGranthesis::init_one(int i, int j) {
   const std::size_t ij = slot(i, j);
   if (!explicit_pair_[ij])
-    pair_[ij] = mix(material_[static_cast<std::size_t>(i)], material_[static_cast<std::size_t>(j)]);
+    pair_[ij] = mix(material_[static_cast<std::size_t>(i)], material_[static_cast<std::size_t>(j)],
+                    impact_speed_);
   pair_[slot(j, i)] = pair_[ij];
   // The reach of a pair is the sum of the radii; the half list needs the largest (finitecutflag:
   // LAMMPS adds the skin)
@@ -254,6 +258,7 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
 void PairGranthesis::write_restart_settings(FILE* file) {
   const int laws[2] = {static_cast<int>(normal_), static_cast<int>(tangential_)};
   std::fwrite(laws, sizeof(int), 2, file);
+  std::fwrite(&impact_speed_, sizeof(double), 1, file);
 }
 
 void PairGranthesis::read_settings(FILE* file) {
@@ -262,6 +267,8 @@ void PairGranthesis::read_settings(FILE* file) {
   MPI_Bcast(laws, 2, MPI_INT, 0, world);
   normal_ = static_cast<NormalLaw>(laws[0]);
   tangential_ = static_cast<TangentialLaw>(laws[1]);
+  if (comm->me == 0) read_restart_items(lmp, &impact_speed_, sizeof(double), 1, file);
+  MPI_Bcast(&impact_speed_, 1, MPI_DOUBLE, 0, world);
 }
 
 // Per type pair (i <= j): whether it was set, whether it was given explicitly, then the material

@@ -69,6 +69,7 @@ private:
 
   NormalLaw normal_ = law_id<HertzViscoelastic>;
   TangentialLaw tangential_ = law_id<ViscousCoulomb>;
+  double impact_speed_ = 1.0; ///< m/s: where a derived Hertz damping reaches the restitution
   int ntypes_ = 0;
   std::vector<Material> material_;   ///< per type, 1-based
   std::vector<PairParameters> pair_; ///< (ntypes + 1)^2: mixed or given per pair

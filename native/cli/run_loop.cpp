@@ -21,6 +21,7 @@
 #include "io/thesis_format.hpp"
 #include "io/vtk.hpp"
 #include "render/snapshot_png.hpp"
+#include "scenario/contact_pairs.hpp"
 #include "scenario/frost_setup.hpp"
 #include "scenario/load.hpp"
 
@@ -572,6 +573,9 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   book.bounds = built.bounds;
   book.settle_time = built.settle_time;
   book.collision_time = built.collision_time;
+  // the resolved scenario, now with the dampers derived for the built grains
+  write_file_atomically((folder.path() / "scenario.toml").string(),
+                        to_toml(s) + describe_contact_pairs(built.world, built.config));
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   report_threads(sim, o);
   Run run(s, std::move(sim), std::move(book), folder.path(), o);

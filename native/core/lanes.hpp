@@ -69,6 +69,9 @@ template <> struct Number<Lanes> {
     return reinterpret_cast<Lanes>((reinterpret_cast<LaneMask>(size) & ~lane_sign_bit) |
                                    (reinterpret_cast<LaneMask>(sign) & lane_sign_bit));
   }
+  static Lanes power(Lanes x, double y) { // no SIMD pow: lane by lane, as the scalar code
+    return Lanes{std::pow(x[0], y), std::pow(x[1], y)};
+  }
   static bool all_zero(Lanes x) {
     return x[0] == 0.0 && x[1] == 0.0;
   }

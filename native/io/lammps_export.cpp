@@ -234,8 +234,12 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
 }
 
 std::string pair_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
-  std::string out = fmt::format("pair_style granthesis {} {}\n", name_of(s.simulation.normal_law),
-                                name_of(s.simulation.tangential_law));
+  // a Hertz damping left to be derived is derived by LAMMPS as natively, per contact
+  std::string out = fmt::format("pair_style granthesis {} {}{}\n", name_of(s.simulation.normal_law),
+                                name_of(s.simulation.tangential_law),
+                                s.simulation.normal_law == law_id<HertzViscoelastic>
+                                    ? fmt::format(" impact_speed {}", s.simulation.impact_speed)
+                                    : std::string());
   for (std::size_t k = 0; k < t.key_of.size(); ++k)
     out += fmt::format(
         "pair_coeff {0} {0} {1}\n", k + 1,

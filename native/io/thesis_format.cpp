@@ -1,5 +1,6 @@
 #include "io/thesis_format.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "scenario/toml_reader.hpp"
+#include "talus/closed_forms.hpp"
 
 namespace talus {
 
@@ -24,6 +26,17 @@ std::optional<NormalLaw> law_of_thesis_tag(int tag) {
 }
 int thesis_tag_of(NormalLaw law) {
   return with_normal_law(law, []<class N>() { return N::thesis_force_law; });
+}
+// A particle's damping column: the linear law's gamma_n, or 1.5 A for Hertz. The thesis' A is
+// one per particle: a damping derived from the restitution is written as the A of the particle
+// against its own kind (m_eff = m/2, R* = R/2) at the impact speed.
+double thesis_damping(const Material& m, bool hertz, double mass, double radius,
+                      double impact_speed) {
+  if (!hertz) return std::max(m.normal_damping_rate, 0.0);
+  if (m.hertz_damping >= 0.0) return 1.5 * m.hertz_damping;
+  return 1.5 * hertz_damping_for_restitution(m.restitution, 0.5 * mass,
+                                             hertz_rho(effective_young(m, m), 0.5 * radius),
+                                             impact_speed);
 }
 } // namespace
 
@@ -177,7 +190,7 @@ ThesisFile thesis_from_scenario(const Scenario& s) {
                            e.angular_velocity, mass, e.radius, e.kind == "free" ? 0 : 1,
                            m->friction, m->tangential_damping * 0.5 * mass,
                            hertz ? m->young / 1.5 : m->normal_stiffness,
-                           hertz ? m->hertz_damping * 1.5 : std::max(m->normal_damping_rate, 0.0)});
+                           thesis_damping(*m, hertz, mass, e.radius, s.simulation.impact_speed)});
   }
   return f;
 }
@@ -203,7 +216,7 @@ std::string thesis_out_block(const Simulation& sim) {
                        p.velocity[i].y, p.angular_velocity[i], p.mass[i], p.radius[i], type,
                        m.friction, m.tangential_damping * 0.5 * p.mass[i],
                        hertz ? m.young / 1.5 : m.normal_stiffness,
-                       hertz ? m.hertz_damping * 1.5 : std::max(m.normal_damping_rate, 0.0));
+                       thesis_damping(m, hertz, p.mass[i], p.radius[i], sim.config().impact_speed));
   }
   return out;
 }

@@ -24,7 +24,8 @@ void validate(const Material& m) {
         m.normal_stiffness);
   check(m.tangential_stiffness_ratio > 0.0, m, "tangential_stiffness_ratio", "> 0",
         m.tangential_stiffness_ratio);
-  check(m.hertz_damping >= 0.0, m, "hertz_damping", ">= 0 s", m.hertz_damping);
+  check(m.hertz_damping >= -1.0, m, "hertz_damping", ">= 0 s (or -1: from restitution)",
+        m.hertz_damping);
 }
 
 } // namespace talus

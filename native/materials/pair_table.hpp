@@ -12,7 +12,9 @@ namespace talus {
 class PairTable {
 public:
   PairTable() = default;
-  explicit PairTable(const std::vector<Material>& materials);
+  /// The pairs of `materials`; a Hertz damping left to be derived reaches the restitution at
+  /// `impact_speed` (m/s).
+  PairTable(const std::vector<Material>& materials, double impact_speed);
 
   std::size_t material_count() const { return n_; }
   const PairParameters& operator()(std::uint16_t a, std::uint16_t b) const {

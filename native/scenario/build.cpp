@@ -32,13 +32,11 @@ double grain_mass(const Scenario& s, const Material& m, double r) {
   return shape_mass(s.particles.shape, r, m.density);
 }
 
-// A damping left to be derived from the restitution (Hertz' A), at the reference impact speed,
-// for a pair of mean grains.
-void resolve_damping(const Scenario& s, std::vector<Material>& materials, double r_mean) {
+// A damping left to be derived from the restitution that the normal law does not use (the linear
+// law's Hertz A) set to zero; Hertz' A stays to be derived per contact.
+void resolve_damping(const Scenario& s, std::vector<Material>& materials) {
   with_normal_law(s.simulation.normal_law, [&]<class N>() {
-    for (Material& m : materials)
-      N::resolve_damping(m, 0.5 * grain_mass(s, m, r_mean), 0.5 * r_mean,
-                         s.simulation.impact_speed);
+    for (Material& m : materials) N::resolve_damping(m);
   });
 }
 
@@ -193,7 +191,7 @@ double shortest_collision_time(const Scenario& s, const World& w, double r_min) 
   double shortest = std::numeric_limits<double>::max();
   for (const MeetingPair& m : meeting_pairs(w)) {
     const Material &a = w.materials[m.a], &b = w.materials[m.b];
-    const PairParameters p = mix(a, b);
+    const PairParameters p = mix(a, b, s.simulation.impact_speed);
     // against a wall: the grain's own mass and radius (a segment is flat and immovable)
     const double m_eff = m.wall ? grain_mass(s, a, r_min)
                                 : 0.5 * std::min(grain_mass(s, a, r_min), grain_mass(s, b, r_min));
@@ -216,17 +214,15 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   check_memory(s.particles.count + s.particles.list.size());
   check_start_overlaps(s);
 
-  // grain sizes first: they set the wall particle radius, the timestep and the Hertz damping
+  // grain sizes first: they set the wall particle radius and the timestep
   std::vector<double> radii(s.particles.count);
   for (double& r : radii) r = draw_radius(s.particles.size, rng);
-  double r_min = std::numeric_limits<double>::max(), r_sum = 0.0;
-  for (const double r : radii) r_min = std::min(r_min, r), r_sum += r;
+  double r_min = std::numeric_limits<double>::max();
+  for (const double r : radii) r_min = std::min(r_min, r);
   for (const ExplicitParticle& e : s.particles.list)
-    if (e.kind == "free") r_min = std::min(r_min, e.radius), r_sum += e.radius;
-  const std::size_t n_grains = radii.size() + s.particles.list.size();
-  if (n_grains == 0)
+    if (e.kind == "free") r_min = std::min(r_min, e.radius);
+  if (radii.size() + s.particles.list.size() == 0)
     throw ScenarioError("key 'particles.count': a scenario needs grains (count > 0 or a list)");
-  const double r_mean = r_sum / static_cast<double>(n_grains);
   // the sizes a grain can have (not only those drawn this time) decide what a gap lets through
   double r_small = std::numeric_limits<double>::max(), r_large = 0.0;
   if (s.particles.count > 0) std::tie(r_small, r_large) = radius_range(s.particles.size);
@@ -234,7 +230,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     if (e.kind == "free")
       r_small = std::min(r_small, e.radius), r_large = std::max(r_large, e.radius);
   check_wall_gaps(s, r_small, r_large);
-  resolve_damping(s, w.materials, r_mean);
+  resolve_damping(s, w.materials);
 
   // container
   const ContainerShape shape = build_container(s.geometry);
@@ -329,6 +325,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   c.tangential_law = s.simulation.tangential_law;
   c.threads = s.simulation.threads;
   c.skin = s.simulation.skin;
+  c.impact_speed = s.simulation.impact_speed;
   // the frost models keep per-particle state of their own by index: no renumbering under them
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
@@ -340,7 +337,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     for (const MeetingPair& m : pairs)
       m_min = std::min(m_min, 0.5 * grain_mass(s, w.materials[m.a], r_min));
     for (const MeetingPair& m : pairs) {
-      const PairParameters p = mix(w.materials[m.a], w.materials[m.b]);
+      const PairParameters p = mix(w.materials[m.a], w.materials[m.b], s.simulation.impact_speed);
       const double k = with_normal_law(c.normal_law, [&]<class N>() {
         return N::peak_stiffness(p, m.wall ? 2.0 * m_min : m_min, m.wall ? r_min : 0.5 * r_min,
                                  s.simulation.impact_speed);

@@ -50,7 +50,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
               verlet_lag(config.verlet_velocity)),
       time_(state.time), steps_(state.steps) {
   validate_setup(world_, config_);
-  pairs_ = PairTable(world_.materials);
+  pairs_ = PairTable(world_.materials, config_.impact_speed);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
   const std::size_t per_thread = std::max<std::size_t>(1, config_.min_particles_per_thread);
   const auto useful = static_cast<int>(std::min<std::size_t>(

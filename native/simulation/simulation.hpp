@@ -23,7 +23,9 @@ struct SimulationConfig {
   TangentialLaw tangential_law = law_id<CundallStrack>;
   VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< velocity Verlet's damper velocity
   double skin = 0.0; ///< m; 0: automatic, chosen at every build (neighbours/skin.hpp)
-  int threads = 0;   ///< 0: all cores (OpenMP default)
+  /// m/s: the impact speed at which a Hertz damping derived from the restitution reaches it
+  double impact_speed = 1.0;
+  int threads = 0; ///< 0: all cores (OpenMP default)
   /// Fewer particles than this per thread is not worth the threads' overhead: small systems
   /// use fewer threads (the results are bit-identical whatever the count).
   std::size_t min_particles_per_thread = 500;

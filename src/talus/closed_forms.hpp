@@ -12,6 +12,8 @@
 // Hertzian viscoelastic, m xi'' = -rho (xi^3/2 + 3/2 A sqrt(xi) xi'), rho = 4/3 E* sqrt(R*).
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <string>
 
@@ -136,23 +138,66 @@ inline double hertz_restitution(double damping_A, double m_eff, double rho, doub
   return closed_form_detail::dimensionless_restitution(1.5 * damping_A * impact_speed / xi_star);
 }
 
-/// The A that gives restitution e at impact speed v (inverse of hertz_restitution, by bisection).
+/// The dimensionless damping D = 3/2 A v / xi* that gives restitution e in (0, 1]: the
+/// viscoelastic law's restitution depends on the pair, its A and the impact speed only through D,
+/// so one D serves every pair of that restitution. Found by the Illinois variant of regula falsi
+/// on ln e(D), to a relative 1e-12 of D; each restitution is solved once per process.
+inline double hertz_dimensionless_damping(double restitution) {
+  require(restitution > 0.0 && restitution <= 1.0,
+          "restitution = " + std::to_string(restitution) + " is out of range; allowed: (0, 1]");
+  if (restitution == 1.0) return 0.0;
+  static std::mutex guard;
+  static std::map<double, double> solved;
+  {
+    const std::lock_guard<std::mutex> lock(guard);
+    if (const auto it = solved.find(restitution); it != solved.end()) return it->second;
+  }
+  const double target = std::log(restitution);
+  const auto miss = [&](double D) {
+    return std::log(closed_form_detail::dimensionless_restitution(D)) - target;
+  };
+  double lo = 0.0, f_lo = -target, hi = 1.0, f_hi = miss(hi);
+  while (f_hi > 0.0) {
+    lo = hi, f_lo = f_hi, hi *= 4.0;
+    require(hi < 1e9, "hertz_dimensionless_damping: no damping reaches that restitution");
+    f_hi = miss(hi);
+  }
+  int kept_side = 0; // which end stayed on the last step: Illinois halves its value then
+  double D = hi;
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * hi; ++it) {
+    D = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    const double f = miss(D);
+    if (f == 0.0) break;
+    if (f > 0.0) { // D is below the root: it becomes lo
+      lo = D, f_lo = f;
+      if (kept_side == 1) f_hi *= 0.5;
+      kept_side = 1;
+    } else {
+      hi = D, f_hi = f;
+      if (kept_side == -1) f_lo *= 0.5;
+      kept_side = -1;
+    }
+  }
+  const std::lock_guard<std::mutex> lock(guard);
+  solved.emplace(restitution, D);
+  return D;
+}
+
+/// The A that gives restitution e at impact speed v for a pair of m_eff and rho:
+/// A = 2/3 D(e) xi* / v, xi* = (m_eff v^2 / rho)^(2/5).
 inline double hertz_damping_for_restitution(double restitution, double m_eff, double rho,
                                             double impact_speed) {
-  require(restitution > 0.0 && restitution <= 1.0, "restitution must be in (0, 1]");
-  if (restitution == 1.0) return 0.0;
+  require(m_eff > 0.0 && rho > 0.0 && impact_speed > 0.0,
+          "hertz_damping_for_restitution: m_eff > 0, rho > 0 and impact speed > 0 are required");
   const double xi_star = std::pow(m_eff * impact_speed * impact_speed / rho, 0.4);
-  const double scale = xi_star / impact_speed; // A in units of the contact's time scale
-  double lo = 0.0, hi = scale;
-  while (hertz_restitution(hi, m_eff, rho, impact_speed) > restitution) {
-    hi *= 2.0;
-    require(hi < 1e6 * scale, "hertz_damping_for_restitution: no damping reaches that restitution");
-  }
-  for (int it = 0; it < 60; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (hertz_restitution(mid, m_eff, rho, impact_speed) > restitution ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return hertz_dimensionless_damping(restitution) * xi_star / (1.5 * impact_speed);
+}
+
+/// The factor c of A = c (m_eff / rho)^(2/5) that gives restitution e at impact speed v for any
+/// pair: c = 2/3 D(e) v^(-1/5).
+inline double hertz_damping_scale(double restitution, double impact_speed) {
+  require(impact_speed > 0.0, "hertz_damping_scale: impact speed > 0 is required");
+  return hertz_dimensionless_damping(restitution) / (1.5 * std::pow(impact_speed, 0.2));
 }
 
 } // namespace talus

@@ -54,8 +54,7 @@ struct LinearSpringDashpot {
   }
   /// Fills in a damping left to be derived (negative): the linear law takes its damping from the
   /// restitution when the pair is mixed, so the Hertz constant is unused.
-  static void resolve_damping(Material& m, double /*m_eff*/, double /*r_eff*/,
-                              double /*impact_speed*/) {
+  static void resolve_damping(Material& m) {
     if (m.hertz_damping < 0.0) m.hertz_damping = 0.0;
   }
 };
@@ -69,7 +68,9 @@ struct HertzViscoelastic {
   template <class P, class G> static auto force(const P& p, const G& g) {
     const auto rho = 4.0 / 3.0 * p.effective_young * square_root(g.r_eff);
     const auto s = square_root(g.overlap);
-    return not_below_zero(rho * s * (g.overlap + 1.5 * p.hertz_damping * g.overlap_rate()));
+    auto A = p.hertz_damping;
+    if (!all_zero(p.hertz_damping_scale)) A = A + p.hertz_damping_scale * power(g.m_eff / rho, 0.4);
+    return not_below_zero(rho * s * (g.overlap + 1.5 * A * g.overlap_rate()));
   }
   /// Tangent stiffness dF/dxi = 2 E* sqrt(R* xi), used to scale a linear tangential spring.
   template <class P, class G> static auto stiffness(const P& p, const G& g) {
@@ -91,15 +92,9 @@ struct HertzViscoelastic {
     return 1.5 * rho * std::sqrt(hertz_max_overlap(m_eff, rho, impact_speed));
   }
   static std::string material_error(const Material&) { return {}; }
-  /// A from the restitution at the reference impact speed, for a contact of m_eff and r_eff.
-  static void resolve_damping(Material& m, double m_eff, double r_eff, double impact_speed) {
-    if (m.hertz_damping >= 0.0) return;
-    m.hertz_damping =
-        m.restitution >= 1.0
-            ? 0.0
-            : hertz_damping_for_restitution(m.restitution, m_eff,
-                                            hertz_rho(effective_young(m, m), r_eff), impact_speed);
-  }
+  /// A damping left to be derived (negative) stays so: the pair's A is then derived per contact
+  /// from the restitution (mix_hertz_damping).
+  static void resolve_damping(Material&) {}
 };
 
 } // namespace talus

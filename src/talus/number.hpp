@@ -14,6 +14,7 @@ template <> struct Number<double> {
   static double select(bool condition, double a, double b) { return condition ? a : b; }
   static double magnitude(double x) { return std::abs(x); }
   static double copy_sign(double size, double sign) { return std::copysign(size, sign); }
+  static double power(double x, double y) { return std::pow(x, y); }
   /// Whether every element is zero (a shortcut the laws may take for all of them at once).
   static bool all_zero(double x) { return x == 0.0; }
 };
@@ -31,6 +32,10 @@ template <class R> R magnitude(R x) {
 /// The magnitude of `size` with the sign of `sign` (std::copysign).
 template <class R> R copy_sign(R size, R sign) {
   return Number<R>::copy_sign(size, sign);
+}
+/// x to the power y (std::pow), y the same for every element.
+template <class R> R power(R x, double y) {
+  return Number<R>::power(x, y);
 }
 template <class R> bool all_zero(R x) {
   return Number<R>::all_zero(x);

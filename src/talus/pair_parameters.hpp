@@ -14,7 +14,9 @@ namespace talus {
 
 /// Mixing rules (see docs/model.md): moduli by the Hertz and Mindlin series rules; stiffness k_n
 /// by the harmonic mean (a material paired with itself keeps its own k_n); restitution, friction
-/// and damping by the arithmetic mean.
+/// and damping by the arithmetic mean. A linear dashpot and a Hertz damping left to be derived
+/// give the pair's mean restitution exactly, for any masses and sizes (the Hertz one at the
+/// reference impact speed).
 template <class R> struct PairParametersOf {
   R normal_stiffness{};                           ///< k_n, N/m
   R damping_rate{};                               ///< gamma_n, 1/s: eta_n += gamma_n m_eff
@@ -24,8 +26,10 @@ template <class R> struct PairParametersOf {
   R friction{};                                   ///< mu
   R effective_young{};                            ///< E*, Pa
   R effective_shear{};                            ///< G*, Pa
-  R hertz_damping{};                              ///< A, s
-  R restitution = R{} + 1.0;                      ///< the mixed e (informational for the Hertz law)
+  R hertz_damping{};                              ///< A, s: the constant part of A
+  /// c, the part of A derived from the restitution: A += c (m_eff / rho)^(2/5) per contact
+  R hertz_damping_scale{};
+  R restitution = R{} + 1.0; ///< the mixed e (informational for the Hertz law)
 
   /// Linear dashpot coefficient eta_n (kg/s) for a pair of reduced mass m_eff.
   R normal_dashpot(R m_eff) const {
@@ -48,23 +52,43 @@ template <class R> struct PairParametersOf {
             f(a.effective_young, b.effective_young),
             f(a.effective_shear, b.effective_shear),
             f(a.hertz_damping, b.hertz_damping),
+            f(a.hertz_damping_scale, b.hertz_damping_scale),
             f(a.restitution, b.restitution)};
   }
 };
 using PairParameters = PairParametersOf<double>;
+
+/// The Hertz damping of a pair: the mean of the materials' A, where a material leaves A to be
+/// derived (negative) its part is the A that reaches a restitution at `impact_speed`, per contact
+/// (closed_forms.hpp: A = c (m_eff / rho)^(2/5)): the pair's mean restitution when neither gives
+/// A, the other material's own when one does.
+inline void mix_hertz_damping(PairParameters& p, const Material& a, const Material& b,
+                              double impact_speed) {
+  const bool a_derived = a.hertz_damping < 0.0, b_derived = b.hertz_damping < 0.0;
+  if (!a_derived && !b_derived) {
+    p.hertz_damping = 0.5 * (a.hertz_damping + b.hertz_damping);
+  } else if (a_derived && b_derived) {
+    p.hertz_damping_scale = hertz_damping_scale(p.restitution, impact_speed);
+  } else {
+    const Material& given = a_derived ? b : a;
+    const Material& derived = a_derived ? a : b;
+    p.hertz_damping = 0.5 * given.hertz_damping;
+    p.hertz_damping_scale = 0.5 * hertz_damping_scale(derived.restitution, impact_speed);
+  }
+}
 
 /// The parameters of a contact between materials a and b (for a wall, b is its material). A rigid
 /// material adds no compliance: against it the stiffness, E* and G* are the other material's
 /// alone (E* = E / (1 - nu^2), G* = E / (2 (2 - nu) (1 + nu)), k_n its own); restitution,
 /// friction and damping still mix by the mean. Two rigid materials never meet; their pair mixes
 /// as if neither were rigid, so that it stays finite.
-inline PairParameters mix(const Material& a, const Material& b) {
+inline PairParameters mix(const Material& a, const Material& b, double impact_speed) {
   if (a.rigid != b.rigid) {
     const Material& soft = a.rigid ? b : a;
     Material wall = a.rigid ? a : b; // its dissipation and friction mix as usual
     wall.rigid = false;
     wall.normal_stiffness = soft.normal_stiffness; // (the harmonic mean is then soft's own)
-    PairParameters p = mix(soft, wall);
+    PairParameters p = mix(soft, wall, impact_speed);
     const double nu = soft.poisson;
     p.effective_young = soft.young / (1.0 - nu * nu);
     p.effective_shear = soft.young / (2.0 * (2.0 - nu) * (1.0 + nu));
@@ -88,7 +112,7 @@ inline PairParameters mix(const Material& a, const Material& b) {
   p.friction = mean(a.friction, b.friction);
   p.effective_young = effective_young(a, b);
   p.effective_shear = effective_shear(a, b);
-  p.hertz_damping = mean(a.hertz_damping, b.hertz_damping);
+  mix_hertz_damping(p, a, b, impact_speed);
   return p;
 }
 

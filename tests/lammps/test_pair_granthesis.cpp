@@ -42,8 +42,9 @@ TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
                "density/disc");
   expect_error({"pair_style granthesis linear coulomb", "pair_coeff 1 1", "run 0"},
                "no pair_coeff for type 2");
-  expect_error({"pair_style granthesis hertz coulomb", "pair_coeff * *", "run 0"},
-               "needs hertz_damping");
+  expect_error({"pair_style granthesis hertz coulomb impact_speed -1"},
+               "impact_speed V]; NORMAL: linear, hertz");
+  expect_error({"pair_style granthesis hertz coulomb speed 1"}, "V: the impact speed (m/s, > 0");
   expect_error(
       {"comm_modify vel no", "pair_style granthesis linear coulomb", "pair_coeff * *", "run 0"},
       "comm_modify vel yes");

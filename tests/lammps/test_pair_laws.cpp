@@ -79,6 +79,20 @@ TEST(PairGranthesis, HertzCollisionMeetsTheClosedForms) {
               reference::roundoff_tolerance * mass * speed + 1e-20);
 }
 
+// A Hertz damping left to be derived (hertz_damping -1) reaches the asked restitution at the
+// pair_style's impact speed, as natively. Tolerance 1e-3 (absolute), the bound of
+// RestitutionAsAsked.* for the native engine.
+TEST(PairGranthesis, DerivedHertzDampingGivesTheRestitutionAtTheImpactSpeed) {
+  Material m = grains();
+  m.hertz_damping = -1.0, m.restitution = 0.6;
+  const double mass = 2.0e-4, m_eff = 0.5 * mass, radius = 0.005, speed = 0.1;
+  const double rho = hertz_rho(effective_young(m, m), 0.5 * radius);
+  const double tc = hertz_collision_time(m_eff, rho, 2.0 * speed);
+  const Collision c =
+      collide("hertz coulomb impact_speed 0.2", m, radius, mass, speed, tc / 2000.0);
+  EXPECT_NEAR(c.restitution, 0.6, 1e-3);
+}
+
 // An unknown coefficient stops the host with the key and the allowed ones, in LIGGGHTS as in
 // LAMMPS (test_pair_granthesis.cpp has the rest of LAMMPS' bad input).
 TEST(PairGranthesis, UnknownCoefficientNamesTheAllowedKeys) {

@@ -30,7 +30,7 @@ PairParameters params() {
   m.poisson = 0.3;
   m.normal_stiffness = 1e4;
   m.friction = 0.5;
-  return mix(m, m);
+  return mix(m, m, 1.0);
 }
 
 TEST(TangentialLaws, MindlinStiffnessIsEightGStarSqrtRXi) {

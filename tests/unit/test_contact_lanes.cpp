@@ -60,7 +60,7 @@ std::vector<PairParameters> parameter_sets() {
   b.hertz_damping = 2e-5;
   c.young = 5e7, c.poisson = 0.25, c.hertz_damping = 1e-5, c.tangential_damping = 20.0;
   c.normal_stiffness = 2e5, c.friction = 0.8, c.restitution = 0.7;
-  return {mix(a, a), mix(b, b), mix(b, c)};
+  return {mix(a, a, 1.0), mix(b, b, 1.0), mix(b, c, 1.0)};
 }
 
 // `with_friction`: the law reaches the Coulomb limit (not so for the frictionless law)

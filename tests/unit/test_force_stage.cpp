@@ -72,7 +72,7 @@ TEST(ForceStage, AddsEveryTouchingPairOnceToEachPartner) {
     ASSERT_GT(l.block_first_slot.size(), 4U) << "several force blocks";
     ASSERT_GT(l.block_first_slot.back(), 0U) << "entries that cross a force block";
 
-    const PairTable pairs(s.world().materials);
+    const PairTable pairs(s.world().materials, s.config().impact_speed);
     std::vector<Vec2> force(p.size());
     std::vector<double> torque(p.size(), 0.0);
     for (std::size_t k = 0; k < p.size(); ++k)

@@ -235,11 +235,11 @@ TEST(Materials, MixingRulesAndValidation) {
   Material a, b;
   a.young = 1e9, a.poisson = 0.25, a.normal_stiffness = 1e5, a.friction = 0.2;
   b.young = 3e9, b.poisson = 0.35, b.normal_stiffness = 3e5, b.friction = 0.6;
-  const PairParameters p = mix(a, b);
+  const PairParameters p = mix(a, b, 1.0);
   EXPECT_NEAR(p.effective_young, 1.0 / ((1 - 0.0625) / 1e9 + (1 - 0.1225) / 3e9), 1e-3);
   EXPECT_NEAR(p.normal_stiffness, 1.5e5, 1e-9);
   EXPECT_NEAR(p.friction, 0.4, 1e-15);
-  EXPECT_NEAR(mix(a, a).normal_stiffness, a.normal_stiffness, 1e-9); // self-pair keeps its own
+  EXPECT_NEAR(mix(a, a, 1.0).normal_stiffness, a.normal_stiffness, 1e-9); // self-pair keeps its own
   Material bad;
   bad.name = "sand";
   bad.restitution = 1.5;
@@ -261,13 +261,13 @@ TEST(Materials, RigidWallHasTheGrainsStiffnessAlone) {
   grain.young = 1e9, grain.poisson = 0.25, grain.normal_stiffness = 2e5, grain.friction = 0.2;
   wall.young = 1e30, wall.poisson = 0.1, wall.normal_stiffness = 1e30, wall.friction = 0.6;
   wall.rigid = true;
-  for (const PairParameters& p : {mix(grain, wall), mix(wall, grain)}) {
+  for (const PairParameters& p : {mix(grain, wall, 1.0), mix(wall, grain, 1.0)}) {
     EXPECT_DOUBLE_EQ(p.effective_young, 1e9 / (1.0 - 0.0625));
     EXPECT_DOUBLE_EQ(p.effective_shear, 1e9 / (2.0 * 1.75 * 1.25));
     EXPECT_DOUBLE_EQ(p.normal_stiffness, 2e5);
     EXPECT_DOUBLE_EQ(p.friction, 0.4); // friction and dissipation mix as for any pair
   }
-  const PairParameters both = mix(wall, wall);
+  const PairParameters both = mix(wall, wall, 1.0);
   EXPECT_TRUE(std::isfinite(both.effective_young) && std::isfinite(both.normal_stiffness));
 }
 

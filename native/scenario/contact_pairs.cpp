@@ -1,0 +1,69 @@
+#include "scenario/contact_pairs.hpp"
+
+#include <fmt/format.h>
+
+#include "scenario/build.hpp"
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+namespace {
+
+struct MeanGrain {
+  double mass = 0.0, radius = 0.0;
+};
+
+// The mean mass and radius of the free grains of material k (of all free grains if none is).
+MeanGrain mean_grain(const Particles& p, std::uint16_t k) {
+  MeanGrain sum, all;
+  std::size_t n = 0, n_all = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i)) continue;
+    all.mass += p.mass[i], all.radius += p.radius[i], ++n_all;
+    if (p.material[i] == k) sum.mass += p.mass[i], sum.radius += p.radius[i], ++n;
+  }
+  const MeanGrain& s = n > 0 ? sum : all;
+  const double count = static_cast<double>(n > 0 ? n : n_all);
+  return count > 0 ? MeanGrain{s.mass / count, s.radius / count} : MeanGrain{};
+}
+
+std::string normal_damping(const PairParameters& p, const SimulationConfig& c, double m_eff,
+                           double r_eff, const char* who) {
+  if (c.normal_law == law_id<LinearSpringDashpot>) {
+    if (p.damping_sqrt_coeff > 0.0)
+      return fmt::format("eta_n = 2 zeta sqrt(k_n m_eff), zeta = {:.6g}",
+                         p.damping_sqrt_coeff / (2.0 * std::sqrt(p.normal_stiffness)));
+    return fmt::format("eta_n = gamma_n m_eff, gamma_n = {:.6g} 1/s", p.damping_rate);
+  }
+  if (p.hertz_damping_scale == 0.0) return fmt::format("A = {:.6g} s", p.hertz_damping);
+  const double rho = hertz_rho(p.effective_young, r_eff);
+  const double A = p.hertz_damping + p.hertz_damping_scale * std::pow(m_eff / rho, 0.4);
+  return fmt::format("A = {:.6g} s for {} (per contact: A = {:.6g} + {:.6g} (m_eff / rho)^(2/5), "
+                     "reaching e at {:.6g} m/s)",
+                     A, who, p.hertz_damping, p.hertz_damping_scale, c.impact_speed);
+}
+
+} // namespace
+
+std::string describe_contact_pairs(const World& w, const SimulationConfig& c) {
+  std::string out =
+      "\n# The contact parameters derived for this run (comments: a rerun derives them "
+      "again):\n";
+  for (const MeetingPair& m : meeting_pairs(w)) {
+    const Material &a = w.materials[m.a], &b = w.materials[m.b];
+    const PairParameters p = mix(a, b, c.impact_speed);
+    const MeanGrain ga = mean_grain(w.particles, m.a);
+    const MeanGrain gb = m.wall ? ga : mean_grain(w.particles, m.b);
+    // against a wall: the grain's own mass and radius
+    const double m_eff = m.wall ? ga.mass : ga.mass * gb.mass / (ga.mass + gb.mass);
+    const double r_eff = m.wall ? ga.radius : ga.radius * gb.radius / (ga.radius + gb.radius);
+    out += fmt::format("#   {} with {}{}: restitution {:.6g}, {}\n", a.name, b.name,
+                       m.wall ? " (wall)" : "", p.restitution,
+                       m_eff > 0.0 ? normal_damping(p, c, m_eff, r_eff,
+                                                    m.wall ? "a mean grain" : "two mean grains")
+                                   : "no grains");
+  }
+  return out;
+}
+
+} // namespace talus
