@@ -44,6 +44,7 @@ std::string RunBook::encode() const {
   o << "\nfront_state " << front_state.size();
   for (const double v : front_state) o << " " << v;
   o << "\n";
+  if (!ended.empty()) o << "ended " << ended << "\n";
   for (const auto& [name, g] : groups) {
     o << "group " << name << " " << g.particles.size();
     for (const auto i : g.particles) o << " " << i;
@@ -74,6 +75,8 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.last_freeze;
     else if (key == "wall_seconds")
       l >> b.wall_seconds;
+    else if (key == "ended")
+      l >> b.ended;
     else if (key == "settle_time")
       l >> b.settle_time;
     else if (key == "collision_time")
@@ -188,8 +191,12 @@ public:
       return wall_before +
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    std::string ended = "duration";
-    while (sim_.step_count() < stop_) {
+    // a run killed after its last checkpoint, while drawing its pictures, has its end recorded
+    const bool finished_before = !book_.ended.empty();
+    std::string ended = finished_before ? book_.ended : "duration";
+    if (finished_before && !o_.quiet)
+      fmt::print("the run had ended ({}); completing its pictures and run.json\n", ended);
+    while (!finished_before && sim_.step_count() < stop_) {
       sim_.run(steps_to_next_look());
       follow_renumbering();
       const std::uint64_t k = sim_.step_count();
@@ -239,19 +246,11 @@ public:
         return exit_interrupted;
       }
     }
-    if (sim_.step_count() < total_ && ended == "duration") ended = "stop_at";
-    // the end's state is always recorded, though an interval may not divide the duration
-    if (ended != "stop_at") {
-      const std::uint64_t k = sim_.step_count();
-      if (k % thermo_every_ != 0) record_thermo();
-      if (!book_.tracked.empty() && k % track_every_ != 0) record_track();
-      // (a snapshot less than half an interval before the end stands for it: no near-twin frames)
-      if (snapshot_every_ && k % snapshot_every_ >= (snapshot_every_ + 1) / 2) {
-        write_snapshot();
-        if (out_.is_open()) out_ << thesis_out_block(sim_);
-      }
+    if (!finished_before) {
+      if (sim_.step_count() < total_ && ended == "duration") ended = "stop_at";
+      if (ended != "stop_at") record_end(ended);
+      checkpoint(wall_now());
     }
-    checkpoint(wall_now());
     finish_progress();
     if (ended != "stop_at" && s_.output.picture) {
       write_snapshot_png(sim_, (dir_ / "final.png").string(), 1200, SnapshotColour::speed);
@@ -266,6 +265,20 @@ public:
   }
 
 private:
+  // The end's state is always recorded, though an interval may not divide the duration; the
+  // checkpoint that follows says the run ended, so a resume never records it twice.
+  void record_end(const std::string& why) {
+    const std::uint64_t k = sim_.step_count();
+    if (k % thermo_every_ != 0) record_thermo();
+    if (!book_.tracked.empty() && k % track_every_ != 0) record_track();
+    // (a snapshot less than half an interval before the end stands for it: no near-twin frames)
+    if (snapshot_every_ && k % snapshot_every_ >= (snapshot_every_ + 1) / 2) {
+      write_snapshot();
+      if (out_.is_open()) out_ << thesis_out_block(sim_);
+    }
+    book_.ended = why;
+  }
+
   // The pictures and the movie the scenario asks for (output.pictures, output.movie).
   void scenario_pictures() {
     for (const std::string& p : s_.output.pictures) {

@@ -19,6 +19,7 @@ struct RunBook {
   double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
   std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
   double wall_seconds = 0.0;                       ///< wall time spent so far
+  std::string ended; ///< why the run ended ("duration", "cycles"); empty while it goes on
   double settle_time = 0.0;
   double collision_time = 0.0;
   std::vector<std::uint32_t> tracked;

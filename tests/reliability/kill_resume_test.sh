@@ -31,3 +31,9 @@ echo "killed $kills times; uninterrupted: $reference; killed and resumed: $resul
 [ "$kills" -ge 3 ] || { echo "too few kills landed ($kills) to test anything"; exit 1; }
 [ "$reference" = "$result" ] || { echo "states differ"; exit 1; }
 cmp -s "$dir/whole/thermo.csv" "$dir/part/thermo.csv" || { echo "thermo.csv differs"; exit 1; }
+# a kill after the last checkpoint (while drawing the pictures) leaves a run that has ended:
+# resuming it completes the pictures and records nothing twice
+snapshots=$(ls "$dir/part/snapshots" | wc -l)
+"$talus" resume "$dir/part" --quiet || { echo "resuming the ended run failed"; exit 1; }
+cmp -s "$dir/whole/thermo.csv" "$dir/part/thermo.csv" || { echo "resume of an ended run added thermo rows"; exit 1; }
+[ "$(ls "$dir/part/snapshots" | wc -l)" -eq "$snapshots" ] || { echo "resume of an ended run added snapshots"; exit 1; }
