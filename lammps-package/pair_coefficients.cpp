@@ -55,7 +55,7 @@ Material parse_pair_coefficients(const std::vector<std::string>& words) {
     if (w + 1 >= words.size())
       throw InvalidArgument("pair_coeff " + key + ": the value is missing");
     const double x = parse_number(key, words[w + 1]);
-    if (!(x >= k->lowest && x <= k->highest))
+    if (!allowed_value(*k, x))
       throw InvalidArgument("pair_coeff " + key + " = " + words[w + 1] +
                             "; allowed: " + std::string(k->allowed));
     m.*k->field = x;

@@ -22,10 +22,10 @@ void validate(const Material& m) {
   check(m.tangential_damping >= 0.0, m, "tangential_damping", ">= 0 1/s", m.tangential_damping);
   check(m.normal_stiffness >= 0.0, m, "normal_stiffness", ">= 0 N/m (0: not given)",
         m.normal_stiffness);
-  check(m.tangential_stiffness_ratio > 0.0, m, "tangential_stiffness_ratio", "> 0",
-        m.tangential_stiffness_ratio);
-  check(m.hertz_damping >= -1.0, m, "hertz_damping", ">= 0 s (or -1: from restitution)",
-        m.hertz_damping);
+  check(m.tangential_stiffness_ratio > 0.0 || m.tangential_stiffness_ratio == -1.0, m,
+        "tangential_stiffness_ratio", "> 0 (or -1: from poisson)", m.tangential_stiffness_ratio);
+  check(m.hertz_damping >= 0.0 || m.hertz_damping == -1.0, m, "hertz_damping",
+        ">= 0 s (or -1: from restitution)", m.hertz_damping);
 }
 
 } // namespace talus

@@ -204,6 +204,39 @@ double shortest_collision_time(const Scenario& s, const World& w, double r_min) 
   return shortest;
 }
 
+namespace {
+
+// The integrator's stability bound for the stiffest oscillation of the pairs that can meet, for
+// the lightest grain (the bound is then conservative): the normal one (linear k_n, or Hertz'
+// tangent stiffness at the impact speed), or a tangential spring's, which also turns the grains
+// and so oscillates faster than its stiffness alone says: k_t (1 + m r^2 / I) / m_eff.
+double stable_timestep_bound(const Scenario& s, const World& w, const SimulationConfig& c,
+                             double r_min) {
+  double k_max = 0.0, m_min = std::numeric_limits<double>::max();
+  const auto pairs = meeting_pairs(w);
+  for (const MeetingPair& m : pairs)
+    m_min = std::min(m_min, 0.5 * grain_mass(s, w.materials[m.a], r_min));
+  const double turning = 1.0 + 1.0 / shape_inertia(s.particles.shape, 1.0, 1.0);
+  for (const MeetingPair& m : pairs) {
+    const PairParameters p = mix(w.materials[m.a], w.materials[m.b], s.simulation.impact_speed);
+    const double m_eff = m.wall ? 2.0 * m_min : m_min;
+    ContactGeometry g;
+    g.m_eff = m_eff;
+    g.r_eff = m.wall ? r_min : 0.5 * r_min;
+    const double v = s.simulation.impact_speed;
+    const double k = with_normal_law(c.normal_law, [&]<class N>() {
+      g.overlap = N::peak_overlap(p, m_eff, g.r_eff, v);
+      return N::peak_stiffness(p, m_eff, g.r_eff, v);
+    });
+    const double kt =
+        with_tangential_law(c.tangential_law, [&]<class T>() { return T::stiffness(p, g, k); });
+    k_max = std::max({k_max, k, turning * kt});
+  }
+  return max_stable_timestep(c.integrator, k_max, m_min);
+}
+
+} // namespace
+
 BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) {
   BuiltScenario out;
   World& w = out.world;
@@ -330,21 +363,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
   if (s.simulation.timestep) {
-    // the stiffest oscillation of the pairs that can meet: linear k_n, or Hertz' tangent
-    // stiffness at the impact speed, for the lightest grain (the bound is then conservative)
-    double k_max = 0.0, m_min = std::numeric_limits<double>::max();
-    const auto pairs = meeting_pairs(w);
-    for (const MeetingPair& m : pairs)
-      m_min = std::min(m_min, 0.5 * grain_mass(s, w.materials[m.a], r_min));
-    for (const MeetingPair& m : pairs) {
-      const PairParameters p = mix(w.materials[m.a], w.materials[m.b], s.simulation.impact_speed);
-      const double k = with_normal_law(c.normal_law, [&]<class N>() {
-        return N::peak_stiffness(p, m.wall ? 2.0 * m_min : m_min, m.wall ? r_min : 0.5 * r_min,
-                                 s.simulation.impact_speed);
-      });
-      k_max = std::max(k_max, k);
-    }
-    const double bound = max_stable_timestep(c.integrator, k_max, m_min);
+    const double bound = stable_timestep_bound(s, w, c, r_min);
     if (*s.simulation.timestep > bound) {
       std::ostringstream msg;
       msg << "key 'simulation.timestep': " << *s.simulation.timestep

@@ -1,5 +1,7 @@
 #include "scenario/load.hpp"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -130,8 +132,13 @@ void read_simulation(TableReader& r, SimulationSection& s) {
 Material read_material(TableReader& r, std::size_t index) {
   Material m;
   m.name = r.text("name", "material" + std::to_string(index));
-  for (const MaterialKey& k : material_keys)
-    m.*k.field = r.number(k.name, k.fallback, k.lowest, k.highest, k.allowed.data());
+  for (const MaterialKey& k : material_keys) {
+    const double x = r.number(k.name, k.fallback, k.minus_one_derives ? -1.0 : k.lowest, k.highest,
+                              k.allowed.data());
+    if (!allowed_value(k, x))
+      r.fail(k.name, fmt::format("{:g} is out of range; allowed: {}", x, k.allowed));
+    m.*k.field = x;
+  }
   m.rigid = r.boolean("rigid", false);
   return m;
 }

@@ -14,7 +14,7 @@ struct Material {
   double friction = 0.5;           ///< Coulomb friction coefficient mu >= 0
   double tangential_damping = 0.0; ///< gamma_t, 1/s: tangential dashpot eta_t = gamma_t m_eff
   double normal_stiffness = 0.0;   ///< k_n, N/m (linear law; 0 = not given)
-  double tangential_stiffness_ratio = 2.0 / 7.0; ///< k_t / k_n (Cundall-Strack)
+  double tangential_stiffness_ratio = -1.0; ///< k_t / k_n (Cundall-Strack); -1: from poisson
   /// gamma_n, 1/s: if >= 0 the linear dashpot is eta_n = gamma_n m_eff (the thesis' eq. 2.10 and
   /// LAMMPS' convention) and `restitution` is ignored by the linear law. Negative: not given.
   double normal_damping_rate = -1.0;

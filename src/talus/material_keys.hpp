@@ -17,8 +17,14 @@ struct MaterialKey {
   double Material::*field;
   double fallback; ///< the value when the key is not given
   double lowest, highest;
-  std::string_view allowed; ///< the range and unit, for error messages
+  std::string_view allowed;       ///< the range and unit, for error messages
+  bool minus_one_derives = false; ///< -1 is also allowed: derive the value (see `allowed`)
 };
+
+/// Whether x is an allowed value of key k.
+constexpr bool allowed_value(const MaterialKey& k, double x) {
+  return (x >= k.lowest && x <= k.highest) || (k.minus_one_derives && x == -1.0);
+}
 
 inline constexpr double no_limit = std::numeric_limits<double>::infinity();
 
@@ -30,12 +36,12 @@ inline constexpr std::array<MaterialKey, 10> material_keys{{
     {"friction", &Material::friction, 0.5, 0.0, no_limit, ">= 0"},
     {"tangential_damping", &Material::tangential_damping, 0.0, 0.0, no_limit, ">= 0 1/s"},
     {"normal_stiffness", &Material::normal_stiffness, 1.0e5, 1e-12, no_limit, "> 0 N/m"},
-    {"tangential_stiffness_ratio", &Material::tangential_stiffness_ratio, 2.0 / 7.0, 1e-12,
-     no_limit, "> 0"},
-    {"normal_damping_rate", &Material::normal_damping_rate, -1.0, -1.0, no_limit,
-     ">= 0 1/s (or -1: from restitution)"},
-    {"hertz_damping", &Material::hertz_damping, -1.0, -1.0, no_limit,
-     ">= 0 s (or -1: from restitution at simulation.impact_speed)"},
+    {"tangential_stiffness_ratio", &Material::tangential_stiffness_ratio, -1.0, 1e-12, no_limit,
+     "> 0 (or -1: Mindlin's 2 (1 - nu) / (2 - nu) from poisson)", true},
+    {"normal_damping_rate", &Material::normal_damping_rate, -1.0, 0.0, no_limit,
+     ">= 0 1/s (or -1: from restitution)", true},
+    {"hertz_damping", &Material::hertz_damping, -1.0, 0.0, no_limit,
+     ">= 0 s (or -1: from restitution at simulation.impact_speed)", true},
 }};
 
 /// The material with every key at its default.

@@ -40,6 +40,11 @@ struct LinearSpringDashpot {
   static double peak_stiffness(const PairParameters& p, double, double, double) {
     return p.normal_stiffness;
   }
+  /// The largest overlap of an undamped impact at impact_speed: v sqrt(m_eff / k_n).
+  static double peak_overlap(const PairParameters& p, double m_eff, double /*r_eff*/,
+                             double impact_speed) {
+    return impact_speed * std::sqrt(m_eff / p.normal_stiffness);
+  }
   /// What is wrong with a material for this law ("" if nothing).
   static std::string material_error(const Material& m) {
     if (!(m.normal_stiffness > 0.0))
@@ -90,6 +95,11 @@ struct HertzViscoelastic {
                                double impact_speed) {
     const double rho = hertz_rho(p.effective_young, r_eff);
     return 1.5 * rho * std::sqrt(hertz_max_overlap(m_eff, rho, impact_speed));
+  }
+  /// The largest overlap of an undamped impact at impact_speed.
+  static double peak_overlap(const PairParameters& p, double m_eff, double r_eff,
+                             double impact_speed) {
+    return hertz_max_overlap(m_eff, hertz_rho(p.effective_young, r_eff), impact_speed);
   }
   static std::string material_error(const Material&) { return {}; }
   /// A damping left to be derived (negative) stays so: the pair's A is then derived per contact

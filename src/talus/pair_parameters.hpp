@@ -58,6 +58,23 @@ template <class R> struct PairParametersOf {
 };
 using PairParameters = PairParametersOf<double>;
 
+/// Cundall-Strack's k_t / k_n of a pair, after its E* and G*: the mean of the materials' ratios,
+/// where a material leaves its ratio to be derived (negative) its part is Mindlin's, the ratio of
+/// the no-slip tangential stiffness 8 G* a to Hertz' normal tangent stiffness 2 E* a (Mindlin
+/// 1949): 4 G* / E* of the pair when neither gives one, 2 (1 - nu) / (2 - nu) of the material
+/// (its value against itself) when the other does.
+inline void mix_tangential_stiffness_ratio(PairParameters& p, const Material& a,
+                                           const Material& b) {
+  const auto own = [](const Material& m) {
+    return m.tangential_stiffness_ratio >= 0.0 ? m.tangential_stiffness_ratio
+                                               : 2.0 * (1.0 - m.poisson) / (2.0 - m.poisson);
+  };
+  if (a.tangential_stiffness_ratio < 0.0 && b.tangential_stiffness_ratio < 0.0)
+    p.tangential_stiffness_ratio = 4.0 * p.effective_shear / p.effective_young;
+  else
+    p.tangential_stiffness_ratio = 0.5 * (own(a) + own(b));
+}
+
 /// The Hertz damping of a pair: the mean of the materials' A, where a material leaves A to be
 /// derived (negative) its part is the A that reaches a restitution at `impact_speed`, per contact
 /// (closed_forms.hpp: A = c (m_eff / rho)^(2/5)): the pair's mean restitution when neither gives
@@ -92,6 +109,7 @@ inline PairParameters mix(const Material& a, const Material& b, double impact_sp
     const double nu = soft.poisson;
     p.effective_young = soft.young / (1.0 - nu * nu);
     p.effective_shear = soft.young / (2.0 * (2.0 - nu) * (1.0 + nu));
+    mix_tangential_stiffness_ratio(p, soft, wall);
     return p;
   }
   PairParameters p;
@@ -107,11 +125,11 @@ inline PairParameters mix(const Material& a, const Material& b, double impact_sp
     p.damping_sqrt_coeff =
         2.0 * linear_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
   } // below the floor only the Hertz law reaches e; the linear law's material check refuses it
-  p.tangential_stiffness_ratio = mean(a.tangential_stiffness_ratio, b.tangential_stiffness_ratio);
   p.tangential_damping = mean(a.tangential_damping, b.tangential_damping);
   p.friction = mean(a.friction, b.friction);
   p.effective_young = effective_young(a, b);
   p.effective_shear = effective_shear(a, b);
+  mix_tangential_stiffness_ratio(p, a, b);
   mix_hertz_damping(p, a, b, impact_speed);
   return p;
 }

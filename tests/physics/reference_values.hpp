@@ -28,6 +28,18 @@ inline constexpr double roundoff_tolerance = 1.0e-12;
 inline constexpr double linear_tolerance = 0.005;
 inline constexpr double linear_steps_per_collision = 50.0;
 
+// ---- tangential springs ----------------------------------------------------------------------
+/// A disk that hits a flat wall obliquely and sticks (mu large) on undamped linear normal and
+/// tangential springs: the contact point's tangential velocity turns as cos(omega_t t), with
+/// omega_t^2 = k_t (1 + m R^2 / I) / m = 3 kappa omega_n^2 for a disk, for the contact time
+/// pi / omega_n, so it leaves with u' / u = cos(pi sqrt(3 kappa)) (Cundall & Strack 1979's spring;
+/// the effective tangential mass m / (1 + m R^2 / I) is Maw, Barber & Fawcett 1976's). The
+/// tolerance is the sum of two bounds on the phase (up to 5 rad): the lever arm R - xi/2 the
+/// engine uses shortens the arm by up to xi_max / (2 R) = 0.04% at 0.0025 m/s, which speeds
+/// omega_t by up to 0.03% (0.0012 rad), and the touch falls between steps, which shifts the
+/// spring by up to one step's turn, omega_t dt <= 0.0031 rad at t_c / 1600.
+inline constexpr double sticking_tangential_tolerance = 0.005;
+
 // ---- Hertz -----------------------------------------------------------------------------------
 /// t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5) (Landau & Lifshitz, Theory of Elasticity, sec. 9;
 /// the constant is 2 (5/4)^(2/5) (9/16)^(1/5) sqrt(pi) Gamma(7/5) / Gamma(9/10) = 2.8684).

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "core/contact_vectors.hpp"
 #include "materials/timestep.hpp"
+#include "physics/reference_values.hpp"
 #include "support/two_body.hpp"
 #include "talus/law_table.hpp"
 
@@ -126,6 +128,70 @@ TEST(TangentialLaws, LammpsStyleDampingRateGivesItsRestitution) {
   const auto& p = s.world().particles;
   const double e = linear_restitution(1e5, eta, m_eff);
   EXPECT_NEAR((p.velocity[1].x - p.velocity[0].x) / 0.1, e, 0.005 * e);
+}
+
+// The default Cundall-Strack ratio is Mindlin's: the no-slip tangential stiffness 8 G* a over
+// Hertz' normal tangent stiffness 2 E* a, 4 G* / E*, which for one material is
+// 2 (1 - nu) / (2 - nu) (Mindlin 1949). Exact up to rounding: 1e-14 relative.
+TEST(TangentialLaws, DefaultCundallStrackRatioIsMindlins) {
+  Material a;
+  a.young = 1e8;
+  a.poisson = 0.3;
+  const double own = 2.0 * (1.0 - 0.3) / (2.0 - 0.3);
+  EXPECT_NEAR(mix(a, a, 1.0).tangential_stiffness_ratio, own, 1e-14 * own);
+  Material b = a;
+  b.young = 7e10;
+  b.poisson = 0.2;
+  const PairParameters ab = mix(a, b, 1.0);
+  const double pair = 4.0 * ab.effective_shear / ab.effective_young;
+  EXPECT_NEAR(ab.tangential_stiffness_ratio, pair, 1e-14 * pair);
+  b.rigid = true; // against a rigid wall: the grain's own
+  EXPECT_NEAR(mix(a, b, 1.0).tangential_stiffness_ratio, own, 1e-14 * own);
+  b.rigid = false;
+  b.tangential_stiffness_ratio = 0.5; // one given: the mean of it and the other's own
+  EXPECT_NEAR(mix(a, b, 1.0).tangential_stiffness_ratio, 0.5 * (0.5 + own), 1e-15);
+  // so with the Hertz law Cundall-Strack is Mindlin's no-slip spring
+  const ContactGeometry g = touching(1e-6, 1e-3);
+  double s_cs = 0.0, s_mindlin = 0.0;
+  const double f_cs = dot(
+      force_of(contact_force<HertzViscoelastic, CundallStrack>(ab, g, s_cs, 1e-7)), tangent_of(g));
+  const double f_mindlin =
+      dot(force_of(contact_force<HertzViscoelastic, MindlinNoSlip>(ab, g, s_mindlin, 1e-7)),
+          tangent_of(g));
+  EXPECT_NEAR(f_cs, f_mindlin, 1e-14 * std::abs(f_mindlin));
+}
+
+// A disk hits a wall obliquely and sticks: the contact point leaves with
+// cos(pi sqrt(3 kappa)) times its tangential velocity (reference_values.hpp), for a given
+// kappa = 2/7 and for the default (Mindlin's, 2 (1 - nu) / (2 - nu) at nu = 0.3).
+TEST(TangentialLaws, StickingObliqueImpactTurnsTheSlipAsTheSpringSays) {
+  for (const double kappa : {2.0 / 7.0, -1.0}) {
+    Material m = testing::elastic_material(1e5);
+    m.friction = 1e4; // never slides
+    m.tangential_stiffness_ratio = kappa;
+    const double r = 1e-3, v_n = 0.0025, u = 2.5e-4;
+    World w;
+    w.materials = {m};
+    w.add_particle({.position = {0.0, 1.01 * r}, .radius = r, .velocity = {u, -v_n}});
+    w.walls.push_back(Segment{.a = {-1.0, 0.0}, .b = {1.0, 0.0}});
+    SimulationConfig c;
+    c.timestep = linear_collision_time(m.normal_stiffness, 0.0, w.particles.mass[0]) /
+                 reference::conservation_steps_per_collision;
+    c.integrator = Integrator::verlet;
+    c.tangential_law = law_id<CundallStrack>;
+    Simulation s(std::move(w), c);
+    const auto rec = testing::collide(s, 1'000'000, [](const Simulation& sim) {
+      const auto& p = sim.world().particles;
+      return p.radius[0] - p.position[0].y;
+    });
+    ASSERT_TRUE(rec.separated);
+    const auto& p = s.world().particles;
+    const double k = kappa > 0.0 ? kappa : 2.0 * 0.7 / 1.7;
+    const double slip = p.velocity[0].x + p.angular_velocity[0] * r; // the contact point's
+    EXPECT_NEAR(slip / u, std::cos(std::numbers::pi * std::sqrt(3.0 * k)),
+                reference::sticking_tangential_tolerance)
+        << "kappa " << k;
+  }
 }
 
 } // namespace
