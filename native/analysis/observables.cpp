@@ -79,6 +79,10 @@ std::vector<ContactRecord> contact_forces(const Simulation& sim) {
         r.j = -1 - v.wall;
         r.to = r.from - (g.arm_i - 0.5 * g.overlap) * normal_of(g);
       }
+      r.point = r.from - g.arm_i * normal_of(g);
+      r.overlap = g.overlap;
+      r.overlap_rate = g.overlap_rate();
+      r.m_eff = g.m_eff;
       r.normal_force = f.normal_force;
       r.tangential_force = dot(force_of(f), tangent_of(v.geometry));
       out.push_back(r);

@@ -37,10 +37,14 @@ Vec2 force_on_particles(const Simulation& sim, const std::vector<std::uint32_t>&
 /// One touching contact with its forces, for force chains and force distributions.
 struct ContactRecord {
   std::uint32_t i = 0;
-  std::int64_t j = -1;       ///< the other particle, or -1 - segment index for a wall
-  Vec2 from;                 ///< centre of i
-  Vec2 to;                   ///< centre of j (its periodic image), or the contact point on the wall
-  double normal_force = 0.0; ///< N
+  std::int64_t j = -1;  ///< the other particle, or -1 - segment index for a wall
+  Vec2 from;            ///< centre of i
+  Vec2 to;              ///< centre of j (its periodic image), or the contact point on the wall
+  Vec2 point;           ///< the contact point: the middle of the overlap, on the line of centres
+  double overlap = 0.0; ///< xi, m
+  double overlap_rate = 0.0;     ///< d xi / dt, m/s (> 0 while approaching)
+  double m_eff = 0.0;            ///< kg: the pair's reduced mass (the grain's against a wall)
+  double normal_force = 0.0;     ///< N
   double tangential_force = 0.0; ///< N, signed along t
 };
 

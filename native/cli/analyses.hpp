@@ -73,6 +73,9 @@ Section analyze_thermo(RunData& run);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);
 Section analyze_profiles(RunData& run, const AnalysisOptions& o);
 Section analyze_tracks(RunData& run);
+/// contact_events.csv (output.contacts): durations, peak forces and restitutions per kind of
+/// contact; throws InvalidArgument when the run wrote none.
+Section analyze_contacts(RunData& run);
 
 /// The discharge through the run's orifice (post/discharge.hpp); throws InvalidArgument when the
 /// container has none.

@@ -59,6 +59,8 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     if (fs::exists(run.dir() / "frost.csv")) attempt("frost", [&] { return analyze_frost(run); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
+  if (fs::exists(run.dir() / "contact_events.csv"))
+    attempt("contacts", [&] { return analyze_contacts(run); });
   return out;
 }
 
@@ -94,13 +96,14 @@ void add_analyze_command(CLI::App& app) {
       "analyze",
       "analyses of a run folder, as CSV, JSON and PNG in DIR/analysis: thermo (energies, Z, "
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
-      "speed map, discharge), tracks, segregation, frost; with no WHAT every one that applies, "
+      "speed map, discharge), tracks, segregation, frost, contacts (contact events); with no WHAT "
+      "every one that applies, "
       "and report.html");
   cmd->add_option("dir", o->dir, "the run folder or sweep folder")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
-                  "thermo, forces, profiles, tracks, segregation, frost, or all (with "
+                  "thermo, forces, profiles, tracks, segregation, frost, contacts, or all (with "
                   "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
                   "result of its index.csv")
       ->capture_default_str();
@@ -133,11 +136,12 @@ void add_analyze_command(CLI::App& app) {
       return;
     }
     const std::vector<std::string> allowed{"thermo",      "forces", "profiles", "tracks",
-                                           "segregation", "frost",  "all"};
+                                           "segregation", "frost",  "contacts", "all"};
     if (std::find(allowed.begin(), allowed.end(), w) == allowed.end())
       throw InvalidArgument("analyze: '" + w +
                             "' is not an analysis of a run folder; allowed: "
-                            "thermo, forces, profiles, tracks, segregation, frost, all");
+                            "thermo, forces, profiles, tracks, segregation, frost, contacts, "
+                            "all");
     RunData run{fs::path(o->dir)};
     if (w == "all") {
       const auto sections = analyze_all(run, o->a);
@@ -150,6 +154,8 @@ void add_analyze_command(CLI::App& app) {
       analyze_profiles(run, o->a);
     } else if (w == "tracks") {
       analyze_tracks(run);
+    } else if (w == "contacts") {
+      analyze_contacts(run);
     } else if (w == "segregation") {
       analyze_segregation(run, o->a);
     } else {

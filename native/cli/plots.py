@@ -162,6 +162,34 @@ elif kind == "frost":
     c.axhline(0.0, color="grey", lw=0.5)
     c.set_xlabel("stone radius [mm]")
     c.set_ylabel("rise per cycle [mm]")
+elif kind == "contacts":
+    ended = [r for r in rows if r["touching"] == "0"]
+    fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 11))
+    for walls, label, marker in [(False, "grain-grain", "o"), (True, "grain-wall", "s")]:
+        rs = [r for r in ended if (int(r["wall"]) >= 0) == walls]
+        if not rs:
+            continue
+        impacts = [r for r in rs if float(r["impact_speed"]) > 0 and float(r["rebound_speed"]) > 0]
+        a.hist(col("duration", rs), bins=40, alpha=0.6, label=f"{label}, {len(rs)} contacts")
+        if impacts:
+            v = col("impact_speed", impacts)
+            b.plot(v, col("peak_normal_force", impacts), marker, ms=3, ls="", label=label)
+            c.plot(v, [float(r["rebound_speed"]) / float(r["impact_speed"]) for r in impacts],
+                   marker, ms=3, ls="", label=label)
+            if max(v) > 10 * min(v):  # speeds over decades: log axes
+                b.set_xscale("log")
+                b.set_yscale("log")
+                c.set_xscale("log")
+    a.set_xlabel("contact duration [s]")
+    a.set_ylabel("contacts [-]")
+    a.legend(fontsize=8)
+    b.set_xlabel("impact speed [m/s]")
+    b.set_ylabel("peak normal force [N]")
+    c.set_xlabel("impact speed [m/s]")
+    c.set_ylabel("restitution: rebound / impact speed [-]")
+    for ax in (b, c):
+        if ax.has_data():
+            ax.legend(fontsize=8)
 elif kind == "sweep":
     axes, result = extra["axes"], extra["result"]
 

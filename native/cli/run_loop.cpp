@@ -15,9 +15,11 @@
 
 #include <fmt/core.h>
 
+#include "analysis/contact_events.hpp"
 #include "analysis/observables.hpp"
 #include "cli/pictures.hpp"
 #include "io/checkpoint.hpp"
+#include "io/contact_csv.hpp"
 #include "io/thesis_format.hpp"
 #include "io/vtk.hpp"
 #include "render/snapshot_png.hpp"
@@ -43,6 +45,8 @@ std::string RunBook::encode() const {
   for (const auto t : tracked) o << " " << t;
   o << "\nfront_state " << front_state.size();
   for (const double v : front_state) o << " " << v;
+  o << "\ncontact_state " << contact_state.size();
+  for (const double v : contact_state) o << " " << v;
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
   for (const auto& [name, g] : groups) {
@@ -90,6 +94,11 @@ RunBook RunBook::decode(const std::string& text) {
       l >> n;
       b.front_state.resize(n);
       for (double& v : b.front_state) l >> v;
+    } else if (key == "contact_state") {
+      std::size_t n = 0;
+      l >> n;
+      b.contact_state.resize(n);
+      for (double& v : b.contact_state) l >> v;
     } else if (key == "tracked") {
       for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
     } else if (key == "group") {
@@ -142,6 +151,10 @@ public:
       const double phase = std::min(s.frost.freeze_time, s.frost.thaw_time);
       front_every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(phase / 1000.0 / dt));
     }
+    if (s.output.contacts) {
+      contact_log_.emplace();
+      if (!book_.contact_state.empty()) contact_log_->load(book_.contact_state);
+    }
   }
 
   void open_files(bool fresh) {
@@ -150,6 +163,7 @@ public:
     if (!book_.tracked.empty()) track_.open(dir_ / "track.csv", mode);
     if (s_.output.thesis_out) out_.open(dir_ / "run.out", mode);
     if (s_.frost.model != "none") frost_.open(dir_ / "frost.csv", mode);
+    if (contact_log_) events_.open(dir_ / "contact_events.csv", mode);
     if (!thermo_) throw WriteError("cannot write " + (dir_ / "thermo.csv").string());
     if (!fresh) return;
     std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
@@ -159,6 +173,8 @@ public:
     thermo_ << head << "\n";
     if (track_.is_open()) track_ << "time,id,x,y,angle,vx,vy,omega\n";
     if (frost_.is_open()) frost_ << "cycle,time,event\n";
+    if (events_.is_open()) events_ << contact_events_header();
+    observe_contacts();
     if (out_.is_open()) out_ << thesis_out_header(sim_, s_.simulation.duration);
     record_thermo();
     record_track();
@@ -200,6 +216,7 @@ public:
       sim_.run(steps_to_next_look());
       follow_renumbering();
       const std::uint64_t k = sim_.step_count();
+      observe_contacts();
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
       if (k % thermo_every_ == 0) {
         record_thermo();
@@ -276,7 +293,16 @@ private:
       write_snapshot();
       if (out_.is_open()) out_ << thesis_out_block(sim_);
     }
+    if (contact_log_) // the contacts still touching, once: the checkpoint after says it ended
+      for (const ContactEvent& e : contact_log_->open_events()) events_ << contact_event_row(e);
     book_.ended = why;
+  }
+
+  // output.contacts: the contacts are looked at after every step, and those that ended are
+  // written.
+  void observe_contacts() {
+    if (!contact_log_) return;
+    for (const ContactEvent& e : contact_log_->observe(sim_)) events_ << contact_event_row(e);
   }
 
   // The pictures and the movie the scenario asks for (output.pictures, output.movie).
@@ -351,6 +377,7 @@ private:
     if (!book_.tracked.empty()) look_at_multiples_of(track_every_);
     if (front_) look_at_multiples_of(front_every_);
     look_at_multiples_of(sim_.config().sort_interval);
+    if (contact_log_) look_at_multiples_of(1);
     return next - k;
   }
 
@@ -384,6 +411,9 @@ private:
                             vtp_walls(sim_));
     write_file_atomically((dir_ / "snapshots" / fmt::format("contacts_{:06d}.vtp", n)).string(),
                           vtp_contacts(sim_));
+    if (s_.output.contacts)
+      write_file_atomically((dir_ / "snapshots" / fmt::format("contacts_{:06d}.csv", n)).string(),
+                            contacts_csv(sim_));
     write_collections();
   }
 
@@ -437,15 +467,18 @@ private:
     for (auto [f, name] : {std::pair{&thermo_, "thermo.csv"},
                            {&track_, "track.csv"},
                            {&out_, "run.out"},
-                           {&frost_, "frost.csv"}}) {
+                           {&frost_, "frost.csv"},
+                           {&events_, "contact_events.csv"}}) {
       f->flush();
       if (f->is_open() && !*f) throw WriteError("cannot write " + (dir_ / name).string());
     }
     book_.file_bytes.clear();
-    for (const char* name : {"thermo.csv", "track.csv", "run.out", "frost.csv"})
+    for (const char* name :
+         {"thermo.csv", "track.csv", "run.out", "frost.csv", "contact_events.csv"})
       if (fs::exists(dir_ / name)) book_.file_bytes[name] = fs::file_size(dir_ / name);
     book_.wall_seconds = wall;
     if (front_) book_.front_state = front_->save();
+    if (contact_log_) book_.contact_state = contact_log_->save();
     Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
     const fs::path latest = dir_ / "checkpoint.bin", previous = dir_ / "checkpoint.prev.bin";
     if (fs::exists(latest)) fs::rename(latest, previous);
@@ -457,7 +490,7 @@ private:
   // A write failed (a full disk, a file size limit): every output is cut back to what the last
   // checkpoint holds, so the folder reads as the run stopped there and resume continues it.
   [[noreturn]] void stop_on_write_failure(const WriteError& e) {
-    for (std::ofstream* g : {&thermo_, &track_, &out_, &frost_}) g->close();
+    for (std::ofstream* g : {&thermo_, &track_, &out_, &frost_, &events_}) g->close();
     std::error_code ignored;
     if (!checkpointed_) // nothing to continue from: the command that starts it again
       throw std::runtime_error(std::string(e.what()) +
@@ -468,7 +501,7 @@ private:
     for (const auto& entry : fs::directory_iterator(dir_ / "snapshots", ignored)) {
       unsigned long k = 0;
       const std::string f = entry.path().filename().string();
-      if (std::sscanf(f.c_str(), "%*[a-z]_%lu.vtp", &k) == 1 && k >= checkpointed_snapshots_)
+      if (std::sscanf(f.c_str(), "%*[a-z]_%lu", &k) == 1 && k >= checkpointed_snapshots_)
         fs::remove(entry.path(), ignored);
     }
     book_.snapshots = checkpointed_snapshots_;
@@ -548,8 +581,9 @@ private:
   RunOptions o_;
   std::uint64_t total_ = 0, stop_ = 0;
   std::uint64_t thermo_every_ = 1, snapshot_every_ = 0, track_every_ = 1, checkpoint_every_ = 0;
-  std::ofstream thermo_, track_, out_, frost_;
+  std::ofstream thermo_, track_, out_, frost_, events_;
   std::optional<FrostFront> front_;
+  std::optional<ContactEventLog> contact_log_;
   std::uint64_t front_every_ = 1;
   bool tty_ = false, printed_ = false;
   std::uint64_t renumberings_seen_ = 0;
@@ -628,7 +662,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   for (const auto& entry : fs::directory_iterator(d / "snapshots")) {
     unsigned long k = 0;
     const std::string f = entry.path().filename().string();
-    if (std::sscanf(f.c_str(), "%*[a-z]_%lu.vtp", &k) == 1 && k >= book.snapshots)
+    if (std::sscanf(f.c_str(), "%*[a-z]_%lu", &k) == 1 && k >= book.snapshots)
       fs::remove(entry.path());
   }
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));

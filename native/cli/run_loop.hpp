@@ -18,7 +18,8 @@ struct RunBook {
   std::uint64_t freezes = 0;                       ///< frost: freezes done
   double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
   std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
-  double wall_seconds = 0.0;                       ///< wall time spent so far
+  std::vector<double> contact_state; ///< open contacts (ContactEventLog::save), output.contacts
+  double wall_seconds = 0.0;         ///< wall time spent so far
   std::string ended; ///< why the run ended ("duration", "cycles"); empty while it goes on
   double settle_time = 0.0;
   double collision_time = 0.0;

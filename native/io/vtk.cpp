@@ -95,6 +95,7 @@ std::string vtp_walls(const Simulation& sim) {
 
 std::string vtp_contacts(const Simulation& sim) {
   const std::vector<ContactRecord> c = contact_forces(sim);
+  const Particles& p = sim.world().particles;
   return line_polydata(
       c.size(), "normal_force",
       [&](std::string& out) {
@@ -102,10 +103,18 @@ std::string vtp_contacts(const Simulation& sim) {
               [&](std::size_t k) { return fmt::format("{:.9g}", c[k].normal_force); });
         array(out, "tangential_force", 1, c.size(),
               [&](std::size_t k) { return fmt::format("{:.9g}", c[k].tangential_force); });
+        array(out, "overlap", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].overlap); });
+        array(out, "contact_point", 3, c.size(), [&](std::size_t k) {
+          return fmt::format("{:.9g} {:.9g} 0", c[k].point.x, c[k].point.y);
+        });
+        // ids, as the particles' "id" array: indices change when the engine renumbers
         array(out, "particle", 1, c.size(),
-              [&](std::size_t k) { return fmt::format("{}", c[k].i); });
-        array(out, "partner", 1, c.size(),
-              [&](std::size_t k) { return fmt::format("{}", c[k].j); });
+              [&](std::size_t k) { return fmt::format("{}", p.id[c[k].i]); });
+        array(out, "partner", 1, c.size(), [&](std::size_t k) {
+          return fmt::format(
+              "{}", c[k].j >= 0 ? std::int64_t{p.id[static_cast<std::size_t>(c[k].j)]} : c[k].j);
+        });
       },
       [&](std::size_t k, bool second) { return second ? c[k].to : c[k].from; });
 }

@@ -14,7 +14,8 @@ std::string vtp_particles(const Simulation& sim);
 /// The segment walls as lines, with the force the grains put on each.
 std::string vtp_walls(const Simulation& sim);
 /// The contacts as lines between the centres (to the contact point for walls), with cell arrays
-/// normal_force and tangential_force (N): force chains in ParaView.
+/// normal_force and tangential_force (N), overlap (m), contact_point, and the ids of particle and
+/// partner (-1 - segment for a wall): force chains in ParaView.
 std::string vtp_contacts(const Simulation& sim);
 /// A .pvd collection: (time, file name relative to the .pvd) in order.
 std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries);

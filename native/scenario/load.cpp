@@ -264,6 +264,7 @@ void read_output(TableReader& r, OutputSection& o) {
   o.track_interval =
       r.number("track_interval", o.track_interval, 0.0, inf, ">= 0 s (0: every step)");
   o.thesis_out = r.boolean("thesis_out", o.thesis_out);
+  o.contacts = r.boolean("contacts", o.contacts);
   o.picture = r.boolean("picture", o.picture);
   o.pictures = r.texts("pictures");
   for (const std::string& p : o.pictures)

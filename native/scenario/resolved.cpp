@@ -192,6 +192,7 @@ std::string to_toml(const Scenario& s) {
                                     {"checkpoint_interval", o.checkpoint_interval},
                                     {"track_interval", o.track_interval},
                                     {"thesis_out", o.thesis_out},
+                                    {"contacts", o.contacts},
                                     {"picture", o.picture},
                                     {"pictures", pictures},
                                     {"movie", o.movie},

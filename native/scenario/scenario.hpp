@@ -121,7 +121,10 @@ struct OutputSection {
   double checkpoint_interval = 1.0; ///< s; 0: only at the end
   double track_interval = 0.001;    ///< s
   bool thesis_out = false;          ///< also write the thesis' .out snapshots
-  bool picture = true;              ///< final.png at the end
+  /// Each snapshot's touching contacts as CSV, and every contact's start, end and peaks in
+  /// contact_events.csv (the contacts are then looked at every step).
+  bool contacts = false;
+  bool picture = true; ///< final.png at the end
   /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
   /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).
   std::vector<std::string> pictures;

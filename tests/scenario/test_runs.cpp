@@ -9,17 +9,14 @@
 #include "io/track_csv.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"
+#include "support/run_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace talus {
 namespace {
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("talus_test_" + name);
-  fs::remove_all(d);
-  return d;
-}
+using testing::fresh_dir;
 
 using testing::builtin;
 

@@ -1,0 +1,142 @@
+#include "analysis/contact_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "analysis/observables.hpp"
+
+namespace talus {
+
+namespace {
+
+// The time between a look and the touch (or the separation) of a contact whose overlap is
+// `overlap` at the look, moving at `rate` towards it (the approach speed before a touch, the
+// separation speed after) under the normal force's `deceleration`, taken as constant over so
+// short a time: the root of overlap = rate t + deceleration t^2 / 2. At most the time between
+// the looks.
+double time_to_zero(double overlap, double rate, double deceleration, double between) {
+  if (!(rate > 0.0)) return 0.0; // not moving the right way: the look itself is the best guess
+  const double root = rate + std::sqrt(rate * rate + 2.0 * std::max(deceleration, 0.0) * overlap);
+  return std::min(2.0 * overlap / root, between);
+}
+
+} // namespace
+
+std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
+  const Particles& p = sim.world().particles;
+  const double now = sim.time(), between = now - last_time_;
+  ++looks_;
+  for (const ContactRecord& c : contact_forces(sim)) {
+    const std::uint64_t id_i = p.id[c.i];
+    Key key{id_i, c.j}; // a wall: -1 - segment, as in ContactRecord
+    if (c.j >= 0) {
+      const std::uint64_t id_j = p.id[static_cast<std::size_t>(c.j)];
+      key = {std::min(id_i, id_j), static_cast<std::int64_t>(std::max(id_i, id_j))};
+    }
+    auto [it, fresh] = open_.try_emplace(key);
+    Open& o = it->second;
+    // the normal force slows the approach (and the separation): d^2 xi / dt^2 = -F_n / m_eff
+    const double deceleration = c.m_eff > 0.0 ? c.normal_force / c.m_eff : 0.0;
+    if (fresh) {
+      o.order = opened_++;
+      o.event.particle = key.first;
+      o.event.partner = c.j >= 0 ? key.second : -1;
+      o.event.wall = c.j >= 0 ? -1 : -1 - c.j;
+      // a contact there at the first look (a packing) started then, as far as the log knows
+      const double since =
+          looks_ > 1 ? time_to_zero(c.overlap, c.overlap_rate, deceleration, between) : 0.0;
+      o.event.start = now - since;
+      // the speed at the touch, before this force slowed it (a dashpot's force starts at once)
+      o.event.impact_speed = c.overlap_rate + deceleration * since;
+    }
+    o.event.peak_normal_force = std::max(o.event.peak_normal_force, c.normal_force);
+    o.event.peak_overlap = std::max(o.event.peak_overlap, c.overlap);
+    o.event.end = now;
+    o.event.rebound_speed = -c.overlap_rate;
+    o.last_overlap = c.overlap;
+    o.last_rate = c.overlap_rate;
+    o.last_deceleration = deceleration;
+    o.seen = looks_;
+  }
+  std::vector<std::pair<std::uint64_t, ContactEvent>> ended;
+  for (auto it = open_.begin(); it != open_.end();) {
+    if (it->second.seen == looks_) {
+      ++it;
+      continue;
+    }
+    const Open& o = it->second;
+    ContactEvent e = o.event;
+    const double since = time_to_zero(o.last_overlap, -o.last_rate, o.last_deceleration, between);
+    e.end += since;
+    e.rebound_speed += o.last_deceleration * since; // what the force still added after the look
+    ended.emplace_back(it->second.order, e);
+    it = open_.erase(it);
+  }
+  std::sort(ended.begin(), ended.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ContactEvent> out;
+  out.reserve(ended.size());
+  for (auto& [order, e] : ended) out.push_back(e);
+  last_time_ = now;
+  return out;
+}
+
+std::vector<ContactEvent> ContactEventLog::open_events() const {
+  std::vector<std::pair<std::uint64_t, ContactEvent>> open;
+  for (const auto& [key, o] : open_) {
+    open.emplace_back(o.order, o.event);
+    open.back().second.touching = true;
+  }
+  std::sort(open.begin(), open.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ContactEvent> out;
+  for (auto& [order, e] : open) out.push_back(e);
+  return out;
+}
+
+// Layout: looks, opened, last_time, the number of open contacts, then per contact its key (2),
+// its order and the event's and the last look's numbers (6 + 3). Ids and counts are exact in a
+// double up to 2^53.
+std::vector<double> ContactEventLog::save() const {
+  std::vector<double> s{static_cast<double>(looks_), static_cast<double>(opened_), last_time_,
+                        static_cast<double>(open_.size())};
+  for (const auto& [key, o] : open_) {
+    const ContactEvent& e = o.event;
+    s.insert(s.end(),
+             {static_cast<double>(key.first), static_cast<double>(key.second),
+              static_cast<double>(o.order), e.start, e.end, e.peak_normal_force, e.peak_overlap,
+              e.impact_speed, e.rebound_speed, o.last_overlap, o.last_rate, o.last_deceleration});
+  }
+  return s;
+}
+
+void ContactEventLog::load(const std::vector<double>& s) {
+  constexpr std::size_t head = 4, per_contact = 12;
+  if (s.size() < head || s.size() != head + per_contact * static_cast<std::size_t>(s[3]))
+    throw std::runtime_error("the checkpoint's contact event state is damaged");
+  looks_ = static_cast<std::uint64_t>(s[0]);
+  opened_ = static_cast<std::uint64_t>(s[1]);
+  last_time_ = s[2];
+  open_.clear();
+  for (std::size_t k = head; k < s.size(); k += per_contact) {
+    const Key key{static_cast<std::uint64_t>(s[k]), static_cast<std::int64_t>(s[k + 1])};
+    Open& o = open_[key];
+    o.order = static_cast<std::uint64_t>(s[k + 2]);
+    o.event.particle = key.first;
+    o.event.partner = key.second >= 0 ? key.second : -1;
+    o.event.wall = key.second >= 0 ? -1 : -1 - key.second;
+    o.event.start = s[k + 3];
+    o.event.end = s[k + 4];
+    o.event.peak_normal_force = s[k + 5];
+    o.event.peak_overlap = s[k + 6];
+    o.event.impact_speed = s[k + 7];
+    o.event.rebound_speed = s[k + 8];
+    o.last_overlap = s[k + 9];
+    o.last_rate = s[k + 10];
+    o.last_deceleration = s[k + 11];
+    o.seen = looks_;
+  }
+}
+
+} // namespace talus

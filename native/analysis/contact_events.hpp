@@ -1,0 +1,57 @@
+#pragma once
+// Contact events: each contact's life from first touch to separation, followed step by step,
+// with its duration, peak force and overlap, and the approach and separation speeds. Looked at
+// after every step; start and end are placed between steps by the overlap's rate, so a duration
+// is good to far better than a timestep.
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+/// One contact from its start to its end (or to now, while it still touches).
+struct ContactEvent {
+  std::uint64_t particle = 0;     ///< the grain's id (the lower id of a pair)
+  std::int64_t partner = -1;      ///< the other grain's id, or -1 for a wall
+  std::int64_t wall = -1;         ///< the wall segment's index, or -1 for a pair
+  double start = 0.0;             ///< s: when the overlap became positive
+  double end = 0.0;               ///< s: when it returned to zero (the last look while touching)
+  double peak_normal_force = 0.0; ///< N
+  double peak_overlap = 0.0;      ///< m
+  double impact_speed = 0.0;      ///< m/s: d xi / dt at the first look (the approach speed)
+  double rebound_speed = 0.0;     ///< m/s: -d xi / dt at the last look (the separation speed)
+  bool touching = false;          ///< still in contact when written (at the end of a run)
+  double duration() const { return end - start; }
+};
+
+class ContactEventLog {
+public:
+  /// Looks at the contacts of the current state: updates the open ones, opens the new ones and
+  /// returns those that ended since the last look, in the order they opened.
+  std::vector<ContactEvent> observe(const Simulation& sim);
+  /// The contacts open now, with their end at the last look and touching = true.
+  std::vector<ContactEvent> open_events() const;
+  std::size_t open_count() const { return open_.size(); }
+  /// The log's state as numbers, for a checkpoint, and back: a resumed run's events are the
+  /// same as an uninterrupted one's.
+  std::vector<double> save() const;
+  void load(const std::vector<double>& state);
+
+private:
+  // (the lower grain id, the other id) for a pair; (the grain id, -1 - segment) for a wall
+  using Key = std::pair<std::uint64_t, std::int64_t>;
+  struct Open {
+    ContactEvent event;
+    double last_overlap = 0.0, last_rate = 0.0, last_deceleration = 0.0; ///< at the last look
+    std::uint64_t order = 0; ///< when it opened, for a stable output order
+    std::uint64_t seen = 0;  ///< the look that last saw it
+  };
+  std::map<Key, Open> open_;
+  std::uint64_t looks_ = 0, opened_ = 0;
+  double last_time_ = 0.0;
+};
+
+} // namespace talus
