@@ -1,0 +1,92 @@
+// The run's bookkeeping (RunBook) as the text saved inside every checkpoint: one line per
+// item, numbers at full precision so a resume continues exactly.
+#include <sstream>
+
+#include "cli/run_loop.hpp"
+
+namespace talus::cli {
+
+std::string RunBook::encode() const {
+  std::ostringstream o;
+  o.precision(17);
+  for (const auto& [f, b] : file_bytes) o << "file " << f << " " << b << "\n";
+  o << "snapshots " << snapshots << "\nfreezes " << freezes << "\nlast_freeze " << last_freeze
+    << "\nwall_seconds " << wall_seconds << "\nsettle_time " << settle_time << "\ncollision_time "
+    << collision_time << "\nfill " << fill.lo.x << " " << fill.lo.y << " " << fill.hi.x << " "
+    << fill.hi.y << "\nbounds " << bounds.lo.x << " " << bounds.lo.y << " " << bounds.hi.x << " "
+    << bounds.hi.y << "\ntracked";
+  for (const auto t : tracked) o << " " << t;
+  o << "\nfront_state " << front_state.size();
+  for (const double v : front_state) o << " " << v;
+  o << "\ncontact_state " << contact_state.size();
+  for (const double v : contact_state) o << " " << v;
+  o << "\n";
+  if (!ended.empty()) o << "ended " << ended << "\n";
+  for (const auto& [name, g] : groups) {
+    o << "group " << name << " " << g.particles.size();
+    for (const auto i : g.particles) o << " " << i;
+    o << " " << g.segments.size();
+    for (const auto i : g.segments) o << " " << i;
+    o << "\n";
+  }
+  return o.str();
+}
+
+RunBook RunBook::decode(const std::string& text) {
+  RunBook b;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream l(line);
+    std::string key;
+    l >> key;
+    if (key == "file") {
+      std::string f;
+      std::uint64_t n = 0;
+      l >> f >> n;
+      b.file_bytes[f] = n;
+    } else if (key == "snapshots")
+      l >> b.snapshots;
+    else if (key == "freezes")
+      l >> b.freezes;
+    else if (key == "last_freeze")
+      l >> b.last_freeze;
+    else if (key == "wall_seconds")
+      l >> b.wall_seconds;
+    else if (key == "ended")
+      l >> b.ended;
+    else if (key == "settle_time")
+      l >> b.settle_time;
+    else if (key == "collision_time")
+      l >> b.collision_time;
+    else if (key == "fill")
+      l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
+    else if (key == "bounds")
+      l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
+    else if (key == "front_state") {
+      std::size_t n = 0;
+      l >> n;
+      b.front_state.resize(n);
+      for (double& v : b.front_state) l >> v;
+    } else if (key == "contact_state") {
+      std::size_t n = 0;
+      l >> n;
+      b.contact_state.resize(n);
+      for (double& v : b.contact_state) l >> v;
+    } else if (key == "tracked") {
+      for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
+    } else if (key == "group") {
+      std::string name;
+      std::size_t n = 0;
+      l >> name >> n;
+      DriverTargets& g = b.groups[name];
+      g.particles.resize(n);
+      for (auto& i : g.particles) l >> i;
+      l >> n;
+      g.segments.resize(n);
+      for (auto& i : g.segments) l >> i;
+    }
+  }
+  return b;
+}
+
+} // namespace talus::cli
