@@ -1,0 +1,578 @@
+#!/usr/bin/python3
+"""Work-precision: the error each integrator buys at each timestep, and what it costs.
+
+    /usr/bin/python3 validation/work_precision.py [PROBLEM ...] [--quick] [--build build]
+                                                  [--out validation/results/work_precision]
+
+For each reference problem and each integrator (native Gear, native velocity Verlet, and LAMMPS'
+velocity Verlet with pair_style granthesis where talus-lmp is built), over timesteps from t_c/5
+to t_c/1000 (t_c: the problem's collision time, the automatic timestep's unit), it measures the
+error against the reference and the cost (CPU seconds per simulated second, and per
+particle-step), and draws a log-log work-precision chart per problem with a table beside it
+(index.html, opening offline; results.json). Problems:
+
+- hertz_impact: two disks, viscoelastic Hertz with a given damping A; restitution, peak force
+  and duration against an accurate solution of the contact's ODE (RK4 at t_c / 200000);
+- linear_impact: the same with the linear spring-dashpot, against the same ODE, which is the
+  closed form's (docs/model.md);
+- oblique_impact: two disks meeting off-centre, linear law and the capped viscous friction:
+  tangential restitution of the contact point and the rebound spin, against native Gear at
+  t_c / 20000 (no closed form: the line of centres turns while they touch);
+- settling_1000: 1000 disks falling into a box (inputs/validation/settling_1000) for 0.03 s:
+  RMS position error (mean radii) and total-energy error at the end against the same integrator
+  at the finest timestep / 64, with the fitted convergence order.
+
+--quick runs fewer timesteps and leaves out settling_1000. The timestep that each integrator
+needs for a restitution error of 1e-2, 1e-3 and 1e-4 (interpolated in log-log) is printed and
+tabled. The exit status is 1 when a check fails: an engine whose error does not fall with the
+timestep, or a reference off its closed form.
+"""
+import argparse
+import functools
+import html
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from crosscheck import ENV, read_dump, read_track  # noqa: E402  (the same readers)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FACTORS = [5, 10, 20, 50, 100, 200, 500, 1000]
+QUICK_FACTORS = [5, 20, 100, 500]
+SETTLING_FACTORS = [5, 10, 20, 50, 100, 200]
+TARGETS = [1e-2, 1e-3, 1e-4]
+
+RADIUS, DENSITY, YOUNG, POISSON, SPEED = 0.001, 2650.0, 1.0e8, 0.3, 0.5
+MASS = DENSITY * math.pi * RADIUS**2  # a disk, 1 m thick (docs/model.md)
+HERTZ_A = 2.0e-6                      # s: the viscoelastic Hertz damping
+LINEAR_K, LINEAR_E = 1.0e4, 0.5       # N/m, the asked restitution
+OFFSET = 0.8 * RADIUS                 # the oblique impact's offset across the approach
+
+
+def impact_scenario(law, oblique):
+    """Two equal disks approaching along x at +-SPEED, 2 mm of gap; oblique: offset in y."""
+    damping = (f"hertz_damping = {HERTZ_A}" if law == "hertz" else
+               f"normal_stiffness = {LINEAR_K}\nrestitution = {LINEAR_E}")
+    friction = "friction = 0.3\ntangential_damping = 2000.0" if oblique else "friction = 0.0"
+    y = OFFSET if oblique else 0.0
+    # the touch after 2 ms, the separation 1.2 ms later (Hertz; linear: 0.9 ms); one snapshot at
+    # the start and one at the end (LAMMPS' deck dumps at snapshots)
+    return f"""name = "{law}_{'oblique' if oblique else 'impact'}"
+[simulation]
+duration = 0.006
+timestep = "auto"
+integrator = "verlet"
+normal_law = "{law}"
+tangential_law = "coulomb"
+gravity = [0.0, 0.0]
+impact_speed = {2 * SPEED}
+[[materials]]
+name = "grain"
+density = {DENSITY}
+young = {YOUNG}
+poisson = {POISSON}
+{damping}
+{friction}
+[particles]
+shape = "disk"
+[[particles.list]]
+position = [{-RADIUS - 0.001}, 0.0]
+radius = {RADIUS}
+velocity = [{SPEED}, 0.0]
+[[particles.list]]
+position = [{RADIUS + 0.001}, {y}]
+radius = {RADIUS}
+velocity = [{-SPEED}, 0.0]
+[geometry]
+# periodic, so that the long runs that time each engine keep their grains (they meet again
+# every 0.05 s; the measured impact is over long before that)
+periodic = "xy"
+box = [-0.025, -0.025, 0.025, 0.025]
+[track]
+select = "all"
+[output]
+contacts = true
+thermo_interval = 0.001
+snapshot_interval = 0.006
+checkpoint_interval = 0.0
+track_interval = 0.006
+picture = false
+"""
+
+
+# ---- the reference: the normal contact's ODE ----------------------------------------------------
+
+def normal_force(law, xi, rate, m_eff, r_eff):
+    """The never-attractive normal force of src/talus/normal_laws.hpp, written out again."""
+    if law == "hertz":
+        e_star = YOUNG / (2.0 * (1.0 - POISSON**2))
+        rho = 4.0 / 3.0 * e_star * math.sqrt(r_eff)
+        f = rho * math.sqrt(max(xi, 0.0)) * (xi + 1.5 * HERTZ_A * rate)
+    else:
+        zeta = linear_damping_ratio(LINEAR_E)
+        f = LINEAR_K * xi + 2.0 * zeta * math.sqrt(LINEAR_K * m_eff) * rate
+    return max(f, 0.0)
+
+
+@functools.lru_cache(maxsize=None)
+def linear_damping_ratio(e):
+    """zeta of the never-attractive dashpot that reaches restitution e (closed_forms.hpp's
+    inverse), found by bisection on the ODE itself so that nothing is taken from the engine."""
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        got = contact_ode("linear_zeta", mid)[0]
+        lo, hi = (mid, hi) if got > e else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def contact_ode(law, zeta=None, steps=200000):
+    """(restitution, peak force, duration) of the head-on impact, by RK4 on xi'' = -F / m_eff
+    from xi = 0, xi' = 2 SPEED, the exit placed by linear interpolation of xi between steps."""
+    m_eff, r_eff, v = 0.5 * MASS, 0.5 * RADIUS, 2.0 * SPEED
+    if law == "linear_zeta":  # the bisection's inner solve: a linear law of this zeta
+        force = lambda xi, rate: max(  # noqa: E731
+            LINEAR_K * xi + 2.0 * zeta * math.sqrt(LINEAR_K * m_eff) * rate, 0.0)
+        t_c = math.pi * math.sqrt(m_eff / LINEAR_K)
+        steps = 20000
+    else:
+        force = lambda xi, rate: normal_force(law, xi, rate, m_eff, r_eff)  # noqa: E731
+        t_c = collision_time(law)
+    h = 2.0 * t_c / steps
+    xi, rate, t, peak = 0.0, v, 0.0, 0.0
+    deriv = lambda x, u: (u, -force(x, u) / m_eff)  # noqa: E731
+    while True:
+        k1 = deriv(xi, rate)
+        k2 = deriv(xi + 0.5 * h * k1[0], rate + 0.5 * h * k1[1])
+        k3 = deriv(xi + 0.5 * h * k2[0], rate + 0.5 * h * k2[1])
+        k4 = deriv(xi + h * k3[0], rate + h * k3[1])
+        nxi = xi + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+        nrate = rate + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+        if nxi <= 0.0 and t > 0.0:
+            f = xi / (xi - nxi)
+            exit_rate = rate + f * (nrate - rate)
+            return -exit_rate / v, peak, t + f * h
+        xi, rate, t = nxi, nrate, t + h
+        peak = max(peak, force(xi, rate))
+
+
+def collision_time(law):
+    """The elastic collision time at 2 SPEED, the scale of the timesteps (as the engine's
+    automatic timestep: collision time / factor)."""
+    m_eff, r_eff = 0.5 * MASS, 0.5 * RADIUS
+    if law == "hertz":
+        rho = 4.0 / 3.0 * YOUNG / (2.0 * (1.0 - POISSON**2)) * math.sqrt(r_eff)
+        c = 2.0 * 1.25**0.4 * math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9)
+        return c * (m_eff / rho) ** 0.4 * (2.0 * SPEED) ** -0.2
+    return math.pi * math.sqrt(m_eff / LINEAR_K)
+
+
+# ---- running the engines -------------------------------------------------------------------------
+
+def attempt(command, cwd=None):
+    """Runs a command; its wall time, or None when it failed (an unstable run, say)."""
+    start = time.monotonic()
+    done = subprocess.run(command, cwd=cwd, env=ENV, capture_output=True, text=True)
+    return time.monotonic() - start if done.returncode == 0 else None
+
+
+class Engines:
+    def __init__(self, build, out):
+        self.talus = os.path.join(build, "native", "talus")
+        self.lmp = os.path.join(build, "lammps-package", "talus-lmp")
+        self.out = out
+        self.has_lammps = os.path.exists(self.lmp) and shutil.which("mpirun") is not None
+
+    def native(self, scenario, label, integrator, factor, extra=()):
+        """Runs the native engine; (run folder, CPU s per simulated s, per particle-step) or
+        None when the run failed."""
+        folder = os.path.join(self.out, "runs", f"{label}-{integrator}-{factor:g}")
+        shutil.rmtree(folder, ignore_errors=True)
+        command = [self.talus, "run", scenario, "--out", folder, "--quiet", "--threads", "1",
+                   "--set", f"simulation.integrator={integrator}",
+                   "--set", f"simulation.timestep_factor={factor}"]
+        for s in extra:
+            command += ["--set", s]
+        if attempt(command) is None:
+            return None
+        with open(os.path.join(folder, "run.json")) as f:
+            info = json.load(f)
+        if info["ended_by"] != "duration":
+            return None
+        per_step = 1.0 / info["particle_steps_per_second"]
+        return folder, info["wall_seconds"] / info["time"], per_step
+
+    def lammps(self, scenario, label, factor):
+        """Runs LAMMPS with granthesis (velocity Verlet, its half-step damper velocity) on the
+        deck `talus export lammps` writes; (the last dump frame, cost per simulated s, per
+        particle-step) or None."""
+        folder = os.path.join(self.out, "runs", f"{label}-lammps-{factor:g}")
+        shutil.rmtree(folder, ignore_errors=True)
+        if attempt([self.talus, "export", "lammps", scenario, folder, "--quiet",
+                    "--set", "simulation.integrator=verlet",
+                    "--set", "simulation.verlet_velocity=half_step",
+                    "--set", f"simulation.timestep_factor={factor}"]) is None:
+            return None
+        name = next(f[3:] for f in os.listdir(folder) if f.startswith("in."))
+        with open(os.path.join(folder, f"in.{name}")) as f:
+            steps = int(re.search(r"^variable steps index (\d+)", f.read(), re.M).group(1))
+        # the whole case, dumped at the start and the end only: the rebound is the last frame
+        if self.lammps_loop(folder, name, steps) is None:
+            return None
+        with open(os.path.join(folder, "log.lammps")) as f:
+            dt = float(re.search(r"^timestep\s+(\S+)", f.read(), re.M).group(1))
+        frames = read_dump(os.path.join(folder, f"dump.{name}.lammpstrj"), dt)
+        last = frames[max(frames)]
+        # the cost from 100000 steps at least, so that the loop's clock resolves it
+        timed = self.lammps_loop(folder, name, max(steps, 100000))
+        if timed is None:
+            return None
+        loop, steps, atoms = timed
+        # LAMMPS ids are native ids + 1: the frame is keyed as read_track's
+        return last, loop / (steps * dt), loop / (steps * atoms)
+
+    def lammps_loop(self, folder, name, steps):
+        """Runs the deck for `steps` on 1 rank; (loop seconds, steps, atoms) from its log."""
+        if attempt(["mpirun", "-np", "1", self.lmp, "-in", f"in.{name}", "-var", "steps",
+                    str(steps), "-var", "snapshot_every", str(steps), "-log", "log.lammps",
+                    "-screen", "none"], cwd=folder) is None:
+            return None
+        with open(os.path.join(folder, "log.lammps")) as f:
+            m = re.findall(r"Loop time of ([0-9.eE+-]+) on \d+ procs for (\d+) steps with (\d+) "
+                           r"atoms", f.read())
+        return float(m[-1][0]), int(m[-1][1]), int(m[-1][2])
+
+
+# ---- the measurements ----------------------------------------------------------------------------
+
+def last_frame(folder):
+    """The last track.csv frame of a native run: {LAMMPS-style id: (x, y, vx, vy, omega)}."""
+    frames = read_track(os.path.join(folder, "track.csv"))
+    return frames[max(frames)]
+
+
+def first_event(folder):
+    """peak normal force and duration of the first row of contact_events.csv."""
+    data = np.genfromtxt(os.path.join(folder, "contact_events.csv"), delimiter=",", names=True)
+    row = np.atleast_1d(data)[0]
+    return float(row["peak_normal_force"]), float(row["duration"])
+
+
+def head_on_restitution(frame):
+    return (frame[2][2] - frame[1][2]) / (2.0 * SPEED)
+
+
+def oblique_numbers(frame):
+    """Tangential restitution of the contact point, and disk 0's rebound spin (rad/s). The
+    tangent is that of the line of centres at the touch (the straight approach's)."""
+    dx = math.sqrt(4.0 * RADIUS**2 - OFFSET**2)
+    n = np.array([dx, OFFSET]) / (2.0 * RADIUS)
+    t = np.array([-n[1], n[0]])
+    before = float(np.dot([-2.0 * SPEED, 0.0], t))
+    v0, v1 = np.array(frame[1][2:4]), np.array(frame[2][2:4])
+    after = float(np.dot(v1 - v0, t)) - RADIUS * (frame[1][4] + frame[2][4])
+    return -after / before, frame[1][4]
+
+
+def relative(x, ref):
+    return abs(x - ref) / abs(ref) if ref else abs(x)
+
+
+class Problem:
+    """One reference problem: its scenario, the reference numbers, and a row per run."""
+
+    def __init__(self, name, scenario, t_c, metrics):
+        self.name, self.scenario, self.t_c, self.metrics = name, scenario, t_c, metrics
+        self.rows = []  # {"engine", "factor", "cost_per_second", "cost_per_particle_step", metric...}
+        self.reference = {}
+
+    def add(self, engine, factor, costs, values):
+        row = {"engine": engine, "factor": factor, "cost_per_second": costs[0],
+               "cost_per_particle_step": costs[1]}
+        # (LAMMPS' rows have the rebound only: NaN for what its dump cannot tell)
+        row.update({m: relative(values[m], self.reference[m]) if m in values else math.nan
+                    for m in self.metrics})
+        row.update({f"{m}_value": values.get(m, math.nan) for m in self.metrics})
+        self.rows.append(row)
+        print(f"{self.name}: {engine:14s} dt = t_c/{factor:<5g} " + ", ".join(
+            f"{m} error {row[m]:.2e}" for m in self.metrics) +
+            f"; {costs[0]:.3g} CPU s per simulated s")
+
+
+def impact(engines, problem, law, oblique, factors, workdir):
+    """The impact problems: native Gear and Verlet, and LAMMPS where it is built."""
+    for integrator in ("gear", "verlet"):
+        for factor in factors:
+            got = engines.native(problem.scenario, problem.name, integrator, factor)
+            if got is None:
+                print(f"{problem.name}: {integrator} at t_c/{factor}: unstable or failed")
+                continue
+            folder = got[0]
+            # the cost from a run without per-step outputs (contacts are looked at every step),
+            # of 100000 steps at least, so that the wall clock resolves it: two disks cost the
+            # loop's overhead per step, touching or not
+            duration = max(0.006, 1e5 * problem.t_c / factor)
+            cost = engines.native(problem.scenario, problem.name + "-cost", integrator, factor,
+                                  ["output.contacts=false", "track.select=none",
+                                   f"simulation.duration={duration}",
+                                   f"output.snapshot_interval={duration}",
+                                   f"output.thermo_interval={duration}"])
+            problem.add(f"native {integrator}", factor, cost[1:] if cost else got[1:],
+                        measure(folder, oblique))
+    if not engines.has_lammps:
+        print(f"{problem.name}: LAMMPS rows left out (talus-lmp or mpirun missing)")
+        return
+    for factor in factors:
+        got = engines.lammps(problem.scenario, problem.name, factor)
+        if got is None:
+            print(f"{problem.name}: LAMMPS at t_c/{factor}: unstable or failed")
+            continue
+        frame, per_second, per_step = got
+        values = (dict(zip(("tangential_restitution", "rebound_spin"), oblique_numbers(frame)))
+                  if oblique else {"restitution": head_on_restitution(frame)})
+        problem.add("LAMMPS verlet", factor, (per_second, per_step), values)
+
+
+def measure(folder, oblique):
+    frame = last_frame(folder)
+    if oblique:
+        return dict(zip(("tangential_restitution", "rebound_spin"), oblique_numbers(frame)))
+    peak, duration = first_event(folder)
+    return {"restitution": head_on_restitution(frame), "peak_force": peak, "duration": duration}
+
+
+def settling(engines, problem, factors):
+    """1000 disks for 0.03 s: each integrator against itself at the finest timestep / 64."""
+    sets = ["simulation.duration=0.03", "output.snapshot_interval=0", "output.track_interval=0.03"]
+    for integrator in ("gear", "verlet"):
+        ref = engines.native(problem.scenario, problem.name + "-reference", integrator,
+                             64 * max(factors), sets)
+        ref_frame, ref_energy, ref_kinetic = settling_state(ref[0])
+        for factor in factors:
+            got = engines.native(problem.scenario, problem.name, integrator, factor, sets)
+            if got is None:
+                print(f"{problem.name}: {integrator} at t_c/{factor}: unstable or failed")
+                continue
+            frame, energy, _ = settling_state(got[0])
+            ids = sorted(set(frame) & set(ref_frame))
+            d = [math.hypot(frame[i][0] - ref_frame[i][0], frame[i][1] - ref_frame[i][1])
+                 for i in ids]
+            problem.reference = {"position": 0.0, "energy": 0.0}
+            problem.add(f"native {integrator}", factor, got[1:],
+                        {"position": math.sqrt(np.mean(np.square(d))) / 0.0025,
+                         "energy": abs(energy - ref_energy) / ref_kinetic})
+
+
+def settling_state(folder):
+    """The last frame, the last total energy and translational kinetic energy (J)."""
+    data = np.genfromtxt(os.path.join(folder, "thermo.csv"), delimiter=",", names=True)
+    last = np.atleast_1d(data)[-1]
+    return last_frame(folder), float(last["total"]), float(last["kinetic_translational"])
+
+
+# ---- what the measurements say ------------------------------------------------------------------
+
+def fitted_order(rows, metric):
+    """The slope of log error against log dt over the runs whose error is above rounding."""
+    pts = [(math.log(1.0 / r["factor"]), math.log(r[metric])) for r in rows if r[metric] > 1e-13]
+    if len(pts) < 3:
+        return float("nan")
+    x, y = np.array(pts).T
+    return float(np.polyfit(x, y, 1)[0])
+
+
+def needed(rows, metric, target):
+    """(t_c / dt, cost per simulated s) at which the error falls to `target`, interpolated in
+    log-log between the last run above it and the first below; None when no run reaches it."""
+    rows = sorted(rows, key=lambda r: r["factor"])
+    for a, b in zip(rows, rows[1:]):
+        if a[metric] > target >= b[metric] > 0.0:
+            f = (math.log(target) - math.log(a[metric])) / (math.log(b[metric]) -
+                                                              math.log(a[metric]))
+            factor = math.exp(math.log(a["factor"]) + f * (math.log(b["factor"]) -
+                                                          math.log(a["factor"])))
+            cost = math.exp(math.log(a["cost_per_second"]) + f * (
+                math.log(b["cost_per_second"]) - math.log(a["cost_per_second"])))
+            return factor, cost
+    if rows and rows[0][metric] <= target:
+        return rows[0]["factor"], rows[0]["cost_per_second"]
+    return None
+
+
+def by_engine(problem):
+    out = {}
+    for r in problem.rows:
+        out.setdefault(r["engine"], []).append(r)
+    return out
+
+
+def chart(problem, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(problem.metrics), figsize=(5 * len(problem.metrics), 4.2),
+                             squeeze=False)
+    for ax, metric in zip(axes[0], problem.metrics):
+        for engine, rows in by_engine(problem).items():
+            rows = sorted(rows, key=lambda r: r["factor"])
+            pts = [(r["cost_per_second"], max(r[metric], 1e-16), r["factor"]) for r in rows
+                   if not math.isnan(r[metric])]
+            if not pts:
+                continue
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", ms=4, label=engine)
+            for c, e, f in pts:
+                ax.annotate(f"{f:g}", (c, e), fontsize=6, xytext=(2, 2),
+                            textcoords="offset points")
+        ax.set_xlabel("cost [CPU s per simulated s]")
+        ax.set_ylabel(f"relative error in {metric.replace('_', ' ')} [-]")
+        ax.legend(fontsize=7, title="labels: t_c / dt", title_fontsize=7)
+    fig.suptitle(problem.name)
+    fig.tight_layout()
+    path = os.path.join(out, f"{problem.name}.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def page(problems, out):
+    import base64
+    parts = ["<!doctype html><meta charset='utf-8'><title>talus work-precision</title>",
+             "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
+             "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}</style>",
+             "<h1>Work-precision</h1><p>validation/work_precision.py: relative error against "
+             "cost for each integrator; t_c is the collision time.</p>"]
+    for p in problems:
+        with open(chart(p, out), "rb") as f:
+            img = base64.b64encode(f.read()).decode()
+        parts.append(f"<h2>{html.escape(p.name)}</h2><img src='data:image/png;base64,{img}'>")
+        head = "".join(f"<th>{html.escape(m)} error</th>" for m in p.metrics)
+        parts.append(f"<table><tr><th>engine</th><th>t_c / dt</th>{head}<th>CPU s per "
+                     "simulated s</th><th>s per particle-step</th></tr>")
+        for r in sorted(p.rows, key=lambda r: (r["engine"], r["factor"])):
+            cells = "".join(f"<td>{r[m]:.2e}</td>" for m in p.metrics)
+            parts.append(f"<tr><td>{r['engine']}</td><td>{r['factor']:g}</td>{cells}"
+                         f"<td>{r['cost_per_second']:.3g}</td>"
+                         f"<td>{r['cost_per_particle_step']:.3g}</td></tr>")
+        parts.append("</table>")
+        parts.append(needed_table(p))
+    with open(os.path.join(out, "index.html"), "w") as f:
+        f.write("\n".join(parts))
+
+
+def needed_table(p):
+    metric = p.metrics[0]
+    rows = ["<p>The timestep each engine needs for a " + html.escape(metric.replace("_", " ")) +
+            " error of ...</p><table><tr><th>engine</th>" +
+            "".join(f"<th>{t:g}: t_c / dt (cost)</th>" for t in TARGETS) + "</tr>"]
+    for engine, rs in by_engine(p).items():
+        cells = []
+        for t in TARGETS:
+            n = needed(rs, metric, t)
+            cells.append(f"<td>{n[0]:.0f} ({n[1]:.3g})</td>" if n else "<td>not reached</td>")
+        rows.append(f"<tr><td>{engine}</td>{''.join(cells)}</tr>")
+    if p.name == "settling_1000":
+        for engine, rs in by_engine(p).items():
+            rows.append(f"<tr><td>{engine}: fitted order, position / energy</td><td>"
+                        f"{fitted_order(rs, 'position'):.2f} / {fitted_order(rs, 'energy'):.2f}"
+                        "</td></tr>")
+    return "".join(rows) + "</table>"
+
+
+def summarise(problems):
+    for p in problems:
+        metric = p.metrics[0]
+        for engine, rs in by_engine(p).items():
+            found = []
+            for t in TARGETS:
+                n = needed(rs, metric, t)
+                found.append(f"{t:g}: t_c/{n[0]:.0f} at {n[1]:.3g} CPU s/s" if n else
+                             f"{t:g}: not reached")
+            print(f"{p.name} {engine}: {metric} error " + "; ".join(found))
+            if p.name == "settling_1000":
+                print(f"{p.name} {engine}: fitted order {fitted_order(rs, 'position'):.2f} "
+                      f"(position), {fitted_order(rs, 'energy'):.2f} (energy)")
+
+
+def check(problems):
+    """What must hold, or the measurement is wrong: the linear reference reaches the asked
+    restitution (the closed form's, docs/model.md), and every engine converges: its error in the
+    first metric falls from the coarsest timestep to the finest, to below 1e-3 there."""
+    failures = []
+    for p in problems:
+        if p.name == "linear_impact" and abs(p.reference["restitution"] - LINEAR_E) > 1e-6:
+            failures.append(f"linear_impact: the reference's restitution "
+                            f"{p.reference['restitution']:.9f} is not the asked {LINEAR_E}")
+        metric = p.metrics[0]
+        for engine, rs in by_engine(p).items():
+            rs = sorted(rs, key=lambda r: r["factor"])
+            if len(rs) < 2 or not rs[-1][metric] < min(rs[0][metric], 1e-3):
+                failures.append(f"{p.name} {engine}: {metric} error does not converge "
+                                f"({', '.join(f'{r[metric]:.2e}' for r in rs)})")
+    for f in failures:
+        print(f"FAIL {f}")
+    return not failures
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("problems", nargs="*", help="hertz_impact, linear_impact, "
+                        "oblique_impact, settling_1000 (default: all)")
+    parser.add_argument("--quick", action="store_true", help="fewer timesteps, no settling")
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results",
+                                                      "work_precision"))
+    args = parser.parse_args()
+    names = args.problems or (["hertz_impact", "linear_impact", "oblique_impact"] +
+                              ([] if args.quick else ["settling_1000"]))
+    allowed = {"hertz_impact", "linear_impact", "oblique_impact", "settling_1000"}
+    if set(names) - allowed:
+        sys.exit(f"unknown problem(s) {sorted(set(names) - allowed)}; allowed: {sorted(allowed)}")
+    engines = Engines(os.path.abspath(args.build), os.path.abspath(args.out))
+    if not os.path.exists(engines.talus):
+        sys.exit(f"no {engines.talus}: build first (scripts/build.sh)")
+    os.makedirs(os.path.join(engines.out, "scenarios"), exist_ok=True)
+    factors = QUICK_FACTORS if args.quick else FACTORS
+    problems = []
+    for name in names:
+        if name == "settling_1000":
+            p = Problem(name, os.path.join(ROOT, "inputs", "validation", "settling_1000",
+                                           "scenario.toml"), None, ["position", "energy"])
+            settling(engines, p, SETTLING_FACTORS)
+        else:
+            law = "hertz" if name == "hertz_impact" else "linear"
+            oblique = name == "oblique_impact"
+            scenario = os.path.join(engines.out, "scenarios", f"{name}.toml")
+            with open(scenario, "w") as f:
+                f.write(impact_scenario(law, oblique))
+            p = Problem(name, scenario, collision_time(law), ["tangential_restitution",
+                        "rebound_spin"] if oblique else ["restitution", "peak_force",
+                                                         "duration"])
+            if oblique:
+                got = engines.native(scenario, name + "-reference", "gear", 20000)
+                p.reference = measure(got[0], True)
+            else:
+                e, peak, duration = contact_ode(law)
+                p.reference = {"restitution": e, "peak_force": peak, "duration": duration}
+            print(f"{name}: reference " + ", ".join(f"{k} = {v:.10g}"
+                                                     for k, v in p.reference.items()))
+            impact(engines, p, law, oblique, factors, engines.out)
+        problems.append(p)
+    page(problems, engines.out)
+    with open(os.path.join(engines.out, "results.json"), "w") as f:
+        json.dump([{"problem": p.name, "reference": p.reference, "rows": p.rows}
+                   for p in problems], f, indent=1)
+    summarise(problems)
+    print(f"report: {os.path.join(engines.out, 'index.html')}")
+    sys.exit(0 if check(problems) else 1)
+
+
+if __name__ == "__main__":
+    main()
