@@ -13,6 +13,7 @@
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/load.hpp"
+#include "scenario/timestep_accuracy.hpp"
 
 namespace fs = std::filesystem;
 
@@ -100,6 +101,10 @@ void add_run_command(CLI::App& app) {
                  built.config.timestep, built.collision_time,
                  built.settle_time > 0 ? fmt::format("; settled in {:.3f} s", built.settle_time)
                                        : "");
+      if (const RestitutionError e = expected_restitution_error(built); !e.basis.empty())
+        fmt::print("  dt = collision time / {:.4g}: restitution error about {:.1e} ({}; "
+                   "docs/accuracy.md)\n",
+                   built.collision_time / built.config.timestep, e.error, e.basis);
       if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
       std::fflush(stdout);
     }

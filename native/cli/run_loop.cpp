@@ -476,7 +476,7 @@ private:
         "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
         "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
         "  \"threads_asked\": {},\n"
-        "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.3f},\n"
+        "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.6f},\n"
         "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
         "\"{}\"\n}}\n",
         TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),

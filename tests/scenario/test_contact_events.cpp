@@ -157,7 +157,8 @@ TEST(ContactEvents, DampedLinearImpactsLastAndReboundAsTheClosedFormsSay) {
     EXPECT_NEAR(e.duration() / linear_collision_time(k, eta, i.m_eff), 1.0, tolerance);
     // The dashpot's force starts at the touch, between two steps, at eta u: the integrator's
     // velocity after that step is off by up to half a step of it, (eta u / m_eff) (dt / 2),
-    // or zeta omega dt = zeta pi / 500 = 1.4e-3 of u at e = 0.5 (zeta = 0.215).
+    // or zeta omega dt = zeta pi / 500 = 1.6e-3 of u at e = 0.5 (zeta = 0.255, the
+    // never-attractive dashpot's; docs/accuracy.md).
     const double onset = 2e-3;
     EXPECT_NEAR(e.impact_speed / (2.0 * v), 1.0, onset);
     EXPECT_NEAR(e.rebound_speed / e.impact_speed, e_asked, onset);
