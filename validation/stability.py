@@ -1,0 +1,178 @@
+#!/usr/bin/python3
+"""Stability on hard cases: how large a timestep each integrator survives, and what it says.
+
+    /usr/bin/python3 validation/stability.py [CASE ...] [--check] [--build build]
+                                             [--out validation/results/stability]
+
+A case is a folder of inputs/hard/ (a native scenario). For each case and integrator (native
+Gear, native velocity Verlet, and LAMMPS' Verlet with granthesis where `talus export lammps`
+can write the case and talus-lmp is built) it finds by bisection the stability limit
+dt_crit / t_c: the largest timestep (t_c: the run's collision time) at which the run ends
+without the stability guard stopping it and without its total energy growing by more than
+1% of the largest kinetic plus elastic energy of the run (an undriven case can only lose
+energy). It reports the energy behaviour at the automatic timestep (t_c / 50) and, beyond the
+limit, what the guard said. A table goes to OUT/index.md and results.json.
+
+--check is the default suite's fast test: every case at the automatic timestep ends, and its
+total energy does not grow by more than that 1%; the exit status is 1 when one does not.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CASES = os.path.join(ROOT, "inputs", "hard")
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMP_NUM_THREADS="1")
+GROWTH = 0.01  # the energy growth allowed, of the largest kinetic + elastic energy
+
+
+def energy_growth(thermo):
+    """The largest rise of the total energy above its lowest value before, over the largest
+    kinetic plus elastic energy of the run: an undriven run only loses energy."""
+    d = np.atleast_1d(np.genfromtxt(thermo, delimiter=",", names=True))
+    total = d["total"]
+    scale = float(np.max(d["kinetic_translational"] + d["kinetic_rotational"] + d["elastic"]))
+    rise = float(np.max(total - np.minimum.accumulate(total)))
+    return rise / scale if scale > 0 else 0.0
+
+
+class Runner:
+    def __init__(self, build, out):
+        self.talus = os.path.join(build, "native", "talus")
+        self.lmp = os.path.join(build, "lammps-package", "talus-lmp")
+        self.out = out
+        self.has_lammps = os.path.exists(self.lmp) and shutil.which("mpirun") is not None
+
+    def native(self, case, integrator, factor):
+        """(stable, energy growth, the guard's words) of one run."""
+        folder = os.path.join(self.out, "runs", f"{case}-{integrator}-{factor:g}")
+        shutil.rmtree(folder, ignore_errors=True)
+        done = subprocess.run(
+            [self.talus, "run", os.path.join(CASES, case, "scenario.toml"), "--out", folder,
+             "--quiet", "--threads", "1", "--set", f"simulation.integrator={integrator}",
+             "--set", f"simulation.timestep_factor={factor}"],
+            env=ENV, capture_output=True, text=True)
+        said = done.stderr.strip().splitlines()[-1] if done.stderr.strip() else ""
+        thermo = os.path.join(folder, "thermo.csv")
+        growth = energy_growth(thermo) if os.path.exists(thermo) else float("nan")
+        stable = done.returncode == 0 and growth <= GROWTH
+        if done.returncode == 0 and not stable:
+            said = f"the run ended with its energy grown by {growth:.2g} (the guard let it be)"
+        return stable, growth, said
+
+    def lammps(self, case, factor):
+        """The same in LAMMPS (no guard there: stable when it ends with finite, non-growing
+        energy); None when the case cannot be exported."""
+        folder = os.path.join(self.out, "runs", f"{case}-lammps-{factor:g}")
+        shutil.rmtree(folder, ignore_errors=True)
+        done = subprocess.run(
+            [self.talus, "export", "lammps", os.path.join(CASES, case, "scenario.toml"), folder,
+             "--quiet", "--set", "simulation.integrator=verlet",
+             "--set", "simulation.verlet_velocity=half_step",
+             "--set", f"simulation.timestep_factor={factor}"],
+            env=ENV, capture_output=True, text=True)
+        if done.returncode != 0:
+            return None
+        name = next(f[3:] for f in os.listdir(folder) if f.startswith("in."))
+        run = subprocess.run([
+            "mpirun", "-np", "1", self.lmp, "-in", f"in.{name}", "-log", "log.lammps",
+            "-screen", "none"], cwd=folder, env=ENV, capture_output=True, text=True)
+        with open(os.path.join(folder, "log.lammps")) as f:
+            log = f.read().splitlines()
+        said = next((l for l in log if l.startswith("ERROR")), "")
+        # the thermo table: kinetic, rotational and pair (elastic) energy; no gravity term, so
+        # the growth is meaningful for the cases without gravity
+        start = max((k for k, l in enumerate(log) if l.split()[:2] == ["Step", "Time"]),
+                    default=None)
+        rows = []
+        for line in log[start + 1:] if start is not None else []:
+            try:
+                rows.append([float(w) for w in line.split()])
+            except ValueError:
+                break
+        table = np.array([r for r in rows if len(r) == len(log[start].split())])
+        if run.returncode != 0 or not len(table) or not np.all(np.isfinite(table)):
+            return False, float("nan"), said or "LAMMPS stopped, or a value went non-finite"
+        names = log[start].split()
+        at = {n: k for k, n in enumerate(names)}
+        kinetic = table[:, at["c_grains_ke"]] + table[:, at["c_grains_rotation"]]
+        total = kinetic + table[:, at["PotEng"]]
+        scale = float(np.max(total))
+        growth = float(np.max(total - np.minimum.accumulate(total))) / scale if scale else 0.0
+        return growth <= GROWTH, growth, said
+
+
+def limit(probe, lo=1.0, hi=50.0, steps=7):
+    """The smallest factor t_c / dt in [lo, hi] at which probe(factor) is stable, by bisection
+    in log (stability assumed monotone in dt); (factor, what the guard said just beyond it)."""
+    if probe(lo)[0]:
+        return lo, ""
+    if not probe(hi)[0]:
+        return None, probe(hi)[2]
+    said = probe(lo)[2]
+    for _ in range(steps):
+        mid = (lo * hi) ** 0.5
+        stable, _, words = probe(mid)
+        if stable:
+            hi = mid
+        else:
+            lo, said = mid, words
+    return hi, said
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("cases", nargs="*", help="folders of inputs/hard/ (default: all)")
+    parser.add_argument("--check", action="store_true",
+                        help="only: each case at the automatic timestep ends, energy not growing")
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results", "stability"))
+    args = parser.parse_args()
+    cases = args.cases or sorted(os.listdir(CASES))
+    runner = Runner(os.path.abspath(args.build), os.path.abspath(args.out))
+    os.makedirs(runner.out, exist_ok=True)
+    good, results = True, []
+    for case in cases:
+        if not os.path.exists(os.path.join(CASES, case, "scenario.toml")):
+            sys.exit(f"no case '{case}' in {CASES}")
+        row = {"case": case}
+        for integrator in ("gear", "verlet"):
+            stable, growth, said = runner.native(case, integrator, 50)
+            row[f"{integrator}_default"] = {"stable": stable, "energy_growth": growth,
+                                            "said": said}
+            print(f"{'ok  ' if stable else 'FAIL'} {case}: native {integrator} at t_c/50: "
+                  f"energy growth {growth:.2e} of the largest kinetic + elastic"
+                  + (f"; {said}" if not stable else ""))
+            good = good and stable
+            if args.check:
+                continue
+            factor, words = limit(lambda f: runner.native(case, integrator, f))
+            row[f"{integrator}_limit"] = None if factor is None else 1.0 / factor
+            row[f"{integrator}_beyond"] = words
+            print(f"     {case}: native {integrator}: dt_crit / t_c = "
+                  + ("below 1/50" if factor is None else f"{1.0 / factor:.3g}")
+                  + (f"; beyond it: {words}" if words else ""))
+        if not args.check and runner.has_lammps:
+            if runner.lammps(case, 50) is None:
+                row["lammps_limit"] = "not exportable"
+                print(f"     {case}: LAMMPS: not exportable (talus export lammps refuses it)")
+            else:
+                factor, words = limit(lambda f: runner.lammps(case, f))
+                row["lammps_limit"] = None if factor is None else 1.0 / factor
+                print(f"     {case}: LAMMPS verlet: dt_crit / t_c = "
+                      + ("below 1/50" if factor is None else f"{1.0 / factor:.3g}"))
+        results.append(row)
+    with open(os.path.join(runner.out, "results.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    sys.exit(0 if good else 1)
+
+
+if __name__ == "__main__":
+    main()
