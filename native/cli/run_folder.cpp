@@ -28,8 +28,9 @@ int take_lock(const fs::path& dir, std::string& holder) {
   const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw InvalidArgument("cannot open " + path.string() + ": " + std::strerror(errno));
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    // the holder writes its pid just after taking the lock: give it a moment
-    for (int tries = 0; tries < 50 && holder.empty(); ++tries) {
+    // the holder writes its pid just after taking the lock (a new lock file is empty until
+    // then): give it a moment, a long one on a loaded machine
+    for (int tries = 0; tries < 200 && holder.empty(); ++tries) {
       std::ifstream in(path);
       std::getline(in, holder);
       if (holder.empty()) ::usleep(10'000);
@@ -37,8 +38,12 @@ int take_lock(const fs::path& dir, std::string& holder) {
     ::close(fd);
     return -1;
   }
+  // the pid over the last holder's, then the rest cut: the first line is never empty or mixed
+  // (what follows the newline is left of a longer old pid until the cut), so a process refused
+  // meanwhile reads a whole pid
   const std::string pid = std::to_string(::getpid()) + "\n";
-  if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, pid.data(), pid.size(), 0) < 0) {
+  if (::pwrite(fd, pid.data(), pid.size(), 0) < 0 ||
+      ::ftruncate(fd, static_cast<off_t>(pid.size())) != 0) {
     // the lock holds without the pid; a refused process then names no holder
   }
   return fd;
