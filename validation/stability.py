@@ -26,10 +26,11 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from crosscheck import ENV  # noqa: E402  (the same environment for mpirun as root)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "hard")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMP_NUM_THREADS="1")
 GROWTH = 0.01  # the energy growth allowed, of the largest kinetic + elastic energy
 
 

@@ -6,6 +6,24 @@
 
 namespace talus::cli {
 
+namespace {
+
+// A vector of numbers as its count, then the numbers.
+void write_numbers(std::ostream& o, const std::vector<double>& v) {
+  o << v.size();
+  for (const double x : v) o << " " << x;
+}
+
+std::vector<double> read_numbers(std::istream& in) {
+  std::size_t n = 0;
+  in >> n;
+  std::vector<double> v(n);
+  for (double& x : v) in >> x;
+  return v;
+}
+
+} // namespace
+
 std::string RunBook::encode() const {
   std::ostringstream o;
   o.precision(17);
@@ -16,10 +34,8 @@ std::string RunBook::encode() const {
     << fill.hi.y << "\nbounds " << bounds.lo.x << " " << bounds.lo.y << " " << bounds.hi.x << " "
     << bounds.hi.y << "\ntracked";
   for (const auto t : tracked) o << " " << t;
-  o << "\nfront_state " << front_state.size();
-  for (const double v : front_state) o << " " << v;
-  o << "\ncontact_state " << contact_state.size();
-  for (const double v : contact_state) o << " " << v;
+  write_numbers(o << "\nfront_state ", front_state);
+  write_numbers(o << "\ncontact_state ", contact_state);
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
   for (const auto& [name, g] : groups) {
@@ -62,17 +78,11 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
     else if (key == "bounds")
       l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
-    else if (key == "front_state") {
-      std::size_t n = 0;
-      l >> n;
-      b.front_state.resize(n);
-      for (double& v : b.front_state) l >> v;
-    } else if (key == "contact_state") {
-      std::size_t n = 0;
-      l >> n;
-      b.contact_state.resize(n);
-      for (double& v : b.contact_state) l >> v;
-    } else if (key == "tracked") {
+    else if (key == "front_state")
+      b.front_state = read_numbers(l);
+    else if (key == "contact_state")
+      b.contact_state = read_numbers(l);
+    else if (key == "tracked") {
       for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
     } else if (key == "group") {
       std::string name;
