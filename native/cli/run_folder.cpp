@@ -68,7 +68,9 @@ bool empty_but_lock(const fs::path& dir) {
 } // namespace
 
 bool never_checkpointed(const fs::path& dir) {
-  return fs::exists(dir / "scenario.toml") && !fs::exists(dir / "checkpoint.bin") &&
+  // a sweep folder has a lock file too, and must never be taken for a run to clear
+  return (fs::exists(dir / "scenario.toml") || fs::exists(dir / lock_name)) &&
+         !fs::exists(dir / "sweep.json") && !fs::exists(dir / "checkpoint.bin") &&
          !fs::exists(dir / "checkpoint.prev.bin") && !fs::exists(dir / "run.json");
 }
 

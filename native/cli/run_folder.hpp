@@ -41,7 +41,9 @@ private:
 /// `holder` (empty if unknown).
 int take_lock(const std::filesystem::path& dir, std::string& holder);
 
-/// Whether dir holds a run that never wrote a checkpoint (and has not ended).
+/// Whether dir holds a run that never wrote a checkpoint (and has not ended): a folder talus made
+/// (it has the lock file or scenario.toml; not a sweep folder) with no checkpoint and no run.json.
+/// A run killed at its very start may have left the lock file and little else.
 bool never_checkpointed(const std::filesystem::path& dir);
 
 } // namespace talus::cli

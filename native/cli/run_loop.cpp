@@ -550,9 +550,12 @@ int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, co
 
 int resume_run(const std::string& dir, const RunOptions& o) {
   const fs::path d(dir);
-  if (!fs::exists(d / "scenario.toml"))
+  if (!fs::exists(d / "scenario.toml") && !never_checkpointed(d))
     throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
   const RunFolder folder = RunFolder::open(dir); // held until the run ends
+  if (!fs::exists(d / "scenario.toml"))          // killed before it wrote even its scenario
+    throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped at its start; " +
+                          "start it again with: talus run SCENARIO --out " + dir);
   const Scenario s = load_scenario_file((d / "scenario.toml").string());
   std::optional<Checkpoint> c;
   for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {

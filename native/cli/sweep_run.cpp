@@ -75,7 +75,10 @@ pid_t launch(const fs::path& dir, const SweepRun& r) {
     // the run stops at a checkpoint when the sweep dies, however it dies (even by SIGKILL), so
     // that talus resume finds no run still going
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
-    if (::getppid() != parent) ::_exit(130);
+    // the sweep's handler, copied by fork, would swallow a signal passed on before the exec
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (::getppid() != parent || sweep_stop) ::_exit(130);
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
     if (fd < 0 || ::dup2(fd, 1) < 0 || ::dup2(fd, 2) < 0) ::_exit(126);
     ::execv(exe.c_str(), argv.data());
@@ -117,12 +120,17 @@ struct Pool {
     const SweepRun& r = plan.runs[i];
     results[i] = read_result(dir, r);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    if (results[i].status == "pending" || (code != 0 && code != 130 && code != 4)) {
+    // a run stopped by the sweep's signal before it began is still to do, not failed
+    const bool stopped_early =
+        sweep_stop && results[i].status == "pending" && (code == 130 || code == 128 + SIGTERM);
+    if (!stopped_early &&
+        (results[i].status == "pending" || (code != 0 && code != 130 && code != 4))) {
       results[i].status = results[i].status == "pending" ? "failed" : results[i].status;
       results[i].texts["error"] = fmt::format("exit status {}; see logs/{}.log", code, r.name);
     }
     if (results[i].status == "finished") ++finished;
-    if (results[i].status != "finished" && results[i].status != "interrupted") failed = true;
+    if (results[i].status != "finished" && results[i].status != "interrupted" && !stopped_early)
+      failed = true;
     write_index(dir, plan, results);
     if (o.quiet) return;
     const SweepResult& x = results[i];

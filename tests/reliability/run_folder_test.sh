@@ -32,6 +32,25 @@ ${command/talus/$talus} --quiet || fail "the command resume gave failed: $comman
 grep -q '"ended_by": "duration"' "$dir/a/run.json" || fail "the restarted run did not finish"
 echo "ok: a run killed while settling starts again with: $command"
 
+# killed at its very start, before it wrote its scenario: the lock file, the snapshots folder and
+# a half-written scenario.toml.tmp; talus run into it starts afresh, resume says so
+mkdir -p "$dir/s/snapshots"
+echo 1 > "$dir/s/.lock"
+echo "[simul" > "$dir/s/scenario.toml.tmp"
+out=$("$talus" resume "$dir/s" 2>&1) && fail "resume of a run killed at its start succeeded"
+echo "$out" | grep -q "stopped at its start; start it again with: talus run SCENARIO --out $dir/s" ||
+  fail "resume of a run killed at its start said: $out"
+"$talus" run "${settle[@]}" --set packing.settle_max_time=0.05 --out "$dir/s" ||
+  fail "talus run into a folder killed at its start"
+[ -e "$dir/s/scenario.toml.tmp" ] && fail "the half-written scenario was left"
+# a sweep folder is never taken for such a run
+mkdir -p "$dir/w/logs"
+echo 1 > "$dir/w/.lock"
+echo "{}" > "$dir/w/sweep.json"
+out=$("$talus" run "${settle[@]}" --out "$dir/w" 2>&1) && fail "talus run into a sweep folder"
+[ -e "$dir/w/sweep.json" ] && [ -d "$dir/w/logs" ] || fail "talus run cleared a sweep folder"
+echo "ok: a run killed at its start starts again; a sweep folder is left alone"
+
 # killed right after its start: the t = 0 checkpoint is there to resume from
 fast=(drum --quiet --set particles.count=100 --set packing.settle_max_time=0.05
       --set simulation.duration=0.3 --set output.checkpoint_interval=10)

@@ -79,6 +79,11 @@ wait "$pid" 2> /dev/null
 for _ in $(seq 1 30); do pgrep -f "$killed/run-" > /dev/null || break; sleep 0.1; done
 pgrep -f "$killed/run-" > /dev/null && fail "runs go on after the sweep was killed"
 grep -q '"ended_by": "signal"' "$killed"/run-00[12]/run.json || fail "no run stopped at a checkpoint"
+# run-002 as if killed at its very start (the lock, the snapshots folder, a half-written
+# scenario): resume starts it afresh
+find "$killed/run-002" -mindepth 1 -maxdepth 1 ! -name .lock -exec rm -rf {} +
+mkdir "$killed/run-002/snapshots"
+echo "[simul" > "$killed/run-002/scenario.toml.tmp"
 "$talus" resume "$killed" > "$dir/log4" 2>&1 || { cat "$dir/log4"; fail "resume after SIGKILL"; }
 [ "$(grep -c ',finished,' "$killed/index.csv")" -eq 2 ] || { cat "$killed/index.csv"; fail "not finished after SIGKILL and resume"; }
 echo "sweep: stopped, resumed, identical to talus run, gathered; SIGKILL stops its runs"
