@@ -28,7 +28,9 @@ def by_id(rs):
 
 if kind == "thermo":
     t = col("time")
-    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    ledger = "energy_imbalance" in rows[0]  # output.energy_ledger
+    fig, axes = plt.subplots(3 if ledger else 2, 1, figsize=(8, 10 if ledger else 7), sharex=True)
+    a, b = axes[0], axes[-1]
     for key, label in [("kinetic_translational", "kinetic, translation"),
                        ("kinetic_rotational", "kinetic, rotation"), ("elastic", "elastic"),
                        ("total", "total")]:
@@ -36,6 +38,17 @@ if kind == "thermo":
     a.set_ylabel("energy [J]")
     a.set_yscale("symlog", linthresh=1e-9)
     a.legend(fontsize=8)
+    if ledger:  # where the energy went: E + dissipated - wall work stays at its start
+        c = axes[1]
+        start = float(rows[0]["total"])
+        for key, label in [("dissipated_damper", "dissipated by the normal dampers"),
+                           ("dissipated_friction", "dissipated by friction"),
+                           ("wall_work", "work of the driven walls")]:
+            c.plot(t, col(key), label=label)
+        c.plot(t, [x - start for x in col("total")], label="total energy - its start")
+        c.plot(t, col("energy_imbalance"), "k--", label="imbalance (the integration's error)")
+        c.set_ylabel("energy [J]")
+        c.legend(fontsize=8)
     b.plot(t, col("coordination"), label="coordination number Z")
     b.plot(t, col("packing_fraction"), label="packing fraction")
     b.set_xlabel("time [s]")
@@ -121,7 +134,9 @@ elif kind == "tracks":
     axes[0][0].legend(fontsize=7)
 elif kind == "segregation":
     t = col("time")
-    fig, (a, b) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    ledger = "energy_imbalance" in rows[0]  # output.energy_ledger
+    fig, axes = plt.subplots(3 if ledger else 2, 1, figsize=(8, 10 if ledger else 7), sharex=True)
+    a, b = axes[0], axes[-1]
     for k in range(extra["largest"]):
         a.plot(t, col(f"largest_{k}_height"), label=f"largest grain #{k + 1}")
     a.plot(t, col("bed_height"), "k--", label="bed height")

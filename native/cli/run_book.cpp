@@ -36,6 +36,7 @@ std::string RunBook::encode() const {
   for (const auto t : tracked) o << " " << t;
   write_numbers(o << "\nfront_state ", front_state);
   write_numbers(o << "\ncontact_state ", contact_state);
+  write_numbers(o << "\nledger_state ", ledger_state);
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
   for (const auto& [name, g] : groups) {
@@ -82,6 +83,8 @@ RunBook RunBook::decode(const std::string& text) {
       b.front_state = read_numbers(l);
     else if (key == "contact_state")
       b.contact_state = read_numbers(l);
+    else if (key == "ledger_state")
+      b.ledger_state = read_numbers(l);
     else if (key == "tracked") {
       for (std::uint32_t t; l >> t;) b.tracked.push_back(t);
     } else if (key == "group") {

@@ -16,6 +16,7 @@
 #include <fmt/core.h>
 
 #include "analysis/contact_events.hpp"
+#include "analysis/energy_ledger.hpp"
 #include "analysis/observables.hpp"
 #include "cli/pictures.hpp"
 #include "io/checkpoint.hpp"
@@ -70,6 +71,10 @@ public:
       contact_log_.emplace();
       if (!book_.contact_state.empty()) contact_log_->load(book_.contact_state);
     }
+    if (s.output.energy_ledger) {
+      ledger_.emplace();
+      if (!book_.ledger_state.empty()) ledger_->load(book_.ledger_state);
+    }
   }
 
   void open_files(bool fresh) {
@@ -84,6 +89,10 @@ public:
     std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
                        "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
                        "packing_fraction";
+    if (ledger_) {
+      head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
+      ledger_->start(sim_);
+    }
     for (const auto& [name, _] : book_.groups) head += ",force_" + name + "_x,force_" + name + "_y";
     thermo_ << head << "\n";
     if (track_.is_open()) track_ << "time,id,x,y,angle,vx,vy,omega\n";
@@ -132,6 +141,7 @@ public:
       follow_renumbering();
       const std::uint64_t k = sim_.step_count();
       observe_contacts();
+      if (ledger_) ledger_->observe(sim_);
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
       if (k % thermo_every_ == 0) {
         record_thermo();
@@ -245,6 +255,11 @@ private:
         sim_.time(), sim_.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
         e.total(), p.x, p.y, angular_momentum(sim_), coordination_number(sim_), contact_count(sim_),
         packing());
+    if (ledger_) {
+      const LedgerRow l = ledger_->row(e);
+      row += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
+                         l.wall_work, l.imbalance);
+    }
     for (const auto& [name, g] : book_.groups) {
       Vec2 f = force_on_particles(sim_, g.particles);
       for (const auto sidx : g.segments) f += sim_.world().walls[sidx].force;
@@ -292,7 +307,7 @@ private:
     if (!book_.tracked.empty()) look_at_multiples_of(track_every_);
     if (front_) look_at_multiples_of(front_every_);
     look_at_multiples_of(sim_.config().sort_interval);
-    if (contact_log_) look_at_multiples_of(1);
+    if (contact_log_ || ledger_) look_at_multiples_of(1);
     return next - k;
   }
 
@@ -394,6 +409,7 @@ private:
     book_.wall_seconds = wall;
     if (front_) book_.front_state = front_->save();
     if (contact_log_) book_.contact_state = contact_log_->save();
+    if (ledger_) book_.ledger_state = ledger_->save();
     Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
     const fs::path latest = dir_ / "checkpoint.bin", previous = dir_ / "checkpoint.prev.bin";
     if (fs::exists(latest)) fs::rename(latest, previous);
@@ -499,6 +515,7 @@ private:
   std::ofstream thermo_, track_, out_, frost_, events_;
   std::optional<FrostFront> front_;
   std::optional<ContactEventLog> contact_log_;
+  std::optional<EnergyLedger> ledger_;
   std::uint64_t front_every_ = 1;
   bool tty_ = false, printed_ = false;
   std::uint64_t renumberings_seen_ = 0;

@@ -19,6 +19,7 @@ struct RunBook {
   double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
   std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
   std::vector<double> contact_state; ///< open contacts (ContactEventLog::save), output.contacts
+  std::vector<double> ledger_state;  ///< EnergyLedger::save, output.energy_ledger
   double wall_seconds = 0.0;         ///< wall time spent so far
   std::string ended; ///< why the run ended ("duration", "cycles"); empty while it goes on
   double settle_time = 0.0;

@@ -265,6 +265,7 @@ void read_output(TableReader& r, OutputSection& o) {
       r.number("track_interval", o.track_interval, 0.0, inf, ">= 0 s (0: every step)");
   o.thesis_out = r.boolean("thesis_out", o.thesis_out);
   o.contacts = r.boolean("contacts", o.contacts);
+  o.energy_ledger = r.boolean("energy_ledger", o.energy_ledger);
   o.picture = r.boolean("picture", o.picture);
   o.pictures = r.texts("pictures");
   for (const std::string& p : o.pictures)

@@ -193,6 +193,7 @@ std::string to_toml(const Scenario& s) {
                                     {"track_interval", o.track_interval},
                                     {"thesis_out", o.thesis_out},
                                     {"contacts", o.contacts},
+                                    {"energy_ledger", o.energy_ledger},
                                     {"picture", o.picture},
                                     {"pictures", pictures},
                                     {"movie", o.movie},

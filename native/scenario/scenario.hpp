@@ -124,6 +124,9 @@ struct OutputSection {
   /// Each snapshot's touching contacts as CSV, and every contact's start, end and peaks in
   /// contact_events.csv (the contacts are then looked at every step).
   bool contacts = false;
+  /// The energy ledger in thermo.csv: the energy dissipated by the dampers and by friction, the
+  /// driven walls' work, and the balance's error (the contacts are then looked at every step).
+  bool energy_ledger = false;
   bool picture = true; ///< final.png at the end
   /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
   /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).

@@ -7,14 +7,13 @@
 #include <filesystem>
 #include <string>
 
-#include <fmt/format.h>
-
 #include "cli/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "physics/reference_values.hpp"
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"
+#include "support/impacts_scenario.hpp"
 #include "support/run_dir.hpp"
 #include "talus/closed_forms.hpp"
 #include "talus/pair_parameters.hpp"
@@ -26,61 +25,10 @@ namespace {
 
 using testing::fresh_dir;
 
-// Disks 0 and 1 meet head-on at `speed` each; disk 2, far from them, falls at 2 `speed` onto a
-// rigid floor segment. Both gaps are 1 mm: both impacts begin at 5 ms. No gravity: every impact is
-// at the speed it is given. The timestep is t_c / 500 of the pair (the wall contact's is shorter by
-// 2^(1/5) at most).
 Scenario impacts(const std::string& law, double restitution, double speed) {
-  const std::string text =
-      fmt::format(R"(name = "impacts"
-[simulation]
-duration = 0.02
-timestep = "auto"
-timestep_factor = 500
-integrator = "verlet"
-normal_law = "{}"
-tangential_law = "coulomb"
-gravity = [0.0, 0.0]
-impact_speed = {}
-[[materials]]
-name = "grain"
-density = 2650.0
-young = 5.0e7
-normal_stiffness = 2.0e5
-restitution = {}
-friction = 0.0
-[[materials]]
-name = "floor"
-rigid = true
-restitution = {}
-[particles]
-shape = "disk"
-[[particles.list]]
-position = [-0.0055, 0.0]
-radius = 0.005
-velocity = [{}, 0.0]
-[[particles.list]]
-position = [0.0055, 0.0]
-radius = 0.005
-velocity = [-{}, 0.0]
-[[particles.list]]
-position = [0.1, 0.006]
-radius = 0.005
-velocity = [0.0, -{}]
-[geometry]
-wall_material = "floor"
-[[geometry.segments]]
-a = [0.05, 0.0]
-b = [0.15, 0.0]
-[output]
-contacts = true
-thermo_interval = 0.001
-snapshot_interval = 0.001
-checkpoint_interval = 0.001
-picture = false
-)",
-                  law, 2.0 * speed, restitution, restitution, speed, speed, 2.0 * speed);
-  return load_scenario(text, "impacts.toml");
+  return testing::two_impacts(law, restitution, speed, "verlet",
+                              "contacts = true\nthermo_interval = 0.001\n"
+                              "snapshot_interval = 0.001\ncheckpoint_interval = 0.001");
 }
 
 std::vector<ContactEvent> run_events(const Scenario& s, const fs::path& dir, double stop_at = -1) {

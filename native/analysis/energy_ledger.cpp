@@ -1,0 +1,100 @@
+#include "analysis/energy_ledger.hpp"
+
+#include "core/contact_vectors.hpp"
+#include "talus/error.hpp"
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+namespace {
+
+// A contact's share of the powers. The relative motion's power F_n v_n + F_t v_t is what the
+// contact force does on both members together (the lever arms make the torques' part exact);
+// the free members' power beyond it comes from a wall's motion.
+template <class N, class T>
+void add_contact(const Particles& p, const ContactView& v, ContactPowers& out) {
+  const bool free_i = p.is_free(v.i), free_j = v.wall < 0 && p.is_free(v.j);
+  if (!free_i && !free_j) return;
+  const ContactGeometry& g = v.geometry;
+  double history = v.history; // a copy: looking must not advance the spring
+  const ContactForce f = contact_force<N, T>(*v.parameters, g, history, 0.0);
+  ContactGeometry at_rest = g; // the elastic part of the normal force: the force without motion
+  at_rest.v_normal = 0.0;
+  const double elastic = N::force(*v.parameters, at_rest);
+  const Vec2 force = force_of(f);
+  const double tangential = dot(force, tangent_of(g));
+  const double relative = f.normal_force * g.v_normal + tangential * g.v_tangent;
+  out.damper -= (f.normal_force - elastic) * g.v_normal;
+  out.tangential -= tangential * g.v_tangent;
+  if (!free_i || !free_j) {
+    double into_free = 0.0;
+    if (free_i) into_free += dot(force, p.velocity[v.i]) + f.torque_i * p.angular_velocity[v.i];
+    if (free_j) into_free += -dot(force, p.velocity[v.j]) + f.torque_j * p.angular_velocity[v.j];
+    out.walls += into_free - relative;
+  }
+  if constexpr (T::has_history) {
+    const double kt = T::stiffness(*v.parameters, g, N::stiffness(*v.parameters, g));
+    out.tangential_elastic += 0.5 * kt * v.history * v.history;
+  }
+}
+
+} // namespace
+
+ContactPowers contact_powers(const Simulation& sim) {
+  ContactPowers out;
+  const Particles& p = sim.world().particles;
+  const SimulationConfig& c = sim.config();
+  with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
+    sim.for_each_contact([&](const ContactView& v) { add_contact<N, T>(p, v, out); });
+  });
+  return out;
+}
+
+void EnergyLedger::start(const Simulation& sim) {
+  last_ = contact_powers(sim);
+  last_time_ = sim.time();
+  damper_ = tangential_ = walls_ = 0.0;
+  start_total_ = energies(sim).total();
+  start_tangential_elastic_ = last_.tangential_elastic;
+}
+
+void EnergyLedger::observe(const Simulation& sim) {
+  const ContactPowers now = contact_powers(sim);
+  const double h = sim.time() - last_time_;
+  damper_ += 0.5 * h * (last_.damper + now.damper);
+  tangential_ += 0.5 * h * (last_.tangential + now.tangential);
+  walls_ += 0.5 * h * (last_.walls + now.walls);
+  last_ = now;
+  last_time_ = sim.time();
+}
+
+LedgerRow EnergyLedger::row(const Energies& e) const {
+  LedgerRow r;
+  r.dissipated_damper = damper_;
+  r.dissipated_friction = tangential_ - (last_.tangential_elastic - start_tangential_elastic_);
+  r.wall_work = walls_;
+  r.imbalance =
+      e.total() + r.dissipated_damper + r.dissipated_friction - r.wall_work - start_total_;
+  return r;
+}
+
+std::vector<double> EnergyLedger::save() const {
+  return {
+      last_.damper, last_.tangential, last_.walls,  last_.tangential_elastic, last_time_, damper_,
+      tangential_,  walls_,           start_total_, start_tangential_elastic_};
+}
+
+void EnergyLedger::load(const std::vector<double>& s) {
+  if (s.size() != 10)
+    throw InvalidArgument("checkpoint: the energy ledger holds " + std::to_string(s.size()) +
+                          " numbers, expected 10");
+  last_ = {s[0], s[1], s[2], s[3]};
+  last_time_ = s[4];
+  damper_ = s[5];
+  tangential_ = s[6];
+  walls_ = s[7];
+  start_total_ = s[8];
+  start_tangential_elastic_ = s[9];
+}
+
+} // namespace talus

@@ -1,0 +1,60 @@
+#pragma once
+// The energy ledger: where a run's energy went. Besides the kinetic, gravitational and elastic
+// energy of the state (observables.hpp), the energy the normal dampers and friction dissipated
+// and the work the driven walls did on the grains, each integrated over time from its power in
+// the contacts, looked at after every step. With them the sum
+//   E_kin + E_grav + E_el + dissipated - wall work
+// stays at its start but for the integration's error: its drift is the run's energy error.
+#include <vector>
+
+#include "analysis/observables.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus {
+
+/// The powers of the contacts of a state (W), and the energy of the tangential springs (J).
+struct ContactPowers {
+  double damper = 0.0; ///< -(F_n - F_el) v_n: the normal damper's dissipation, >= 0
+  /// -F_t v_t: the tangential force's work against the slip (friction's dissipation plus the
+  /// tangential springs' loading)
+  double tangential = 0.0;
+  /// the power of the contact forces on the free grains beyond the relative motion's: what moving
+  /// walls and moved wall particles put in (0 at fixed walls)
+  double walls = 0.0;
+  double tangential_elastic = 0.0; ///< 1/2 k_t s^2 summed, J
+};
+
+/// Every touching contact with at least one free member, with the law of the run.
+ContactPowers contact_powers(const Simulation& sim);
+
+/// One thermo row's part of the ledger, J.
+struct LedgerRow {
+  double dissipated_damper = 0.0;
+  double dissipated_friction = 0.0; ///< the tangential work less the springs' energy gained
+  double wall_work = 0.0;           ///< done on the grains by driven walls
+  /// E_total + dissipated - wall work, less its value at the start: the energy error
+  double imbalance = 0.0;
+};
+
+class EnergyLedger {
+public:
+  /// Starts at the current state (a new run's t = 0).
+  void start(const Simulation& sim);
+  /// Takes in the step since the last look (trapezoidal rule on the powers).
+  void observe(const Simulation& sim);
+  /// The ledger at the last look, with that state's energies.
+  LedgerRow row(const Energies& e) const;
+  /// The ledger as numbers, for a checkpoint, and back (a resumed run's ledger is the same as an
+  /// uninterrupted one's).
+  std::vector<double> save() const;
+  void load(const std::vector<double>& state);
+
+private:
+  ContactPowers last_{};
+  double last_time_ = 0.0;
+  double damper_ = 0.0, tangential_ = 0.0, walls_ = 0.0; ///< J, integrated
+  double start_total_ = 0.0;                             ///< E_total at the start
+  double start_tangential_elastic_ = 0.0;
+};
+
+} // namespace talus
