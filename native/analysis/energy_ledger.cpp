@@ -1,5 +1,12 @@
 #include "analysis/energy_ledger.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
 #include "core/contact_vectors.hpp"
 #include "talus/error.hpp"
 #include "talus/law_table.hpp"
@@ -68,26 +75,35 @@ void EnergyLedger::observe(const Simulation& sim) {
   last_time_ = sim.time();
 }
 
-LedgerRow EnergyLedger::row(const Energies& e) const {
+LedgerRow EnergyLedger::row(const Energies& e) {
   LedgerRow r;
   r.dissipated_damper = damper_;
   r.dissipated_friction = tangential_ - (last_.tangential_elastic - start_tangential_elastic_);
   r.wall_work = walls_;
   r.imbalance =
       e.total() + r.dissipated_damper + r.dissipated_friction - r.wall_work - start_total_;
+  largest_mechanical_ = std::max(largest_mechanical_, e.kinetic() + e.elastic);
+  const double in_play = largest_mechanical_ + std::abs(r.dissipated_damper) +
+                         std::abs(r.dissipated_friction) + std::abs(r.wall_work);
+  r.rise = r.imbalance - lowest_imbalance_;
+  r.growth = in_play > 0.0 ? r.rise / in_play : 0.0;
+  lowest_imbalance_ = std::min(lowest_imbalance_, r.imbalance);
   return r;
 }
 
 std::vector<double> EnergyLedger::save() const {
-  return {
-      last_.damper, last_.tangential, last_.walls,  last_.tangential_elastic, last_time_, damper_,
-      tangential_,  walls_,           start_total_, start_tangential_elastic_};
+  return {last_.damper,      last_.tangential,
+          last_.walls,       last_.tangential_elastic,
+          last_time_,        damper_,
+          tangential_,       walls_,
+          start_total_,      start_tangential_elastic_,
+          lowest_imbalance_, largest_mechanical_};
 }
 
 void EnergyLedger::load(const std::vector<double>& s) {
-  if (s.size() != 10)
+  if (s.size() != 12)
     throw InvalidArgument("checkpoint: the energy ledger holds " + std::to_string(s.size()) +
-                          " numbers, expected 10");
+                          " numbers, expected 12");
   last_ = {s[0], s[1], s[2], s[3]};
   last_time_ = s[4];
   damper_ = s[5];
@@ -95,6 +111,60 @@ void EnergyLedger::load(const std::vector<double>& s) {
   walls_ = s[7];
   start_total_ = s[8];
   start_tangential_elastic_ = s[9];
+  lowest_imbalance_ = s[10];
+  largest_mechanical_ = s[11];
+}
+
+std::string energy_growth_diagnosis(const Simulation& sim, const LedgerRow& row,
+                                    double collision_time) {
+  const Particles& p = sim.world().particles;
+  const SimulationConfig& c = sim.config();
+  double shortest = std::numeric_limits<double>::infinity(), ratio = 0.0;
+  std::string pair;
+  with_normal_law(c.normal_law, [&]<class N>() {
+    sim.for_each_contact([&](const ContactView& v) {
+      const double k = N::stiffness(*v.parameters, v.geometry);
+      if (!(k > 0.0)) return;
+      const double tc = std::numbers::pi * std::sqrt(v.geometry.m_eff / k);
+      if (tc >= shortest) return;
+      shortest = tc;
+      const double smaller = v.wall < 0 ? std::min(p.radius[v.i], p.radius[v.j]) : p.radius[v.i];
+      ratio = v.geometry.overlap / smaller;
+      pair = fmt::format("particle id {} and {}", p.id[v.i],
+                         v.wall < 0 ? fmt::format("particle id {}", p.id[v.j])
+                                    : fmt::format("wall segment {}", v.wall));
+    });
+  });
+  std::string msg = fmt::format(
+      "unstable at step {} (t = {:.6g} s, dt = {:.4g} s): the energy grew by {:.3g} J, {:.2g} "
+      "of the energy in play, that no damper, friction or driven wall accounts for (the energy "
+      "ledger; limit {:g})",
+      sim.step_count(), sim.time(), c.timestep, row.rise, row.growth, ledger_growth_limit);
+  if (std::isfinite(shortest)) {
+    msg += fmt::format(". The stiffest contact now, between {} at an overlap of {:.2g} of the "
+                       "smaller radius, lasts about {:.3g} s: {:.3g} steps",
+                       pair, ratio, shortest, shortest / c.timestep);
+    if (collision_time > 0.0 && shortest < 0.8 * collision_time)
+      return msg + fmt::format(", where the timestep was chosen for contacts of {:.3g} s. The "
+                               "contacts have stiffened (a Hertz contact does as its overlap "
+                               "grows) past what the timestep integrates: a timestep of about "
+                               "{:.3g} s (that contact's time / 50), or velocity Verlet, which "
+                               "is stable to larger ones (docs/accuracy.md).",
+                               collision_time, shortest / 50.0);
+  } else {
+    msg += ". No contact touches now (those that grew it have ended)";
+  }
+  const double steps = collision_time / c.timestep;
+  if (collision_time > 0.0 && steps < Simulation::min_steps_per_contact)
+    return msg + fmt::format(". The timestep resolves the run's collision time ({:.3g} s) in "
+                             "{:.3g} steps: it is too large; a timestep of about {:.3g} s "
+                             "(collision time / 50) would resolve it.",
+                             collision_time, steps, collision_time / 50.0);
+  return msg + fmt::format(". The contacts are as stiff as the timestep was chosen for ({:.3g} "
+                           "steps per collision time); a smaller timestep (about the collision "
+                           "time / 50), or the other integrator, may be stable (the limits of "
+                           "both: docs/accuracy.md).",
+                           steps);
 }
 
 } // namespace talus

@@ -5,6 +5,7 @@
 // the contacts, looked at after every step. With them the sum
 //   E_kin + E_grav + E_el + dissipated - wall work
 // stays at its start but for the integration's error: its drift is the run's energy error.
+#include <string>
 #include <vector>
 
 #include "analysis/observables.hpp"
@@ -34,7 +35,15 @@ struct LedgerRow {
   double wall_work = 0.0;           ///< done on the grains by driven walls
   /// E_total + dissipated - wall work, less its value at the start: the energy error
   double imbalance = 0.0;
+  /// The imbalance's rise above its lowest at the rows before, over the energy that has been
+  /// in play (the largest kinetic plus elastic energy of those rows, plus the dissipated energy
+  /// and the walls' work): what an instability puts in
+  double growth = 0.0;
+  double rise = 0.0; ///< J: the imbalance's rise above its lowest before
 };
+
+/// The energy growth at which a run with the ledger stops as unstable.
+inline constexpr double ledger_growth_limit = 0.01;
 
 class EnergyLedger {
 public:
@@ -42,8 +51,9 @@ public:
   void start(const Simulation& sim);
   /// Takes in the step since the last look (trapezoidal rule on the powers).
   void observe(const Simulation& sim);
-  /// The ledger at the last look, with that state's energies.
-  LedgerRow row(const Energies& e) const;
+  /// The ledger at the last look, with that state's energies, as a thermo row: the growth is
+  /// measured against the rows before.
+  LedgerRow row(const Energies& e);
   /// The ledger as numbers, for a checkpoint, and back (a resumed run's ledger is the same as an
   /// uninterrupted one's).
   std::vector<double> save() const;
@@ -55,6 +65,12 @@ private:
   double damper_ = 0.0, tangential_ = 0.0, walls_ = 0.0; ///< J, integrated
   double start_total_ = 0.0;                             ///< E_total at the start
   double start_tangential_elastic_ = 0.0;
+  double lowest_imbalance_ = 0.0, largest_mechanical_ = 0.0; ///< J, over the rows so far
 };
+
+/// Why a run's energy grew: the stiffest contact now against the timestep, and against the
+/// collision time the timestep was chosen for (`collision_time`, s). For the guard's message.
+std::string energy_growth_diagnosis(const Simulation& sim, const LedgerRow& row,
+                                    double collision_time);
 
 } // namespace talus

@@ -257,6 +257,9 @@ private:
         packing());
     if (ledger_) {
       const LedgerRow l = ledger_->row(e);
+      // energy from nowhere: an instability the overlap guard has not seen (yet)
+      if (l.growth > ledger_growth_limit)
+        throw InstabilityError(energy_growth_diagnosis(sim_, l, book_.collision_time));
       row += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
                          l.wall_work, l.imbalance);
     }

@@ -116,6 +116,9 @@ public:
   /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
+  /// A contact resolved in fewer steps than this is blamed on the timestep.
+  static constexpr double min_steps_per_contact = 10.0;
+
 private:
   friend class ParticleEdits;
   Simulation(SimulationState state, SimulationConfig config, bool restoring);
@@ -143,8 +146,6 @@ private:
   /// Stage 6: the stability guard (non-finite state, overlap too deep, a grain escaped).
   void guard() const;
   void describe_deepest_contact(std::ostringstream& msg) const;
-  /// A contact resolved in fewer steps than this is blamed on the timestep.
-  static constexpr double min_steps_per_contact = 10.0;
   void list_moved();        ///< driven_: every Kind::moved particle
   double next_skin() const; ///< the skin of the next list build (config or automatic)
   /// The neighbour list's drift test for the particles, after a pass that moved them at most

@@ -18,6 +18,7 @@
 #include "support/builtin_scenario.hpp"
 #include "support/impacts_scenario.hpp"
 #include "support/run_dir.hpp"
+#include "talus/error.hpp"
 
 namespace fs = std::filesystem;
 
@@ -140,6 +141,31 @@ TEST(EnergyLedger, DrivenWallsWorkBalancesTheEnergyGainedAndDissipated) {
     EXPECT_GT(last.at("dissipated_damper") + last.at("dissipated_friction"), 0.0);
     EXPECT_LE(std::abs(last.at("energy_imbalance")), 1e-4 * work);
   }
+}
+
+// inputs/hard/dense_compression with Gear: the press stiffens the Hertz contacts past what Gear
+// integrates at the timestep chosen for an impact, and the energy grows with no overlap near
+// the overlap guard's limit. The ledger's guard stops the run and names the cause.
+TEST(EnergyLedger, EnergyFromNowhereStopsTheRunNamingTheStiffenedContacts) {
+  Scenario s = load_scenario_file(std::string(TALUS_SOURCE_DIR) +
+                                  "/inputs/hard/dense_compression/scenario.toml");
+  s.simulation.integrator = Integrator::gear;
+  s.output.energy_ledger = true;
+  const fs::path dir = fresh_dir("ledger_growth");
+  cli::RunOptions o;
+  o.quiet = true;
+  try {
+    cli::start_run(s, build_scenario(s), dir.string(), o);
+    ADD_FAILURE() << "the run did not stop";
+  } catch (const InstabilityError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("that no damper, friction or driven wall accounts for"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("The contacts have stiffened"), std::string::npos) << what;
+  }
+  EXPECT_NE(read_file((dir / "run.json").string()).find("\"ended_by\": \"unstable\""),
+            std::string::npos);
+  fs::remove_all(dir);
 }
 
 // Stopped and resumed, the ledger goes on as if never stopped: thermo.csv to the bit.
