@@ -494,13 +494,13 @@ private:
         "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
         "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
         "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
-        "  \"threads_asked\": {},\n"
+        "  \"threads_asked\": {},\n  \"step\": \"{}\",\n"
         "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.6f},\n"
         "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
         "\"{}\"\n}}\n",
         TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),
         sim_.config().timestep, book_.collision_time, to_string(sim_.config().integrator),
-        sim_.threads(), sim_.config().threads, book_.settle_time, wall,
+        sim_.threads(), sim_.config().threads, sim_.step_description(), book_.settle_time, wall,
         wall > 0
             ? static_cast<double>(steps_done) * static_cast<double>(n) / std::max(wall - 0.0, 1e-9)
             : 0.0,
@@ -545,6 +545,13 @@ void report_threads(const Simulation& sim, const RunOptions& o) {
              sim.config().min_particles_per_thread);
 }
 
+// The step specialised to the scene: what it leaves out (simulation/step_features.hpp).
+void report_step(const Simulation& sim, const RunOptions& o) {
+  if (o.quiet) return;
+  fmt::print("  step: {}{}\n", sim.step_description(),
+             sim.step_description() == "general" ? "" : " (left out of every step)");
+}
+
 } // namespace
 
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
@@ -560,6 +567,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
                         to_toml(s) + describe_contact_pairs(built.world, built.config));
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   report_threads(sim, o);
+  report_step(sim, o);
   Run run(s, std::move(sim), std::move(book), folder.path(), o);
   return run.loop(true);
 }
@@ -605,6 +613,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   }
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
   report_threads(sim, o);
+  report_step(sim, o);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
   Run run(s, std::move(sim), std::move(book), d, o);

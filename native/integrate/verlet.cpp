@@ -39,16 +39,24 @@ double max_stable_timestep(Integrator integrator, double stiffness, double m_eff
   return (integrator == Integrator::verlet ? 2.0 : 0.2) / omega;
 }
 
-double verlet_predict(Particles& p, double dt, int threads, double lag) {
+namespace {
+template <bool Rotation> double predict_all(Particles& p, double dt, int threads, double lag) {
   const double half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-  p.force_previous.resize(p.size());
-  p.torque_previous.resize(p.size());
   double farthest2 = 0.0;
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(max : farthest2)
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    farthest2 =
-        std::max(farthest2, verlet_predict_one(p, static_cast<std::size_t>(i), dt, half, lag));
+    farthest2 = std::max(
+        farthest2, verlet_predict_one<Rotation>(p, static_cast<std::size_t>(i), dt, half, lag));
+  return farthest2;
+}
+} // namespace
+
+double verlet_predict(Particles& p, double dt, int threads, double lag, bool rotation) {
+  p.force_previous.resize(p.size());
+  p.torque_previous.resize(p.size());
+  const double farthest2 =
+      rotation ? predict_all<true>(p, dt, threads, lag) : predict_all<false>(p, dt, threads, lag);
   // F(t) is kept by a swap, not a copy (one pass less over memory): `force` now holds stale
   // values that the force stage overwrites for every particle
   std::swap(p.force, p.force_previous);

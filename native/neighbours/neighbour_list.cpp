@@ -98,8 +98,12 @@ struct HistoryRows {
 // the old row to the new one (a merge of sorted rows); new entries start at 0. The old table is
 // used only if it has the same number of rows.
 void carry_history(const HistoryRows& old_rows, const std::vector<std::uint32_t>& offset,
-                   const std::vector<std::uint32_t>& key, std::vector<double>& history,
+                   const std::vector<std::uint32_t>& key, std::vector<double>& history, bool keep,
                    int threads) {
+  if (!keep) { // a list that keeps none holds none, and no memory for it
+    std::vector<double>().swap(history);
+    return;
+  }
   history.assign(key.size(), 0.0);
   if (old_rows.offset.size() != offset.size()) return;
   const auto rows = static_cast<std::ptrdiff_t>(offset.size()) - 1;
@@ -252,7 +256,7 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   }
   join_row_blocks(list, block, n, threads);
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
-                list.history, threads);
+                list.history, list.keeps_history, threads);
 }
 
 void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin,
@@ -294,7 +298,7 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
     list.wall_segment.insert(list.wall_segment.end(), segment[b].begin(), segment[b].end());
   }
   carry_history({old_offset, old_segment, old_history}, list.wall_offset, list.wall_segment,
-                list.wall_history, threads);
+                list.wall_history, list.keeps_history, threads);
 }
 
 } // namespace
@@ -324,6 +328,7 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
 void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
                              const std::vector<std::uint32_t>& new_of_old, int threads) {
   const std::size_t n = order.size();
+  const bool kept = list.keeps_history;
   struct Entry {
     std::uint32_t j;
     ImageShift image;
@@ -341,12 +346,13 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
     for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
       const std::uint32_t a = new_of_old[i], b = new_of_old[list.neighbour[e]];
       const ImageShift s = list.image[e];
+      const double spring = kept ? list.history[e] : 0.0;
       entries[fill[std::min(a, b)]++] =
           a < b
-              ? Entry{b, s, list.history[e]}
+              ? Entry{b, s, spring}
               : Entry{a,
                       ImageShift{static_cast<std::int8_t>(-s.sx), static_cast<std::int8_t>(-s.sy)},
-                      list.history[e]};
+                      spring};
     }
   const auto rows = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -360,7 +366,7 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
   for (std::ptrdiff_t e = 0; e < count; ++e) {
     list.neighbour[e] = entries[e].j;
     list.image[e] = entries[e].image;
-    list.history[e] = entries[e].history;
+    if (kept) list.history[e] = entries[e].history;
   }
   // wall rows follow their particles
   std::vector<std::uint32_t> wall_offset(n + 1, 0), wall_segment;
@@ -371,7 +377,7 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
     const std::uint32_t i = order[k];
     for (std::uint32_t e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e) {
       wall_segment.push_back(list.wall_segment[e]);
-      wall_history.push_back(list.wall_history[e]);
+      if (kept) wall_history.push_back(list.wall_history[e]);
     }
     wall_offset[k + 1] = static_cast<std::uint32_t>(wall_segment.size());
   }

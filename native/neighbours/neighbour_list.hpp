@@ -24,6 +24,10 @@ struct NeighbourList {
   std::vector<std::uint32_t> neighbour; ///< j > i, sorted within a row
   std::vector<ImageShift> image;
   std::vector<double> history; ///< tangential spring s (m) of each pair, 0 when not touching
+  /// Whether the list keeps `history` and `wall_history` (sized to the entries, carried across
+  /// builds and renumberings) or leaves them empty: a tangential law without a spring needs none
+  /// (Simulation sets it; not saved, it follows from the law).
+  bool keeps_history = true;
   // Force blocks (derived from the rows by index_force_blocks): rows are cut into blocks of
   // block_rows, a number that depends on the particle count only. An entry whose second particle
   // lies beyond its row's block is deferred: its force waits in a slot (numbered in entry order)

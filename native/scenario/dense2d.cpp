@@ -75,8 +75,10 @@ template <class T> void repeat(std::vector<T>& v, std::size_t copies) {
   for (std::size_t c = 1; c < copies; ++c) v.insert(v.end(), v.begin(), v.begin() + n);
 }
 
-// History of the base pair (a, b) in either order, 0 if the base list has no such pair.
+// History of the base pair (a, b) in either order, 0 if the base list has no such pair, or no
+// history (a history-free law's list keeps none).
 double base_history(const NeighbourList& l, std::uint32_t a, std::uint32_t b) {
+  if (l.history.size() != l.neighbour.size()) return 0.0;
   if (a > b) std::swap(a, b);
   const auto first = l.neighbour.begin() + l.row_offset[a];
   const auto last = l.neighbour.begin() + l.row_offset[a + 1];
@@ -119,7 +121,8 @@ SimulationState tile_dense2d(const SimulationState& base, std::size_t copies, do
                                   static_cast<std::uint32_t>(l.neighbour[e] % n));
     for (std::uint32_t e = l.wall_offset[i]; e < l.wall_offset[i + 1]; ++e) {
       const std::size_t a = i % n;
-      if (l0.wall_offset[a + 1] > l0.wall_offset[a])
+      if (l0.wall_offset[a + 1] > l0.wall_offset[a] &&
+          l0.wall_history.size() == l0.wall_segment.size())
         l.wall_history[e] = l0.wall_history[l0.wall_offset[a]];
     }
   }

@@ -36,7 +36,9 @@ struct EntryGap {
 };
 
 /// Tests entry e of the stretch from row r0: if it touches, it is written down at found[count]
-/// with its deferred slot `to` and counted; if not, its history is cleared.
+/// with its deferred slot `to` and counted; if not, its history is cleared (if the list keeps
+/// one: History).
+template <bool History>
 [[gnu::always_inline]] inline EntryGap test_entry(const BlockArrays& a, std::ptrdiff_t r0,
                                                   std::uint32_t e, std::uint32_t to,
                                                   TouchingEntry* found, std::size_t& count) {
@@ -54,14 +56,17 @@ struct EntryGap {
   const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
   found[count] = {d, e, to};
   count += touches;
-  const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
-  a.history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(a.history[e]) & keep);
+  if constexpr (History) {
+    const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
+    a.history[e] = std::bit_cast<double>(std::bit_cast<std::uint64_t>(a.history[e]) & keep);
+  }
   return {dist2, reach, i, j};
 }
 
 /// The stretch's rows [r0, r1) of a block that ends at row `last`: every entry tested, and the
 /// candidates written down from the stretch's first entry on (their count into `kept`). `slot`
 /// is the block's next deferred slot, and moves past the stretch's. Returns the touching count.
+template <bool History>
 [[gnu::always_inline]] inline std::size_t
 touching_choosing_candidates(const BlockArrays& a, ContactCandidates& c, std::ptrdiff_t r0,
                              std::ptrdiff_t r1, std::ptrdiff_t last, std::uint32_t& slot,
@@ -76,7 +81,7 @@ touching_choosing_candidates(const BlockArrays& a, ContactCandidates& c, std::pt
     const auto later = static_cast<std::uint32_t>(a.neighbour[e] >= last); // a later block
     const std::uint32_t later_mask = 0u - later;
     const std::uint32_t to = (slot & later_mask) | ~later_mask;
-    const EntryGap g = test_entry(a, r0, e, to, found, count);
+    const EntryGap g = test_entry<History>(a, r0, e, to, found, count);
     const double cut = g.reach + skin;
     entry[base + kept] = e;
     entry_slot[base + kept] = to;
@@ -89,16 +94,16 @@ touching_choosing_candidates(const BlockArrays& a, ContactCandidates& c, std::pt
 
 /// The stretch from row r0 whose `kept` candidates were written down: only those tested.
 /// Returns the touching count.
-[[gnu::always_inline]] inline std::size_t touching_candidates(const BlockArrays& a,
-                                                              const ContactCandidates& c,
-                                                              std::ptrdiff_t r0, std::uint32_t kept,
-                                                              TouchingEntry* found) {
+template <bool History>
+[[gnu::always_inline]] inline std::size_t
+touching_candidates(const BlockArrays& a, const ContactCandidates& c, std::ptrdiff_t r0,
+                    std::uint32_t kept, TouchingEntry* found) {
   std::size_t count = 0;
   const std::uint32_t* entry = c.entry.data();
   const std::uint32_t* entry_slot = c.slot.data();
   const std::uint32_t base = a.offset[r0], end = base + kept;
   for (std::uint32_t k = base; k < end; ++k)
-    test_entry(a, r0, entry[k], entry_slot[k], found, count);
+    test_entry<History>(a, r0, entry[k], entry_slot[k], found, count);
   return count;
 }
 

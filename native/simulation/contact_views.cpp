@@ -23,7 +23,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
           pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j],
                         p.velocity[i], p.velocity[j], p.angular_velocity[i], p.angular_velocity[j]);
       v.parameters = &pairs_(p.material[i], p.material[j]);
-      v.history = list_.history[e];
+      v.history = list_.keeps_history ? list_.history[e] : 0.0;
       f(v);
     }
   }
@@ -37,7 +37,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
           v.wall = static_cast<std::int32_t>(list_.wall_segment[e]);
           v.geometry = g;
           v.parameters = &pairs_(p.material[i], s.material);
-          v.history = list_.wall_history[e];
+          v.history = list_.keeps_history ? list_.wall_history[e] : 0.0;
           f(v);
         },
         [](std::uint32_t) {});

@@ -15,7 +15,8 @@
 namespace talus {
 
 PassReport ForceStage::compute(World& world, NeighbourList& list, const PairTable& pairs,
-                               Finish finish, double drift_bound, int threads) {
+                               Finish finish, double drift_bound, int threads,
+                               const StepFeatures& features) {
   wall_force_.resize(list.wall_segment.size());
   deferred_.resize(list.block_first_slot.back());
   // The candidates stay valid while two grains cannot have closed their gap: each moved at most
@@ -31,18 +32,28 @@ PassReport ForceStage::compute(World& world, NeighbourList& list, const PairTabl
   }
   Particles& p = world.particles;
   const double dt = dt_;
+  // the shapes of the finishes that never add the weight are compiled with gravity only
   return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
     switch (finish) {
     case Finish::verlet_correct:
-      return run<N, T>(world, list, pairs, refresh, VerletCorrect{p, 0.5 * dt, verlet_lag_},
-                       threads);
+      return with_step_shape<T, false>(features, [&]<class S>() {
+        return run<N, T, S>(world, list, pairs, refresh,
+                            VerletCorrect<S::rotation>{p, 0.5 * dt, verlet_lag_}, threads,
+                            features);
+      });
     case Finish::verlet_correct_predict:
-      return run<N, T>(world, list, pairs, refresh,
-                       VerletCorrectPredict{p, dt, 0.5 * dt, verlet_lag_, world.gravity}, threads);
+      return with_step_shape<T>(features, [&]<class S>() {
+        return run<N, T, S>(world, list, pairs, refresh,
+                            VerletCorrectPredict<S::rotation, S::gravity>{
+                                p, dt, 0.5 * dt, verlet_lag_, world.gravity},
+                            threads, features);
+      });
     case Finish::nothing:
       break;
     }
-    return run<N, T>(world, list, pairs, refresh, NothingMore{}, threads);
+    return with_step_shape<T, false>(features, [&]<class S>() {
+      return run<N, T, S>(world, list, pairs, refresh, NothingMore{}, threads, features);
+    });
   });
 }
 
@@ -53,9 +64,9 @@ PassReport ForceStage::compute(World& world, NeighbourList& list, const PairTabl
 // particles get their deferred and wall forces (late_pass.hpp), in the same parallel region.
 // `done.range(first, last)` is called for particles whose forces are complete; its answers are
 // merged.
-template <class N, class T, class Done>
+template <class N, class T, class S, class Done>
 PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& pairs, bool refresh,
-                           const Done& done, int threads) {
+                           const Done& done, int threads, const StepFeatures& features) {
   Particles& p = world.particles;
   const auto blocks = static_cast<std::ptrdiff_t>(list.block_first_slot.size()) - 1;
   if (refresh) {
@@ -67,7 +78,11 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
   }
   const bool started = forces_started_;
   forces_started_ = false;
-  const PairLaneSource lanes(pairs);
+  const PairLaneSource lanes(pairs, S::one_material, features.material);
+  const PairParameters& uniform = pairs(features.material, features.material);
+  // without walls no particle has a wall row: the pass over the late particles for them is left
+  // out
+  const auto walled = static_cast<std::ptrdiff_t>(features.walls ? list.late.size() : 0);
   schedule_.plan(static_cast<std::size_t>(blocks));
   const auto late = static_cast<std::ptrdiff_t>(list.late.size());
   double worst = 0.0, farthest2 = 0.0;
@@ -81,22 +96,23 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
       const std::ptrdiff_t b = schedule_.block(taken);
       const auto start = BlockSchedule::Clock::now();
       worst = std::max(
-          worst, block<N, T>(a, list, lanes, b, refresh, started, world.gravity, done, report));
+          worst, block<N, T, S>(a, list, lanes, b, refresh, started, world.gravity, done, report));
       schedule_.record(b, start);
     }
     thread_local std::vector<WallHit> hits; // kept from step to step: no allocation in a step
 #pragma omp for schedule(dynamic, late_chunk)
-    for (std::ptrdiff_t q = 0; q < late; ++q)
-      worst = std::max(worst, wall_contacts<N, T>(p, list, world.walls, pairs, wall_force_, dt_,
-                                                  list.late[static_cast<std::size_t>(q)], hits));
+    for (std::ptrdiff_t q = 0; q < walled; ++q)
+      worst = std::max(worst,
+                       wall_contacts<N, T, S>(p, list, world.walls, pairs, uniform, wall_force_,
+                                              dt_, list.late[static_cast<std::size_t>(q)], hits));
     const std::ptrdiff_t chunks = (late + late_chunk - 1) / late_chunk;
 #pragma omp for schedule(dynamic, 1) nowait
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
       const auto q0 = static_cast<std::size_t>(c * late_chunk);
-      const PassReport s = finish_late(p, list, deferred_, wall_force_, done, q0,
-                                       std::min(q0 + late_chunk, list.late.size()));
-      report.finite = report.finite && s.finite;
-      report.displacement2 = std::max(report.displacement2, s.displacement2);
+      const PassReport z = finish_late<S::rotation>(p, list, deferred_, wall_force_, done, q0,
+                                                    std::min(q0 + late_chunk, list.late.size()));
+      report.finite = report.finite && z.finite;
+      report.displacement2 = std::max(report.displacement2, z.displacement2);
     }
     finite = finite && report.finite;
     farthest2 = std::max(farthest2, report.displacement2);
@@ -112,7 +128,7 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
 // every entry and branches. Once a stretch's rows are done, the forces of its particles are
 // complete (rows after them never name them), but for the late ones (NeighbourList::late): they
 // are done by runs between late ones.
-template <class N, class T, class Done>
+template <class N, class T, class S, class Done>
 double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLaneSource& pairs,
                          std::ptrdiff_t b, bool refresh, bool started, Vec2 gravity,
                          const Done& done, PassReport& report) {
@@ -124,7 +140,7 @@ double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLa
   const std::ptrdiff_t first = b * rows, last = std::min(n, first + rows);
   if (!started) // else the fused pass before this stage started them
     for (std::ptrdiff_t k = first; k < last; ++k)
-      start_forces(a.p, k, gravity, a.p.force.data(), a.p.torque.data());
+      start_forces<true, S::rotation>(a.p, k, gravity, a.p.force.data(), a.p.torque.data());
   std::uint32_t slot = list.block_first_slot[b];
   // a deferred entry that does not touch leaves a zero in its slot
   std::fill(a.slots + slot, a.slots + list.block_first_slot[b + 1], PairForce{});
@@ -139,17 +155,17 @@ double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLa
     if (touching.size() < a.offset[r1] - a.offset[r0]) touching.resize(a.offset[r1] - a.offset[r0]);
     std::uint32_t& kept =
         candidates_.count[first_stretch + static_cast<std::size_t>((r0 - first) / stretch_rows)];
-    const std::size_t count = refresh
-                                  ? touching_choosing_candidates(a, candidates_, r0, r1, last, slot,
-                                                                 kept, touching.data())
-                                  : touching_candidates(a, candidates_, r0, kept, touching.data());
-    worst = std::max(worst, pair_forces<N, T>(a, pairs, touching.data(), count, r0, dt_));
+    const std::size_t count =
+        refresh ? touching_choosing_candidates<S::history>(a, candidates_, r0, r1, last, slot, kept,
+                                                           touching.data())
+                : touching_candidates<S::history>(a, candidates_, r0, kept, touching.data());
+    worst = std::max(worst, pair_forces<N, T, S>(a, pairs, touching.data(), count, r0, dt_));
     for (std::ptrdiff_t k = r0; k < r1;) { // runs of rows between late ones
       const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
       if (z > k) {
-        const PassReport s = done.range(static_cast<std::size_t>(k), static_cast<std::size_t>(z));
-        report.finite = report.finite && s.finite;
-        report.displacement2 = std::max(report.displacement2, s.displacement2);
+        const PassReport d = done.range(static_cast<std::size_t>(k), static_cast<std::size_t>(z));
+        report.finite = report.finite && d.finite;
+        report.displacement2 = std::max(report.displacement2, d.displacement2);
       }
       if (z < r1) ++next_late;
       k = z + 1;

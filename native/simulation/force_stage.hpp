@@ -14,6 +14,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "simulation/block_schedule.hpp"
 #include "simulation/contact_candidates.hpp"
+#include "simulation/step_features.hpp"
 #include "simulation/world.hpp"
 #include "talus/law_table.hpp"
 
@@ -44,8 +45,9 @@ public:
   /// particle moved since the list's build (m; infinite if unknown): the candidates are chosen
   /// again when two grains could have closed their gap. Returns whether every corrected velocity
   /// is finite and, with verlet_correct_predict, the prediction's largest squared displacement.
+  /// The step leaves out what `features` says the scene does not use (step_features.hpp).
   PassReport compute(World& world, NeighbourList& list, const PairTable& pairs, Finish finish,
-                     double drift_bound, int threads);
+                     double drift_bound, int threads, const StepFeatures& features);
 
   /// The list changed (built, renumbered, a grain held or freed): choose the candidates again.
   void list_changed() { candidates_stale_ = true; }
@@ -59,12 +61,12 @@ public:
   std::size_t footprint_bytes() const;
 
 private:
-  template <class N, class T, class Done>
+  template <class N, class T, class S, class Done>
   PassReport run(World& world, NeighbourList& list, const PairTable& pairs, bool refresh,
-                 const Done& done, int threads);
+                 const Done& done, int threads, const StepFeatures& features);
   /// Block b's rows: starts their forces (unless started), then each stretch's touch test, pair
   /// pass and `done` for the particles that are complete. Returns the worst overlap ratio.
-  template <class N, class T, class Done>
+  template <class N, class T, class S, class Done>
   double block(BlockArrays& a, const NeighbourList& list, const PairLaneSource& pairs,
                std::ptrdiff_t b, bool refresh, bool started, Vec2 gravity, const Done& done,
                PassReport& report);

@@ -22,8 +22,8 @@ inline constexpr int late_chunk = 256;
 // The late particles late[q0, q1): each adds, in a fixed order, its deferred pair forces (in
 // entry order), then its wall contacts; then they are done, by runs of consecutive particles (a
 // layer of a packing at a block's start is late, so runs are long: `done` takes two at a time
-// there, where it took them one by one).
-template <class Done>
+// there, where it took them one by one). Without Rotation no torque is summed.
+template <bool Rotation, class Done>
 [[gnu::noinline]] PassReport
 finish_late(Particles& p, const NeighbourList& list, const std::vector<PairForce>& deferred,
             const std::vector<PairForce>& wf, const Done& done, std::size_t q0, std::size_t q1) {
@@ -32,11 +32,11 @@ finish_late(Particles& p, const NeighbourList& list, const std::vector<PairForce
     for (std::uint32_t c = list.deferred_offset[k]; c < list.deferred_offset[k + 1]; ++c) {
       const PairForce& f = deferred[list.deferred_slot[c]];
       p.force[k] -= f.force;
-      p.torque[k] += f.torque_j;
+      if constexpr (Rotation) p.torque[k] += f.torque_j;
     }
     for (std::uint32_t e = list.wall_offset[k]; e < list.wall_offset[k + 1]; ++e) {
       p.force[k] += wf[e].force;
-      p.torque[k] += wf[e].torque_i;
+      if constexpr (Rotation) p.torque[k] += wf[e].torque_i;
     }
   }
   PassReport seam{true, 0.0};

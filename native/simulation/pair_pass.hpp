@@ -12,15 +12,15 @@
 
 namespace talus {
 
-/// The pair parameters of two contacts, in lanes. With one material every contact has the same
-/// ones: they are put in lanes once, not for every two contacts.
+/// The pair parameters of two contacts, in lanes. In a scene of one material (`material`, when
+/// one_material) every contact has the same ones: they are put in lanes once, not for every two
+/// contacts.
 class PairLaneSource {
 public:
-  explicit PairLaneSource(const PairTable& pairs)
-      : pairs_(pairs), one_material_(pairs.material_count() == 1),
-        uniform_(one_material_ ? pair_lanes(pairs(0, 0), pairs(0, 0))
-                               : pair_lanes(PairParameters{}, PairParameters{})) {}
-  bool uniform() const { return one_material_; }
+  PairLaneSource(const PairTable& pairs, bool one_material, std::uint16_t material)
+      : pairs_(pairs),
+        uniform_(one_material ? pair_lanes(pairs(material, material), pairs(material, material))
+                              : pair_lanes(PairParameters{}, PairParameters{})) {}
   const PairLanes& uniform_lanes() const { return uniform_; }
   PairLanes lanes(std::uint16_t mi0, std::uint16_t mj0, std::uint16_t mi1,
                   std::uint16_t mj1) const {
@@ -29,14 +29,13 @@ public:
 
 private:
   const PairTable& pairs_;
-  bool one_material_;
   PairLanes uniform_;
 };
 
 /// The forces of found[0, count) (touching entries of the stretch from row r0), c0 in lane 0 and
-/// c1 in lane 1; an odd last contact fills both lanes. Returns the largest overlap / smaller
-/// radius.
-template <class N, class T>
+/// c1 in lane 1; an odd last contact fills both lanes, in a step of shape S (step_features.hpp).
+/// Returns the largest overlap / smaller radius.
+template <class N, class T, class S>
 [[gnu::always_inline]] inline double pair_forces(const BlockArrays& a, const PairLaneSource& pairs,
                                                  const TouchingEntry* found, std::size_t count,
                                                  std::ptrdiff_t r0, double dt) {
@@ -51,32 +50,38 @@ template <class N, class T>
     const std::uint32_t j0 = a.neighbour[c0.entry], j1 = a.neighbour[c1.entry];
     const Lanes ri{a.radius[i0], a.radius[i1]}, rj{a.radius[j0], a.radius[j1]};
     const Lanes dx{c0.d.x, c1.d.x}, dy{c0.d.y, c1.d.y};
+    // without rotation every angular velocity is 0: nothing to load
+    const Lanes wi = S::rotation ? Lanes{a.spin[i0], a.spin[i1]} : Lanes{};
+    const Lanes wj = S::rotation ? Lanes{a.spin[j0], a.spin[j1]} : Lanes{};
     const ContactLanes g = pair_geometry(
         dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{a.mass[i0], a.mass[i1]},
         Lanes{a.mass[j0], a.mass[j1]}, Lanes{a.velocity[i0].x, a.velocity[i1].x},
         Lanes{a.velocity[i0].y, a.velocity[i1].y}, Lanes{a.velocity[j0].x, a.velocity[j1].x},
-        Lanes{a.velocity[j0].y, a.velocity[j1].y}, Lanes{a.spin[i0], a.spin[i1]},
-        Lanes{a.spin[j0], a.spin[j1]}, N::uses_r_eff || T::uses_r_eff);
+        Lanes{a.velocity[j0].y, a.velocity[j1].y}, wi, wj, N::uses_r_eff || T::uses_r_eff);
     // a law without history neither reads nor changes the springs: not loaded, not stored
     Lanes spring{};
     if constexpr (T::has_history) spring = Lanes{a.history[c0.entry], a.history[c1.entry]};
-    const ForceLanes f = pairs.uniform()
-                             ? contact_force<N, T>(pairs.uniform_lanes(), g, spring, dt)
-                             : contact_force<N, T>(pairs.lanes(a.material[i0], a.material[j0],
-                                                               a.material[i1], a.material[j1]),
-                                                   g, spring, dt);
+    ForceLanes f;
+    if constexpr (S::one_material)
+      f = contact_force<N, T>(pairs.uniform_lanes(), g, spring, dt);
+    else
+      f = contact_force<N, T>(
+          pairs.lanes(a.material[i0], a.material[j0], a.material[i1], a.material[j1]), g, spring,
+          dt);
     const auto add = [&](const TouchingEntry& c, std::uint32_t i, std::uint32_t j, int lane) {
       const Vec2 force{f.force_x[lane], f.force_y[lane]};
       if constexpr (T::has_history) a.history[c.entry] = spring[lane];
       a.p.force[i] += force;
-      a.p.torque[i] += f.torque_i[lane];
+      if constexpr (S::rotation) a.p.torque[i] += f.torque_i[lane];
       if (c.slot != no_slot) [[unlikely]] {
         a.slots[c.slot].force = force;
-        a.slots[c.slot].torque_i = f.torque_i[lane];
-        a.slots[c.slot].torque_j = f.torque_j[lane];
+        if constexpr (S::rotation) {
+          a.slots[c.slot].torque_i = f.torque_i[lane];
+          a.slots[c.slot].torque_j = f.torque_j[lane];
+        }
       } else {
         a.p.force[j] -= force;
-        a.p.torque[j] += f.torque_j[lane];
+        if constexpr (S::rotation) a.p.torque[j] += f.torque_j[lane];
       }
     };
     add(c0, i0, j0, 0);

@@ -18,14 +18,16 @@ namespace talus {
 struct NothingMore {
   PassReport range(std::size_t, std::size_t) const { return {}; }
 };
-// velocity Verlet's correction (single steps)
-struct VerletCorrect {
+// velocity Verlet's correction (single steps); without Rotation the angular velocities are left
+// as they are (step_features.hpp)
+template <bool Rotation> struct VerletCorrect {
   Particles& p;
   double half, lag;
   [[gnu::noinline]] PassReport range(std::size_t first, std::size_t last) const {
     const double h = half, c = lag; // locals: the stores below could otherwise change the members
     bool finite = true;
-    for (std::size_t k = first; k < last; ++k) finite = verlet_correct_one(p, k, h, c) && finite;
+    for (std::size_t k = first; k < last; ++k)
+      finite = verlet_correct_one<Rotation>(p, k, h, c) && finite;
     return {finite, 0.0};
   }
 };
@@ -34,8 +36,8 @@ struct VerletCorrect {
 // next step's forces (start_forces) in force_previous and torque_previous, which the swap after
 // this stage makes the next step's force and torque: their lines were just read, so the next
 // force stage needs no pass of its own to set them (a pass that waited on memory in large
-// systems).
-struct VerletCorrectPredict {
+// systems). Rotation and Gravity: as in start_forces.
+template <bool Rotation, bool Gravity> struct VerletCorrectPredict {
   Particles& p;
   double dt, half, lag;
   Vec2 gravity;
@@ -47,17 +49,18 @@ struct VerletCorrectPredict {
     Lanes far{0.0, 0.0};
     std::size_t k = first;
     for (; k + 1 < last; k += 2) {
-      const Lanes d2 = verlet_correct_predict_two(p, k, step, h, c, finite_lanes);
+      const Lanes d2 = verlet_correct_predict_two<Rotation>(p, k, step, h, c, finite_lanes);
       far = select(d2 > far, d2, far);
-      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
-      start_forces(p, k + 1, g, p.force_previous.data(), p.torque_previous.data());
+      start_forces<Gravity, Rotation>(p, k, g, p.force_previous.data(), p.torque_previous.data());
+      start_forces<Gravity, Rotation>(p, k + 1, g, p.force_previous.data(),
+                                      p.torque_previous.data());
     }
     bool finite = finite_lanes[0] != 0 && finite_lanes[1] != 0;
     double farthest2 = std::max(far[0], far[1]);
     for (; k < last; ++k) {
-      finite = verlet_correct_one(p, k, h, c) && finite;
-      farthest2 = std::max(farthest2, verlet_predict_one(p, k, step, h, c));
-      start_forces(p, k, g, p.force_previous.data(), p.torque_previous.data());
+      finite = verlet_correct_one<Rotation>(p, k, h, c) && finite;
+      farthest2 = std::max(farthest2, verlet_predict_one<Rotation>(p, k, step, h, c));
+      start_forces<Gravity, Rotation>(p, k, g, p.force_previous.data(), p.torque_previous.data());
     }
     return {finite, farthest2};
   }

@@ -57,6 +57,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
   list_moved();
+  choose_features();
   if (restoring) {
     require(list_.row_offset.size() == world_.particles.size() + 1,
             "restored state: the neighbour list does not match the particles");
@@ -73,7 +74,8 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     apply(d, 0.0, world_.particles, world_.walls);
   }
   rebuild_list(1);
-  forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_);
+  forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_,
+                  features_);
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
 
@@ -81,7 +83,29 @@ void Simulation::step() {
   advance(false);
 }
 
+void Simulation::use_general_step(bool general) {
+  general_step_ = general;
+  choose_features();
+}
+
+void Simulation::choose_features() {
+  features_ = general_step_ ? general_features() : scene_features(world_, config_.tangential_law);
+  features_stale_ = false;
+  list_.keeps_history = features_.history;
+  if (!features_.history) {
+    std::vector<double>().swap(list_.history); // and its memory
+    std::vector<double>().swap(list_.wall_history);
+    return;
+  }
+  // a list from a step that kept none (a history-free law's) starts with its springs at 0
+  if (list_.history.size() != list_.neighbour.size())
+    list_.history.assign(list_.neighbour.size(), 0.0);
+  if (list_.wall_history.size() != list_.wall_segment.size())
+    list_.wall_history.assign(list_.wall_segment.size(), 0.0);
+}
+
 void Simulation::advance(bool fuse) {
+  if (features_stale_) choose_features(); // edits happen between run() calls: nothing is fused
   const double t_next = static_cast<double>(steps_ + 1) * config_.timestep;
   const bool drifted = predict();
   move_bodies(t_next);
@@ -104,12 +128,15 @@ bool Simulation::predict() {
   if (config_.sort_interval > 0 && steps_ % config_.sort_interval == 0) sort_particles();
   Particles& p = world_.particles;
   const double dt = config_.timestep;
-  return drifted(config_.integrator == Integrator::verlet
-                     ? verlet_predict(p, dt, threads_, verlet_lag(config_.verlet_velocity))
-                     : gear_predict(p, dt, threads_));
+  const bool rotation = features_.rotation;
+  return drifted(
+      config_.integrator == Integrator::verlet
+          ? verlet_predict(p, dt, threads_, verlet_lag(config_.verlet_velocity), rotation)
+          : gear_predict(p, dt, threads_, rotation));
 }
 
 void Simulation::move_bodies(double t) {
+  if (!features_.driven) return;
   for (const Driver& d : world_.drivers) apply(d, t, world_.particles, world_.walls);
 }
 
@@ -126,7 +153,8 @@ PassReport Simulation::contacts(bool fuse) {
   const Finish finish = config_.integrator != Integrator::verlet ? Finish::nothing
                         : fuse                                   ? Finish::verlet_correct_predict
                                                                  : Finish::verlet_correct;
-  const PassReport report = forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_);
+  const PassReport report =
+      forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_, features_);
   // while the overlap is there (in a step that velocity Verlet fused, the grains are already
   // predicted one timestep on, and the diagnosis names the deepest contact there)
   if (forces_.deepest_overlap() > config_.max_overlap_fraction) guard();
@@ -142,7 +170,8 @@ void Simulation::correct(bool fuse, const PassReport& forces) {
       std::swap(p.force, p.force_previous); // as verlet_predict leaves them
       std::swap(p.torque, p.torque_previous);
     } else {
-      seam = gear_correct_predict(p, config_.timestep, world_.gravity, threads_);
+      seam = gear_correct_predict(p, config_.timestep, world_.gravity, threads_, features_.rotation,
+                                  features_.gravity);
     }
     forces_.forces_started(true); // by the fused pass, for the next force stage
     finite_ = seam.finite;
@@ -151,7 +180,7 @@ void Simulation::correct(bool fuse, const PassReport& forces) {
   } else if (verlet) {
     finite_ = forces.finite;
   } else {
-    const PassReport corrected = gear_correct(p, config_.timestep, threads_);
+    const PassReport corrected = gear_correct(p, config_.timestep, threads_, features_.rotation);
     finite_ = corrected.finite;
     drift_bound_ += std::sqrt(corrected.displacement2);
   }
@@ -230,6 +259,7 @@ void ParticleEdits::hold(std::uint32_t i, bool held) {
   // be shot out by the overlap it had reached by then.
   if (!held && p.kind[i] == Kind::moved) sim_.list_stale_ = true;
   p.set_held(i, held);
+  sim_.features_stale_ = true;
   sim_.forces_.list_changed(); // a held grain moves by displace_held: its entries are candidates
   sim_.driven_stale_ = true;
 }
@@ -241,6 +271,7 @@ void ParticleEdits::set_material(std::uint32_t i, std::size_t m) {
                                       " out of range; allowed: 0 to " +
                                       std::to_string(w.materials.size() - 1));
   w.particles.material[i] = static_cast<std::uint16_t>(m);
+  sim_.features_stale_ = true; // one material may be two now
 }
 
 void ParticleEdits::displace_held(std::uint32_t i, Vec2 d) {

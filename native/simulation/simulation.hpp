@@ -4,6 +4,7 @@
 #include <functional>
 #include <iosfwd>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/contact_vectors.hpp"
@@ -11,6 +12,7 @@
 #include "materials/pair_table.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "simulation/force_stage.hpp"
+#include "simulation/step_features.hpp"
 #include "simulation/world.hpp"
 #include "talus/law_table.hpp"
 
@@ -88,6 +90,7 @@ public:
   /// the caller may have moved particles.
   World& edit_world() {
     drift_bound_ = unknown_drift;
+    features_stale_ = true;
     return world_;
   }
   const SimulationConfig& config() const { return config_; }
@@ -113,6 +116,15 @@ public:
   /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
   /// (allocated capacity, not the process' resident size).
   std::size_t footprint_bytes() const;
+  /// What the scene uses, and so what the step leaves out (step_features.hpp): chosen at the
+  /// construction and again at the first step after the world or a particle was edited.
+  const StepFeatures& step_features() const { return features_; }
+  /// describe(step_features()): "frictionless, no walls, one material", or "general".
+  std::string step_description() const { return describe(features_); }
+  /// With `general`, every step does everything, whatever the scene uses (the reference the
+  /// specialised steps are tested against: their results are bit-identical); else the step is
+  /// specialised to the scene, the default.
+  void use_general_step(bool general);
   /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
 
@@ -156,6 +168,9 @@ private:
   /// Builds the neighbour list again; the drift bound starts from 0 and the contact candidates
   /// are chosen again.
   void rebuild_list(int threads);
+  /// Chooses the step's features from the scene (or all of them, for the general step) and
+  /// makes the list keep the history they need, or none.
+  void choose_features();
 
   World world_;
   SimulationConfig config_;
@@ -181,6 +196,9 @@ private:
   static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
   double drift_bound_ = unknown_drift;
   std::uint64_t drift_tests_ = 0;
+  StepFeatures features_;
+  bool features_stale_ = false; ///< the world or a particle was edited since they were chosen
+  bool general_step_ = false;
 };
 
 /// Edits of single particles between steps (Simulation::edit_particles), for a model that

@@ -79,23 +79,28 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
 }
 
 // The wall contacts of late particle i (particles with wall contacts are late): their forces into
-// `out`, one per entry of its wall row (0 if not touching); returns the largest overlap / radius.
-// Not inlined into the stage (its loops are compiled worse with more code in them).
-template <class N, class T>
+// `out`, one per entry of its wall row (0 if not touching), in a step of shape S
+// (step_features.hpp; `uniform`: the one material's pair, when S::one_material); returns the
+// largest overlap / radius. Not inlined into the stage (its loops are compiled worse with more
+// code in them).
+template <class N, class T, class S>
 [[gnu::noinline]] double wall_contacts(const Particles& p, NeighbourList& list,
                                        const Segments& walls, const PairTable& pairs,
-                                       std::vector<PairForce>& out, double dt, std::uint32_t i,
-                                       std::vector<WallHit>& hits) {
+                                       const PairParameters& uniform, std::vector<PairForce>& out,
+                                       double dt, std::uint32_t i, std::vector<WallHit>& hits) {
   double worst = 0.0;
   for_each_wall_contact(
       p, list, walls, i, hits,
       [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
-        out[e] = contact_force<N, T>(pairs(p.material[i], s.material), g, list.wall_history[e], dt);
+        double none = 0.0; // the spring of a list that keeps none
+        double& spring = S::history ? list.wall_history[e] : none;
+        out[e] = contact_force<N, T>(S::one_material ? uniform : pairs(p.material[i], s.material),
+                                     g, spring, dt);
         worst = std::max(worst, g.overlap / p.radius[i]);
       },
       [&](std::uint32_t e) {
         out[e] = {};
-        list.wall_history[e] = 0.0;
+        if constexpr (S::history) list.wall_history[e] = 0.0;
       });
   return worst;
 }
