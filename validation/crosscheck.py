@@ -9,7 +9,10 @@ bound of each comparison, with its reason). Each case runs in:
 - the native engine with velocity Verlet and LAMMPS' damper velocity (verlet_velocity =
   half_step), with velocity Verlet and the native default (predicted), and with Gear;
 - LAMMPS with pair_style granthesis (talus-lmp), on 1 rank and on 2, from the deck that
-  `talus export lammps` writes of the same scenario.
+  `talus export lammps` writes of the same scenario;
+- where tolerances.toml says `gran_hooke = true`, LAMMPS' own gran/hooke with limit_damping in
+  that deck in place of granthesis (an implementation independent of src/talus), against the
+  native engine with gran/hooke's lever arms (simulation.lever_arm = radius) and the default.
 
 Every grain is tracked at full precision in both (track.csv, the LAMMPS dump); the trajectories
 are compared by id at the common times: the largest and the RMS position difference, in mean
@@ -33,7 +36,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
 # the cases the default test suite runs (seconds each on 2 cores)
 QUICK = {"two_disks_linear_headon", "two_disks_linear_oblique", "two_disks_hertz_headon",
-         "two_disks_hertz_oblique", "collisions", "settling_1000"}
+         "two_disks_hertz_oblique", "two_disks_hooke_oblique", "collisions", "settling_1000"}
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 
@@ -230,6 +233,8 @@ class Case:
             "integrators", "integrators")
         curves["Gear - Verlet"] = self.compare("native Gear against Verlet (half_step)", gear,
                                                half, "integrators", "integrators")
+        if self.tolerances["trajectory"].get("gran_hooke", False):
+            curves.update(self.gran_hooke(deck, every, half))
         if "statistics" in self.tolerances:
             self.statistics()
         for engine, wall in (("native Verlet", wall_h), ("native Gear", wall_g),
@@ -237,6 +242,57 @@ class Case:
             self.speeds[engine] = wall / max(1, steps * n)
         self.chart(curves)
         return all(r[3] for r in self.rows)
+
+    def gran_hooke_pair(self):
+        """LAMMPS' gran/hooke line for the case's one material, which must give its dampers as
+        rates (gran/hooke takes one gamma_n for every pair; a restitution is derived per pair)."""
+        materials = self.scenario["materials"]
+        m = materials[0]
+        if len(materials) != 1 or "normal_damping_rate" not in m or "restitution" in m:
+            sys.exit(f"{self.name}: [gran_hooke] needs one material with normal_damping_rate "
+                     "(gran/hooke has one gamma_n for every pair)")
+        law = self.scenario["simulation"]
+        if (law.get("normal_law"), law.get("tangential_law")) != ("linear", "coulomb"):
+            sys.exit(f"{self.name}: [gran_hooke] needs normal_law = linear and "
+                     "tangential_law = coulomb, the laws gran/hooke has")
+        # Kn Kt gamma_n gamma_t xmu dampflag: Kt unused without history; limit_damping: never
+        # attractive, as the native law
+        return (f"pair_style gran/hooke {m['normal_stiffness']!r} NULL "
+                f"{m['normal_damping_rate']!r} {m['tangential_damping']!r} {m['friction']!r} 1 "
+                "limit_damping\npair_coeff * *\n")
+
+    def gran_hooke(self, deck, every, half):
+        """The case in LAMMPS' own gran/hooke: the exported deck with its pair lines replaced,
+        against native Verlet with gran/hooke's lever arm (the radius) and with the default."""
+        hooke = os.path.join(self.out, "deck-gran-hooke")
+        shutil.rmtree(hooke, ignore_errors=True)
+        shutil.copytree(deck, hooke)
+        path = os.path.join(hooke, f"in.{self.name}")
+        with open(path) as f:
+            lines = f.read().splitlines(keepends=True)
+        kept = [line for line in lines if not line.startswith(("pair_style", "pair_coeff"))]
+        at = next(k for k, line in enumerate(lines) if line.startswith("pair_style"))
+        kept.insert(at, self.gran_hooke_pair())
+        with open(path, "w") as f:
+            f.writelines(kept)
+        folder = os.path.join(self.out, "lammps-gran-hooke")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(hooke, folder)
+        run([self.lmp, "-in", f"in.{self.name}", "-var", "snapshot_every", str(every), "-log",
+             "log.lammps", "-screen", "none"], cwd=folder)
+        lmp = read_dump(os.path.join(folder, f"dump.{self.name}.lammpstrj"), self.dt)
+        radius, _, _ = self.native("native-verlet-half_step-radius",
+                                   ["simulation.integrator=verlet",
+                                    "simulation.verlet_velocity=half_step",
+                                    "simulation.lever_arm=radius"])
+        return {
+            "Verlet (lever arm R) - gran/hooke": self.compare(
+                "native Verlet (half_step, lever_arm = radius) against LAMMPS gran/hooke",
+                radius, lmp, "independent", "independent"),
+            "Verlet (lever arm R - xi/2) - gran/hooke": self.compare(
+                "native Verlet (half_step, lever_arm = contact_point) against LAMMPS gran/hooke",
+                half, lmp, "conventions", "conventions"),
+        }
 
     def statistics(self):
         """Time averages over the case's window, each with its standard error from block

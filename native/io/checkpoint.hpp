@@ -26,7 +26,7 @@ struct Checkpoint {
   std::string run_data; ///< opaque to the engine: the command line's own bookkeeping
 };
 
-inline constexpr std::uint32_t checkpoint_version = 6; // 6: the impact speed in the config
+inline constexpr std::uint32_t checkpoint_version = 7; // 7: the lever arm in the config
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

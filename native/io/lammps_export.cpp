@@ -44,6 +44,11 @@ std::optional<std::string> refusal(const Scenario& s) {
                                "the thesis' eq. 2.12)",
                                name_of(s.simulation.tangential_law),
                                history_free_tangential_names()));
+  if (s.simulation.lever_arm == LeverArm::radius)
+    return refused("simulation.lever_arm",
+                   "the lever arms at the radius are LAMMPS' own granular styles' convention; "
+                   "pair_style granthesis takes them to the contact point; allowed: contact_point "
+                   "(validation/crosscheck.py puts gran/hooke in the deck to compare with radius)");
   for (const Material& m : s.materials)
     if (m.rigid)
       return refused("materials", "material '" + m.name +

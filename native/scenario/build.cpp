@@ -354,6 +354,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
   c.verlet_velocity = s.simulation.verlet_velocity;
+  c.lever_arm = s.simulation.lever_arm;
   c.normal_law = s.simulation.normal_law;
   c.tangential_law = s.simulation.tangential_law;
   c.threads = s.simulation.threads;

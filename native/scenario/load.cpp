@@ -115,6 +115,9 @@ void read_simulation(TableReader& r, SimulationSection& s) {
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
   s.verlet_velocity =
       parse_verlet_velocity(r.choice("verlet_velocity", "predicted", {"predicted", "half_step"}));
+  s.lever_arm = r.choice("lever_arm", "contact_point", {"contact_point", "radius"}) == "radius"
+                    ? LeverArm::radius
+                    : LeverArm::contact_point;
   s.normal_law = parse_normal_law(r.choice("normal_law", "linear", NormalLaws::names));
   s.tangential_law =
       parse_tangential_law(r.choice("tangential_law", "cundall_strack", TangentialLaws::names));

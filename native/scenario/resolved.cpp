@@ -94,6 +94,7 @@ std::string to_toml(const Scenario& s) {
   t.insert("timestep_factor", sim.timestep_factor);
   t.insert("integrator", std::string(to_string(sim.integrator)));
   t.insert("verlet_velocity", std::string(to_string(sim.verlet_velocity)));
+  t.insert("lever_arm", sim.lever_arm == LeverArm::radius ? "radius" : "contact_point");
   t.insert("normal_law", std::string(name_of(sim.normal_law)));
   t.insert("tangential_law", std::string(name_of(sim.tangential_law)));
   t.insert("gravity", vec(sim.gravity));

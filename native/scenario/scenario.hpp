@@ -26,6 +26,7 @@ struct SimulationSection {
   double timestep_factor = 50.0;  ///< auto timestep = shortest collision time / factor
   Integrator integrator = Integrator::gear;
   VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< velocity Verlet's damper velocity
+  LeverArm lever_arm = LeverArm::contact_point; ///< the contacts' lever arms (contact_geometry.hpp)
   NormalLaw normal_law = law_id<LinearSpringDashpot>;
   TangentialLaw tangential_law = law_id<CundallStrack>;
   Vec2 gravity{0.0, -9.81}; ///< m/s^2

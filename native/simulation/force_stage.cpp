@@ -102,9 +102,9 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
     thread_local std::vector<WallHit> hits; // kept from step to step: no allocation in a step
 #pragma omp for schedule(dynamic, late_chunk)
     for (std::ptrdiff_t q = 0; q < walled; ++q)
-      worst = std::max(worst,
-                       wall_contacts<N, T, S>(p, list, world.walls, pairs, uniform, wall_force_,
-                                              dt_, list.late[static_cast<std::size_t>(q)], hits));
+      worst = std::max(worst, wall_contacts<N, T, S>(p, list, world.walls, pairs, uniform,
+                                                     wall_force_, dt_, share_,
+                                                     list.late[static_cast<std::size_t>(q)], hits));
     const std::ptrdiff_t chunks = (late + late_chunk - 1) / late_chunk;
 #pragma omp for schedule(dynamic, 1) nowait
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
@@ -159,7 +159,8 @@ double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLa
         refresh ? touching_choosing_candidates<S::history>(a, candidates_, r0, r1, last, slot, kept,
                                                            touching.data())
                 : touching_candidates<S::history>(a, candidates_, r0, kept, touching.data());
-    worst = std::max(worst, pair_forces<N, T, S>(a, pairs, touching.data(), count, r0, dt_));
+    worst =
+        std::max(worst, pair_forces<N, T, S>(a, pairs, touching.data(), count, r0, dt_, share_));
     for (std::ptrdiff_t k = r0; k < r1;) { // runs of rows between late ones
       const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
       if (z > k) {

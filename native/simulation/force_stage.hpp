@@ -37,8 +37,10 @@ public:
     verlet_correct,         ///< velocity Verlet's second half kick
     verlet_correct_predict, ///< that, then the next step's first half kick and drift
   };
-  ForceStage(NormalLaw normal, TangentialLaw tangential, double dt, double verlet_lag = 1.0)
-      : normal_(normal), tangential_(tangential), dt_(dt), verlet_lag_(verlet_lag) {}
+  ForceStage(NormalLaw normal, TangentialLaw tangential, double dt, double verlet_lag = 1.0,
+             LeverArm lever_arm = LeverArm::contact_point)
+      : normal_(normal), tangential_(tangential), dt_(dt), verlet_lag_(verlet_lag),
+        share_(overlap_share(lever_arm)) {}
 
   /// The forces and torques of every particle (weight and contacts) and the walls' reactions,
   /// then `finish` for every particle. `drift_bound` is an upper bound of how far any free
@@ -73,7 +75,8 @@ private:
   NormalLaw normal_;
   TangentialLaw tangential_;
   double dt_;
-  double verlet_lag_;               ///< velocity Verlet's convention (integrator.hpp, verlet_lag)
+  double verlet_lag_; ///< velocity Verlet's convention (integrator.hpp, verlet_lag)
+  double share_;      ///< the lever arms' convention (overlap_share, talus/contact_geometry.hpp)
   std::vector<PairForce> deferred_; ///< pair forces waiting for a later block's particle
   std::vector<PairForce> wall_force_;
   ContactCandidates candidates_;

@@ -47,7 +47,7 @@ Simulation Simulation::restore(SimulationState state, SimulationConfig config) {
 Simulation::Simulation(SimulationState state, SimulationConfig config, bool restoring)
     : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
       forces_(config.normal_law, config.tangential_law, config.timestep,
-              verlet_lag(config.verlet_velocity)),
+              verlet_lag(config.verlet_velocity), config.lever_arm),
       time_(state.time), steps_(state.steps) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials, config_.impact_speed);

@@ -42,6 +42,9 @@ struct SimulationConfig {
   /// so that neighbours lie close in memory as flow mixes the grains; 0: never. Particle
   /// indices change then (ids do not): see Simulation::renumberings.
   std::uint64_t sort_interval = 0;
+  /// The lever arms of the contacts' torques and of the spin in their tangential velocity:
+  /// contact_point (the default) or radius, LAMMPS' convention (talus/contact_geometry.hpp).
+  LeverArm lever_arm = LeverArm::contact_point;
 };
 
 /// One touching contact, as the force stage sees it. `wall` is the segment index for a

@@ -54,8 +54,8 @@ inline bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32
 // scratch space, kept by the caller so that a step allocates nothing.
 template <class Touching, class Apart>
 void for_each_wall_contact(const Particles& p, const NeighbourList& list, const Segments& walls,
-                           std::uint32_t i, std::vector<WallHit>& hits, Touching&& touching,
-                           Apart&& apart) {
+                           std::uint32_t i, std::vector<WallHit>& hits, double share,
+                           Touching&& touching, Apart&& apart) {
   const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
   if (w0 == w1) return;
   const Vec2 ri = p.position[i];
@@ -74,7 +74,7 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
     const Vec2 d = ri - h.point;
     touching(e, s,
              wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i], p.angular_velocity[i],
-                           s.velocity_at(h.point)));
+                           s.velocity_at(h.point), share));
   }
 }
 
@@ -84,13 +84,13 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
 // largest overlap / radius. Not inlined into the stage (its loops are compiled worse with more
 // code in them).
 template <class N, class T, class S>
-[[gnu::noinline]] double wall_contacts(const Particles& p, NeighbourList& list,
-                                       const Segments& walls, const PairTable& pairs,
-                                       const PairParameters& uniform, std::vector<PairForce>& out,
-                                       double dt, std::uint32_t i, std::vector<WallHit>& hits) {
+[[gnu::noinline]] double
+wall_contacts(const Particles& p, NeighbourList& list, const Segments& walls,
+              const PairTable& pairs, const PairParameters& uniform, std::vector<PairForce>& out,
+              double dt, double share, std::uint32_t i, std::vector<WallHit>& hits) {
   double worst = 0.0;
   for_each_wall_contact(
-      p, list, walls, i, hits,
+      p, list, walls, i, hits, share,
       [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
         double none = 0.0; // the spring of a list that keeps none
         double& spring = S::history ? list.wall_history[e] : none;

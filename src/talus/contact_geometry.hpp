@@ -2,14 +2,26 @@
 // The geometry and kinematics of a contact, shared by every contact law and every engine. One
 // definition for any number type R (number.hpp): one contact with double, several side by side
 // with a SIMD type; each element rounds as the double code does, so both give the same bits.
+#include <cstdint>
+
 #include "talus/number.hpp"
 
 namespace talus {
 
+/// Where a contact's lever arms reach, for the spin's part of the tangential velocity and for
+/// the torques: to the contact point mid-overlap, a_i = R_i - xi/2 (the default: a_i + a_j =
+/// |r_i - r_j|, so the torques conserve angular momentum exactly), or to the radius, a_i = R_i,
+/// as LAMMPS' granular pair styles take it (then the pair's torques conserve it only to O(xi/R)).
+enum class LeverArm : std::uint8_t { contact_point = 0, radius = 1 };
+/// The share of the overlap a lever arm is short of the radius: a_i = R_i - share xi.
+inline double overlap_share(LeverArm arm) {
+  return arm == LeverArm::radius ? 0.0 : 0.5;
+}
+
 /// One touching pair (i, j), j possibly a wall. Conventions: n points from j to i; t = e_z x n
 /// = (-n_y, n_x); the overlap xi = R_i + R_j - |r_i - r_j| > 0; the contact point lies
-/// mid-overlap, at lever arms a_i = R_i - xi/2 from i and a_j = R_j - xi/2 from j (so a_i + a_j =
-/// |r_i - r_j| and torques conserve angular momentum exactly); v_n and v_t are the normal and
+/// mid-overlap, at lever arms a_i = R_i - xi/2 from i and a_j = R_j - xi/2 from j (LeverArm:
+/// or at the radii, as LAMMPS takes them); v_n and v_t are the normal and
 /// tangential components of the velocity of i's contact point relative to j's (v_n < 0:
 /// approaching).
 template <class R> struct ContactGeometryOf {
@@ -29,10 +41,11 @@ using ContactGeometry = ContactGeometryOf<double>;
 
 /// Geometry of a particle-particle pair: d = r_i - r_j (minimum image), dist = |d| > 0, the
 /// velocities by components, w the spins. `with_r_eff` = false leaves r_eff at 0 for laws that
-/// do not use it (it saves a division).
+/// do not use it (it saves a division). `share`: overlap_share of the lever-arm convention.
 template <class R>
 ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_j, R vx_i, R vy_i,
-                                   R vx_j, R vy_j, R w_i, R w_j, bool with_r_eff = true) {
+                                   R vx_j, R vy_j, R w_i, R w_j, bool with_r_eff = true,
+                                   double share = 0.5) {
   ContactGeometryOf<R> g;
   const R inverse = 1.0 / dist;
   g.normal_x = inverse * dx;
@@ -40,8 +53,8 @@ ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_
   g.overlap = r_i + r_j - dist;
   g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : R{};
   g.m_eff = m_i * m_j / (m_i + m_j);
-  g.arm_i = r_i - 0.5 * g.overlap;
-  g.arm_j = r_j - 0.5 * g.overlap;
+  g.arm_i = r_i - share * g.overlap;
+  g.arm_j = r_j - share * g.overlap;
   const R dvx = vx_i - vx_j, dvy = vy_i - vy_j;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
   g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * g.arm_i + w_j * g.arm_j);
@@ -50,17 +63,17 @@ ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_
 
 /// Geometry of a particle against the nearest point c of a wall: d = r_i - c, dist = |d| > 0, the
 /// wall's velocity (vx_wall, vy_wall) at c. The wall has infinite radius and mass: r_eff = R,
-/// m_eff = m.
+/// m_eff = m. `share`: as in pair_geometry.
 template <class R>
 ContactGeometryOf<R> wall_geometry(R dx, R dy, R dist, R r_i, R m_i, R vx_i, R vy_i, R w_i,
-                                   R vx_wall, R vy_wall) {
+                                   R vx_wall, R vy_wall, double share = 0.5) {
   ContactGeometryOf<R> g;
   g.normal_x = dx / dist;
   g.normal_y = dy / dist;
   g.overlap = r_i - dist;
   g.r_eff = r_i;
   g.m_eff = m_i;
-  g.arm_i = r_i - 0.5 * g.overlap;
+  g.arm_i = r_i - share * g.overlap;
   g.arm_j = R{};
   const R dvx = vx_i - vx_wall, dvy = vy_i - vy_wall;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;

@@ -139,6 +139,9 @@ TEST(LammpsExport, RefusesWhatLammpsCannotExpress) {
       refusal("frost_front", {"simulation.tangential_law=coulomb", "geometry.walls=particles"})
           .find("key 'frost.model'"),
       std::string::npos);
+  EXPECT_NE(refusal("collisions", {"simulation.lever_arm=radius"})
+                .find("key 'simulation.lever_arm': the lever arms at the radius"),
+            std::string::npos);
   EXPECT_EQ(refusal("collisions", {}), "(not refused)");
 }
 
