@@ -548,8 +548,10 @@ void report_threads(const Simulation& sim, const RunOptions& o) {
 // The step specialised to the scene: what it leaves out (simulation/step_features.hpp).
 void report_step(const Simulation& sim, const RunOptions& o) {
   if (o.quiet) return;
-  fmt::print("  step: {}{}\n", sim.step_description(),
-             sim.step_description() == "general" ? "" : " (left out of every step)");
+  if (sim.step_description() == "general")
+    fmt::print("  step: the general one (the scene uses every feature it has)\n");
+  else
+    fmt::print("  step specialised to the scene: {}\n", sim.step_description());
 }
 
 } // namespace

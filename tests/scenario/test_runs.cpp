@@ -42,6 +42,14 @@ TEST_P(BuiltinScenario, BuildsAndRunsShortened) {
   for (const char* f : {"scenario.toml", "thermo.csv", "run.json", "particles.pvd",
                         "checkpoint.bin", "snapshots/particles_000000.vtp"})
     EXPECT_TRUE(fs::exists(dir / f)) << name << ": " << f;
+  // run.json says which step the scene got (step_features.hpp): what it leaves out
+  const std::string json = read_file((dir / "run.json").string());
+  EXPECT_NE(json.find("\"step\": \""), std::string::npos) << json;
+  if (name == "collisions") { // four disks of one material, no walls, no gravity
+    EXPECT_NE(json.find("history-free, no walls, no drivers, one material, no gravity"),
+              std::string::npos)
+        << json;
+  }
   if (name == "collisions") { // the thesis' .out format: its 5-line header, then 13 columns
     const std::string out = read_file((dir / "run.out").string());
     EXPECT_EQ(out.substr(0, out.find('\n')), "4");
