@@ -24,7 +24,7 @@ struct LawsOptions {
   BenchSystem system;
   std::vector<std::string> laws{"none", "coulomb", "cundall_strack"};
   std::uint64_t steps = 50; // per copy and round
-  int rounds = 21;
+  int rounds = 51;
   bool general = false; ///< also a copy per law in the general step
   std::string results = "bench/results";
 };
@@ -47,23 +47,38 @@ std::string target_text(const std::string& law, double speed_up, double bytes_sh
                        bytes_share <= t.bytes_share ? "met" : "NOT met");
     return s;
   }
-  return "reference";
+  return law == "cundall_strack" ? "reference" : "-";
 }
 
-void run_laws(const LawsOptions& o) {
-  require(o.rounds >= 1, fmt::format("bench laws: --rounds {}; allowed: >= 1", o.rounds));
-  require(!o.laws.empty(), "bench laws: --laws is empty; allowed: " + law_names<TangentialLaw>());
-  const std::size_t ny = bench_base_side(o.system, "bench laws"), nx = ny * o.system.tiles;
-  // Every copy starts each round from the same packing, settled with Cundall-Strack, with its
-  // own law: taking friction away lets a packing that friction held up come apart, so a copy
-  // that ran on would be timed on fewer and fewer contacts. Short rounds from the same state time
-  // every law on nearly the contacts of the same packing.
-  Simulation base = bench_simulation(o.system, "bench laws");
-  base.run(1); // the list built: a round's steps do not start with a build
-  const SimulationState settled = base.state();
+// The copies to time: one per law (and its general step with --general), each started again
+// from the same packing for every round.
+struct LawRuns {
+  SimulationState settled;
   std::vector<TimedRun> runs;
-  std::vector<std::string> labels;
+  std::vector<std::string> labels;  ///< "coulomb", "coulomb (general step)"
+  std::vector<std::string> benches; ///< the results CSV's names: dense2d_coulomb(_general)
   std::vector<SimulationConfig> configs;
+
+  bool general(std::size_t k) const { return labels[k].ends_with("(general step)"); }
+  void start(std::size_t k) {
+    runs[k].sim = std::make_unique<Simulation>(Simulation::restore(settled, configs[k]));
+    runs[k].sim->use_general_step(general(k));
+    if (configs[k].tangential_law != law_id<Frictionless>) return;
+    // frictionless grains do not turn: the spin friction gave them while settling is taken away,
+    // as a frictionless scene would have none
+    Particles& p = runs[k].sim->edit_world().particles;
+    std::fill(p.angular_velocity.begin(), p.angular_velocity.end(), 0.0);
+    std::fill(p.torque.begin(), p.torque.end(), 0.0);
+    std::fill(p.torque_previous.begin(), p.torque_previous.end(), 0.0);
+  }
+};
+
+// Every copy starts each round from the same packing, settled with Cundall-Strack, with its own
+// law: taking friction away lets a packing that friction held up come apart, so a copy that ran
+// on would be timed on fewer and fewer contacts. Short rounds from the same state time every law
+// on nearly the contacts of the same packing.
+LawRuns law_runs(const LawsOptions& o, const Simulation& base) {
+  LawRuns l{base.state(), {}, {}, {}, {}};
   for (const std::string& name : o.laws) {
     const auto law = find_law<TangentialLaw>(name);
     require(law.has_value(), fmt::format("bench laws: --laws holds '{}'; allowed: {}", name,
@@ -74,51 +89,46 @@ void run_laws(const LawsOptions& o) {
       if (general && !o.general) continue;
       TimedRun z;
       z.steps = o.steps;
-      runs.push_back(std::move(z));
-      labels.push_back(general ? name + " (general step)" : name);
-      configs.push_back(config);
+      l.runs.push_back(std::move(z));
+      l.labels.push_back(general ? name + " (general step)" : name);
+      l.benches.push_back("dense2d_" + name + (general ? "_general" : ""));
+      l.configs.push_back(config);
     }
   }
-  const auto start = [&](std::size_t k) {
-    runs[k].sim = std::make_unique<Simulation>(Simulation::restore(settled, configs[k]));
-    runs[k].sim->use_general_step(labels[k].ends_with("(general step)"));
-    if (configs[k].tangential_law == law_id<Frictionless>) {
-      // frictionless grains do not turn: the spin friction gave them while settling is taken
-      // away, as a frictionless scene would have none
-      Particles& p = runs[k].sim->edit_world().particles;
-      std::fill(p.angular_velocity.begin(), p.angular_velocity.end(), 0.0);
-      std::fill(p.torque.begin(), p.torque.end(), 0.0);
-      std::fill(p.torque_previous.begin(), p.torque_previous.end(), 0.0);
-    }
-  };
-  for (std::size_t k = 0; k < runs.size(); ++k) { // warm up: caches, code
-    start(k);
-    runs[k].sim->run(o.steps);
+  return l;
+}
+
+// The rounds, every other one in the opposite order.
+void time_rounds(LawRuns& l, int rounds, std::uint64_t steps) {
+  for (std::size_t k = 0; k < l.runs.size(); ++k) { // warm up: caches, code
+    l.start(k);
+    l.runs[k].sim->run(steps);
   }
-  fmt::print("bench laws: {} disks ({} x {}), {} steps per round, {} round(s), {} thread(s)\n",
-             base.world().particles.size(), nx, ny, o.steps, o.rounds, runs.front().sim->threads());
-  fmt::print("  (each round: {})\n", fmt::format("{}", fmt::join(labels, ", ")));
-  for (int r = 0; r < o.rounds; ++r) {
-    for (std::size_t q = 0; q < runs.size(); ++q) { // every other round in the opposite order
-      const std::size_t k = r % 2 == 0 ? q : runs.size() - 1 - q;
-      start(k);
-      runs[k].ns.push_back(1e9 * time_steps(*runs[k].sim, o.steps));
+  for (int r = 0; r < rounds; ++r) {
+    for (std::size_t q = 0; q < l.runs.size(); ++q) {
+      const std::size_t k = r % 2 == 0 ? q : l.runs.size() - 1 - q;
+      l.start(k);
+      l.runs[k].ns.push_back(1e9 * time_steps(*l.runs[k].sim, steps));
     }
     fmt::print("  round {}:", r + 1);
-    for (const TimedRun& z : runs) fmt::print(" {:.2f}", z.ns.back());
+    for (const TimedRun& z : l.runs) fmt::print(" {:.2f}", z.ns.back());
     fmt::print(" ns per particle-step\n");
     std::fflush(stdout);
   }
-  const Simulation& first = *runs.front().sim;
-  const auto reference = std::find(labels.begin(), labels.end(), "cundall_strack");
-  const TimedRun* cs = reference == labels.end() ? nullptr : &runs[reference - labels.begin()];
-  const double n = static_cast<double>(first.world().particles.size());
+}
+
+// The table, against the Cundall-Strack copy if there is one, and the results CSV's rows.
+void report(const LawsOptions& o, const LawRuns& l, std::size_t nx, std::size_t ny) {
+  const auto reference = std::find(l.labels.begin(), l.labels.end(), "cundall_strack");
+  const TimedRun* cs =
+      reference == l.labels.end() ? nullptr : &l.runs[reference - l.labels.begin()];
+  const double n = static_cast<double>(l.settled.world.particles.size());
   fmt::print("| tangential law | step | ns per particle-step (median) | min | max | bytes per "
              "particle | contacts per particle | against cundall_strack: speed, bytes | target "
              "|\n|---|---|---|---|---|---|---|---|---|\n");
   std::string csv;
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const TimedRun& z = runs[k];
+  for (std::size_t k = 0; k < l.runs.size(); ++k) {
+    const TimedRun& z = l.runs[k];
     const double m = median(z.ns);
     const double bytes = static_cast<double>(z.sim->footprint_bytes()) / n;
     const double contacts = 2.0 * static_cast<double>(contact_count(*z.sim)) / n;
@@ -129,15 +139,13 @@ void run_laws(const LawsOptions& o) {
       for (std::size_t r = 0; r < z.ns.size(); ++r) speed_up.push_back(cs->ns[r] / z.ns[r]);
       const double share = bytes / (static_cast<double>(cs->sim->footprint_bytes()) / n);
       against = fmt::format("{:.2f}x, {:.2f}", median(speed_up), share);
-      target = target_text(labels[k], median(speed_up), share);
+      target = target_text(l.labels[k], median(speed_up), share);
     }
-    fmt::print("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.0f} | {:.3f} | {} | {} |\n", labels[k],
+    fmt::print("| {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.0f} | {:.3f} | {} | {} |\n", l.labels[k],
                z.sim->step_description(), m, *std::min_element(z.ns.begin(), z.ns.end()),
                *std::max_element(z.ns.begin(), z.ns.end()), bytes, contacts, against, target);
-    const bool general = labels[k].ends_with("(general step)");
-    csv = append_result(o.results, {.benchmark = "dense2d_" + o.laws[k / (o.general ? 2 : 1)] +
-                                                 (general ? "_general" : ""),
-                                    .n = first.world().particles.size(),
+    csv = append_result(o.results, {.benchmark = l.benches[k],
+                                    .n = l.settled.world.particles.size(),
                                     .steps = z.steps,
                                     .threads = z.sim->threads(),
                                     .seconds_per_particle_step = 1e-9 * m,
@@ -150,6 +158,20 @@ void run_laws(const LawsOptions& o) {
   fmt::print("appended to {} (benchmarks dense2d_<law>: the medians; peak bytes 0, not measured "
              "with several systems in one process)\n",
              csv);
+}
+
+void run_laws(const LawsOptions& o) {
+  require(o.rounds >= 1, fmt::format("bench laws: --rounds {}; allowed: >= 1", o.rounds));
+  require(!o.laws.empty(), "bench laws: --laws is empty; allowed: " + law_names<TangentialLaw>());
+  const std::size_t ny = bench_base_side(o.system, "bench laws"), nx = ny * o.system.tiles;
+  Simulation base = bench_simulation(o.system, "bench laws");
+  base.run(1); // the list built: a round's steps do not start with a build
+  LawRuns l = law_runs(o, base);
+  fmt::print("bench laws: {} disks ({} x {}), {} steps per round, {} round(s), {} thread(s)\n",
+             base.world().particles.size(), nx, ny, o.steps, o.rounds, base.threads());
+  fmt::print("  (each round: {})\n", fmt::format("{}", fmt::join(l.labels, ", ")));
+  time_rounds(l, o.rounds, o.steps);
+  report(o, l, nx, ny);
 }
 
 } // namespace
