@@ -198,13 +198,12 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
       const double reach = radius[i] + radius[j];
       const double dist2 = dx * dx + dy * dy;
       if (dist2 + dz * dz >= reach * reach || dist2 == 0.0) continue;
-      if (dz != 0.0)
-        fail("atoms " + std::to_string(atom->tag[i]) + " and " + std::to_string(atom->tag[j]) +
-             " touch out of the x-y plane (dz = " + std::to_string(dz) +
-             " m): the thesis' laws are for disks, or spheres moving in a plane");
-      const ContactGeometry g =
-          pair_geometry(dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0],
-                        v[i][1], v[j][0], v[j][1], omega[i][2], omega[j][2]);
+      if (dz != 0.0) [[unlikely]]
+        out_of_plane(i, j, dz);
+      // a law that does not use R* is spared its division
+      const ContactGeometry g = pair_geometry(
+          dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0], v[i][1],
+          v[j][0], v[j][1], omega[i][2], omega[j][2], N::uses_r_eff || T::uses_r_eff);
       const PairParameters& p = parameters(type[i], type[j]);
       double history = 0.0; // the allowed tangential laws keep none
       const ContactForce c = contact_force<N, T>(p, g, history, dt);
@@ -222,6 +221,12 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
                      c.force_y, 0.0, dx, dy, dz);
     }
   }
+}
+
+void PairGranthesis::out_of_plane(int i, int j, double dz) const {
+  fail("atoms " + std::to_string(atom->tag[i]) + " and " + std::to_string(atom->tag[j]) +
+       " touch out of the x-y plane (dz = " + std::to_string(dz) +
+       " m): the thesis' laws are for disks, or spheres moving in a plane");
 }
 
 // The contact's elastic energy; fforce is F_n / r (LAMMPS multiplies by the separation vector to

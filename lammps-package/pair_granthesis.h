@@ -64,6 +64,8 @@ private:
            static_cast<std::size_t>(j);
   }
   [[noreturn]] void fail(const std::string& message) const;
+  /// fail(), for atoms i and j touching with dz != 0: out of line, off the pair loop's path.
+  [[noreturn, gnu::cold, gnu::noinline]] void out_of_plane(int i, int j, double dz) const;
   void read_settings(FILE* file);     ///< the laws, from a restart file
   void read_coefficients(FILE* file); ///< the laws and the coefficients, from a restart file
 

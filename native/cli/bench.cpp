@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <numbers>
+#include <string>
 #include <vector>
 
 #include <fmt/core.h>
@@ -29,7 +31,8 @@ struct BenchOptions {
   std::uint64_t steps = 2000;
   int rounds = 1;
   bool lammps = false;
-  std::string laws = "hooke"; ///< "hooke" (LAMMPS' gran/hooke/history) or "thesis"
+  std::string laws = "hooke";            ///< "hooke" (LAMMPS' gran/hooke/history) or "thesis"
+  std::string lammps_packing = "native"; ///< LAMMPS times the "native" packing, or its "own"
   std::string results = "bench/results";
   std::string lammps_inputs;
 };
@@ -53,8 +56,10 @@ std::string talus_lmp() {
 }
 
 // The LAMMPS runs beside the native engine: with --laws hooke LAMMPS' own gran/hooke/history
-// (the deck's); with --laws thesis pair_style granthesis in talus-lmp, and LAMMPS' own
-// gran/hooke (no history: it has no more to do than granthesis) for comparison.
+// (the deck's); with --laws thesis pair_style granthesis in talus-lmp, and for comparison
+// granthesis with the linear law and LAMMPS' own gran/hooke, which computes that same law (no
+// history, the viscous friction capped): the one measures the package against LAMMPS' own code
+// on the same work, where the Hertz law costs a square root and more per contact.
 std::vector<LammpsRun> lammps_runs(const BenchOptions& o, int ranks) {
   if (o.laws == "hooke") return {{"gran/hooke/history", "lmp", "", "", ranks}};
   const std::string launcher = talus_lmp();
@@ -67,11 +72,40 @@ std::vector<LammpsRun> lammps_runs(const BenchOptions& o, int ranks) {
   // granthesis' settling wrote (lmp does not know the style named in it)
   return {{"granthesis", launcher, "granthesis hertz coulomb",
            pair_coefficient_words(dense2d_thesis_material()), ranks},
+          {"granthesis-linear", launcher, "granthesis linear coulomb",
+           pair_coefficient_words(dense2d_material()), ranks},
           {"gran/hooke", launcher, "gran/hooke 1.0e5 NULL 1.0e2 NULL 0.5 1", "", ranks}};
 }
 
-// Runs LAMMPS on the same system; returns its seconds per particle-step (0 if it failed).
-double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const LammpsRun& how) {
+// The state the native engine times, as a LAMMPS data file (atom_style sphere, 2d): LAMMPS then
+// times the very same packing. The density gives each disk the native mass, as LAMMPS computes a
+// sphere's (the dense2d disks have it: inputs/dense2d/README.md), to rounding.
+std::string lammps_data(const Simulation& sim) {
+  const Particles& p = sim.world().particles;
+  const Domain& d = sim.world().domain;
+  std::string out = fmt::format("LAMMPS data file: the native dense2d packing at step {}\n\n{} "
+                                "atoms\n1 atom types\n{} {} xlo xhi\n{} {} ylo yhi\n-0.5 0.5 zlo "
+                                "zhi\n\nAtoms # sphere\n\n",
+                                sim.step_count(), p.size(), d.lo.x, d.hi.x, d.lo.y, d.hi.y);
+  const double width = d.hi.x - d.lo.x;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = p.radius[i];
+    double x = p.position[i].x;
+    x -= width * std::floor((x - d.lo.x) / width); // into the periodic box
+    out += fmt::format("{} 1 {} {} {} {} 0\n", p.id[i] + 1, 2.0 * r,
+                       p.mass[i] / (4.0 / 3.0 * std::numbers::pi * r * r * r), x, p.position[i].y);
+  }
+  out += "\nVelocities\n\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    out += fmt::format("{} {} {} 0 0 0 {}\n", p.id[i] + 1, p.velocity[i].x, p.velocity[i].y,
+                       p.angular_velocity[i]);
+  return out;
+}
+
+// Runs LAMMPS on the same system; returns its seconds per particle-step (0 if it failed). With
+// `data` (a file lammps_data wrote), LAMMPS times that packing; without, one it settles itself.
+double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const LammpsRun& how,
+                  const std::string& data) {
   if (std::system("command -v lmp > /dev/null 2>&1") != 0) {
     fmt::print("lammps: `lmp` is not on the PATH (apt-get install lammps); skipped\n");
     return 0.0;
@@ -84,8 +118,9 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const L
   const bool thesis = o.laws == "thesis";
   const std::string tag = thesis ? "_thesis" : "";
   const std::string vars =
-      fmt::format("-var nx {} -var ny {}{}", nx, ny, thesis ? " -var tag " + tag : "");
-  if (!fs::exists(dir / fmt::format("settled{}_{}x{}.restart", tag, nx, ny))) {
+      fmt::format("-var nx {} -var ny {}{}{}", nx, ny, thesis ? " -var tag " + tag : "",
+                  data.empty() ? "" : fmt::format(" -var read read_data -var packing '{}'", data));
+  if (data.empty() && !fs::exists(dir / fmt::format("settled{}_{}x{}.restart", tag, nx, ny))) {
     const std::string settle_with =
         thesis ? fmt::format("{} -var pair 'granthesis hertz coulomb' -var coeff '{}'", talus_lmp(),
                              pair_coefficient_words(dense2d_thesis_material()))
@@ -139,8 +174,8 @@ struct Rounds {
 };
 
 Rounds time_rounds(const BenchOptions& o, const Simulation& sim, const SimulationState& warm,
-                   double first, const std::vector<LammpsRun>& runs, std::size_t nx,
-                   std::size_t ny) {
+                   double first, const std::vector<LammpsRun>& runs, std::size_t nx, std::size_t ny,
+                   const std::string& data) {
   Rounds r{{first}, std::vector<std::vector<double>>(runs.size())};
   std::vector<bool> failed(runs.size(), false);
   for (int round = 0; round < o.rounds; ++round) {
@@ -152,7 +187,7 @@ Rounds time_rounds(const BenchOptions& o, const Simulation& sim, const Simulatio
                                    1e9 * r.talus.back());
     for (std::size_t k = 0; k < runs.size(); ++k) {
       if (failed[k]) continue;
-      const double l = run_lammps(o, nx, ny, runs[k]);
+      const double l = run_lammps(o, nx, ny, runs[k], data);
       failed[k] = l <= 0.0; // it said why
       if (failed[k]) continue;
       r.lammps[k].push_back(l);
@@ -168,7 +203,7 @@ Rounds time_rounds(const BenchOptions& o, const Simulation& sim, const Simulatio
 }
 
 // The LAMMPS figures: each run's median and its ratio to talus'; with the thesis' laws also
-// granthesis against LAMMPS' own gran/hooke.
+// granthesis with the linear law against LAMMPS' own gran/hooke, the same law.
 void print_lammps(const BenchOptions& o, const Rounds& r, const std::vector<LammpsRun>& runs,
                   double per) {
   const std::string of = o.rounds > 1 ? " (medians)" : "";
@@ -178,9 +213,9 @@ void print_lammps(const BenchOptions& o, const Rounds& r, const std::vector<Lamm
     fmt::print("  LAMMPS {} ns per particle-step: {:.2f} on {} rank(s); LAMMPS / talus {:.2f}{}\n",
                runs[k].label, l * 1e9, runs[k].ranks, l / per, of);
   }
-  if (runs.size() == 2 && !r.lammps[0].empty() && !r.lammps[1].empty())
-    fmt::print("  granthesis / gran/hooke:    {:.2f}{}\n",
-               median(r.lammps[0]) / median(r.lammps[1]), of);
+  if (runs.size() == 3 && !r.lammps[1].empty() && !r.lammps[2].empty())
+    fmt::print("  granthesis (linear) / gran/hooke, the same law: {:.2f}{}\n",
+               median(r.lammps[1]) / median(r.lammps[2]), of);
 }
 
 void print_talus(const BenchOptions& o, const Simulation& sim, double per, std::size_t rounds,
@@ -216,6 +251,15 @@ void run_bench(const BenchOptions& o) {
   Simulation sim = bench_simulation(system, "bench dense2d");
   const double n = static_cast<double>(sim.world().particles.size());
   sim.run(100); // warm up: caches, first rebuild
+  // the state timed, for LAMMPS to time too
+  std::string data;
+  if (o.lammps && o.system.tiles == 1 && o.lammps_packing == "native") {
+    const fs::path dir = fs::absolute(fs::path(o.system.cache) / "lammps");
+    fs::create_directories(dir);
+    data = (dir / fmt::format("native{}_{}x{}.data", o.laws == "thesis" ? "_thesis" : "", nx, ny))
+               .string();
+    write_file_atomically(data, lammps_data(sim));
+  }
   // every round times the same steps from this state (as LAMMPS' runs start from its restart)
   const SimulationState warm = o.rounds > 1 ? sim.state() : SimulationState{};
   const std::uint64_t builds_before = sim.neighbours().builds;
@@ -234,7 +278,7 @@ void run_bench(const BenchOptions& o) {
     fmt::print("lammps: not run with --tiles (LAMMPS would settle the wide system itself)\n");
   const std::vector<LammpsRun> runs =
       with_lammps ? lammps_runs(o, std::max(1, sim.threads())) : std::vector<LammpsRun>{};
-  const Rounds r = time_rounds(o, sim, warm, first, runs, nx, ny);
+  const Rounds r = time_rounds(o, sim, warm, first, runs, nx, ny, data);
   const double per = median(r.talus);
 
   fmt::print("dense2d: {} disks ({} x {}), {} steps, {} thread(s), {} laws\n",
@@ -332,6 +376,12 @@ void add_bench_command(CLI::App& app) {
   add_shared_bench_options(*cmd, o->system, o->results,
                            "neighbour-list skin, m (0: automatic, as in a run; 0.001 is the "
                            "LAMMPS input's; the physics is the same)");
+  cmd->add_option("--lammps-packing", o->lammps_packing,
+                  "the packing LAMMPS times: native (the state the native engine times, as a "
+                  "data file) or own (one LAMMPS settles itself from the same lattice, "
+                  "lammps-settle.in)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"native", "own"}));
   cmd->add_option("--lammps-inputs", o->lammps_inputs,
                   "folder with lammps-settle.in and lammps-bench.in")
       ->capture_default_str();
