@@ -307,9 +307,11 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
   out += frost_section(s, b, thermo) + "\n";
   out += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\ntimestep {}\n\n",
                      exact(b.world.particles.min_radius()), exact(dt));
-  // the coordination number as the native engine counts it: contacts per grain, with walls
+  // the coordination number as the native engine counts it: contacts per grain, with walls.
+  // contact/atom counts a grain's contacts only with atoms in its own group, so it runs on all
+  // atoms and the average is over the grains.
   out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n"
-         "compute contacts grains contact/atom\ncompute coordination grains reduce ave "
+         "compute contacts all contact/atom\ncompute coordination grains reduce ave "
          "c_contacts\n";
   out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation c_coordination "
                      "pe press{}\n",
