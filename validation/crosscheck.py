@@ -16,7 +16,18 @@ bound of each comparison, with its reason). Each case runs in:
 
 Every grain is tracked at full precision in both (track.csv, the LAMMPS dump); the trajectories
 are compared by id at the common times: the largest and the RMS position difference, in mean
-radii, against time. The summary (validation/results/index.html, opening offline) and a chart of
+radii, against time. While native Verlet (half step) and LAMMPS agree to rounding, their thermo
+rows must count the same contacts.
+
+Long cases are also compared by their statistics, each with its standard error: [statistics]
+(thermo columns, block averages over a window) and [[measures]] (validation/measures.py: the
+packing fraction, the coordination, and any number `talus analyze` gives, P(f/<f>)'s tail and the
+segregation index among them), taken by the same code from the native snapshots and from the
+LAMMPS run made into a talus run folder (validation/run_folder.py), over the case's seed and
+those of [analysis] seeds. Native Verlet (half step) must lie within z_max combined errors of
+LAMMPS; native Gear is reported beside them.
+
+The summary (validation/results/index.html, opening offline) and a chart of
 the differences per case go to --out; a line per comparison is printed as it goes, and the exit
 status is 1 if any comparison fails its bound.
 """
@@ -31,6 +42,9 @@ import time
 import tomllib
 
 import numpy as np
+
+from measures import block_mean, measure
+from run_folder import add_analysis_dumps, lammps_run_folder
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
@@ -100,14 +114,6 @@ def read_lammps_thermo(path):
     return {n: table[:, k] for k, n in enumerate(names)}
 
 
-def block_mean(t, x, lo, hi, blocks):
-    """The mean of x over t in [lo, hi] and its standard error from `blocks` block averages
-    (blocks long against the correlation time keep the error honest)."""
-    x = np.asarray(x)[(np.asarray(t) >= lo) & (np.asarray(t) <= hi)]
-    means = np.array([b.mean() for b in np.array_split(x, blocks)])
-    return float(means.mean()), float(means.std(ddof=1) / np.sqrt(blocks))
-
-
 def align(a, b, dt):
     """The frames of a and b at common times (to within a hundredth of a step)."""
     keys_b = {round(t / dt): t for t in b}
@@ -147,32 +153,64 @@ class Case:
         with open(self.scenario_file, "rb") as f:
             self.scenario = tomllib.load(f)
         self.chaotic = self.tolerances["trajectory"].get("chaotic", False)
+        # the exported deck's files are named after the scenario, not the case
+        self.deck_name = self.scenario["name"]
+        # settings of the case on top of its scenario, in every run and in the deck
+        self.sets = self.tolerances.get("sets", [])
+        # how often every grain is compared: the scenario's track interval, or the case's own
+        # (a long case tracked at the scenario's would write millions of rows)
+        self.track_interval = self.tolerances["trajectory"].get(
+            "track_interval", self.scenario["output"]["track_interval"])
         self.rows = []    # (comparison, value, bound, passed, note)
         self.speeds = {}  # engine: wall seconds per particle-step
         self.lammps_logs = {}  # ranks: log.lammps
         self.native_thermo = {}  # label: thermo.csv
+        self.native_folders = {}  # label: run folder
+        self.stats = []  # (quantity, (native value, error), (LAMMPS value, error))
+        # the snapshots the [[measures]] are taken from, at this interval in both engines
+        self.analysis = self.tolerances.get("analysis")
 
     def native(self, label, sets):
         folder = os.path.join(self.out, label)
         shutil.rmtree(folder, ignore_errors=True)
         command = [self.talus, "run", self.scenario_file, "--out", folder,
-                   "--quiet", "--threads", "1", "--set", "track.select=all"]
-        for s in sets:
+                   "--quiet", "--threads", "1", "--set", "track.select=all", "--set",
+                   f"output.track_interval={self.track_interval!r}"]
+        for s in self.sets + sets:
             command += ["--set", s]
         wall = run(command)
         self.native_thermo[label] = os.path.join(folder, "thermo.csv")
+        self.native_folders[label] = folder
         return read_track(os.path.join(folder, "track.csv")), wall, folder
 
-    def lammps(self, ranks, deck_dir, every):
-        folder = os.path.join(self.out, f"lammps-{ranks}")
+    def export(self, name, sets):
+        """The deck `talus export lammps` writes of the case (with `sets`), for velocity Verlet
+        with the half-step damper velocity, LAMMPS' scheme."""
+        deck = os.path.join(self.out, name)
+        shutil.rmtree(deck, ignore_errors=True)
+        command = [self.talus, "export", "lammps", self.scenario_file, deck, "--quiet", "--set",
+                   "simulation.integrator=verlet", "--set", "simulation.verlet_velocity=half_step"]
+        for s in self.sets + sets:
+            command += ["--set", s]
+        run(command)
+        return deck
+
+    def lammps(self, ranks, deck_dir, every, name=None):
+        folder = os.path.join(self.out, name or f"lammps-{ranks}")
         shutil.rmtree(folder, ignore_errors=True)
         shutil.copytree(deck_dir, folder)
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), self.lmp, "-in",
-                   f"in.{self.name}", "-var", "snapshot_every", str(every), "-log", "log.lammps",
-                   "-screen", "none"]
+                   f"in.{self.deck_name}", "-var", "snapshot_every", str(every), "-log",
+                   "log.lammps", "-screen", "none"]
+        if ranks == 1 and self.analysis:
+            # the snapshots for the [[measures]]: the grains and their contacts
+            add_analysis_dumps(os.path.join(folder, f"in.{self.deck_name}"))
+            command += ["-var", "analysis_every",
+                        str(max(1, round(self.analysis["snapshot_interval"] / self.dt)))]
         wall = run(command, cwd=folder)
-        self.lammps_logs[ranks] = os.path.join(folder, "log.lammps")
-        return read_dump(os.path.join(folder, f"dump.{self.name}.lammpstrj"), self.dt), wall
+        if name is None:
+            self.lammps_logs[ranks] = os.path.join(folder, "log.lammps")
+        return read_dump(os.path.join(folder, f"dump.{self.deck_name}.lammpstrj"), self.dt), wall
 
     def compare(self, what, a, b, bound_key, kind):
         t, largest, rms = differences(a, b, self.dt, self.radius)
@@ -200,9 +238,11 @@ class Case:
 
     def run_all(self, ranks):
         os.makedirs(self.out, exist_ok=True)
+        snapshots = ([f"output.snapshot_interval={self.analysis['snapshot_interval']!r}"]
+                     if self.analysis else [])
         half, wall_h, folder = self.native("native-verlet-half_step",
                                            ["simulation.integrator=verlet",
-                                            "simulation.verlet_velocity=half_step"])
+                                            "simulation.verlet_velocity=half_step"] + snapshots)
         with open(os.path.join(folder, "run.json")) as f:
             info = json.load(f)
         self.dt, steps, n = info["timestep"], info["steps"], info["particles"]
@@ -212,18 +252,15 @@ class Case:
         predicted, wall_p, _ = self.native("native-verlet-predicted",
                                            ["simulation.integrator=verlet",
                                             "simulation.verlet_velocity=predicted"])
-        gear, wall_g, _ = self.native("native-gear", ["simulation.integrator=gear"])
-        deck = os.path.join(self.out, "deck")
-        shutil.rmtree(deck, ignore_errors=True)
-        run([self.talus, "export", "lammps", self.scenario_file, deck,
-             "--quiet", "--set", "simulation.integrator=verlet", "--set",
-             "simulation.verlet_velocity=half_step"])
-        every = max(1, round(self.scenario["output"]["track_interval"] / self.dt))
+        gear, wall_g, _ = self.native("native-gear", ["simulation.integrator=gear"] + snapshots)
+        deck = self.export("deck", [])
+        every = max(1, round(self.track_interval / self.dt))
         curves = {}
         lmp1, wall_l1 = self.lammps(1, deck, every)
         curves["Verlet (half step) - LAMMPS"] = self.compare(
             "native Verlet (half_step) against LAMMPS granthesis, 1 rank", half, lmp1,
             "rounding", "rounding")
+        self.compare_coordination(*curves["Verlet (half step) - LAMMPS"])
         if ranks > 1:
             lmp2, _ = self.lammps(ranks, deck, every)
             curves[f"LAMMPS 1 - {ranks} ranks"] = self.compare(
@@ -237,11 +274,38 @@ class Case:
             curves.update(self.gran_hooke(deck, every, half))
         if "statistics" in self.tolerances:
             self.statistics()
+        if "measures" in self.tolerances:
+            self.measures()
+        if self.stats:
+            self.statistics_chart()
         for engine, wall in (("native Verlet", wall_h), ("native Gear", wall_g),
                              ("LAMMPS granthesis", wall_l1)):
             self.speeds[engine] = wall / max(1, steps * n)
         self.chart(curves)
         return all(r[3] for r in self.rows)
+
+    def compare_coordination(self, t, largest):
+        """While native Verlet (half step) and LAMMPS agree to rounding, their thermo rows must
+        count the same contacts: the coordination (walls included) at every common time, to the
+        digits the native thermo.csv prints (6 decimals)."""
+        bound = self.tolerances["trajectory"]["rounding"]
+        apart = t[largest > bound]
+        until = float(apart[0]) if len(apart) else float("inf")
+        native = np.genfromtxt(self.native_thermo["native-verlet-half_step"], delimiter=",",
+                               names=True)
+        lammps = read_lammps_thermo(self.lammps_logs[1])
+        at = {round(x / self.dt): z for x, z in zip(lammps["Time"], lammps["c_coordination"])}
+        pairs = [(z, at[round(x / self.dt)]) for x, z in
+                 zip(np.atleast_1d(native["time"]), np.atleast_1d(native["coordination"]))
+                 if x < until and round(x / self.dt) in at]
+        worst = max((abs(a - b) for a, b in pairs), default=float("nan"))
+        passed = bool(pairs) and worst <= 1e-6
+        note = (f"{len(pairs)} thermo rows to t = {min(until, float(t[-1])):.4g} s; largest "
+                f"coordination {max((a for a, _ in pairs), default=0.0):.4g}")
+        self.rows.append(("coordination, native Verlet (half_step) against LAMMPS thermo", worst,
+                          1e-6, passed, note))
+        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: coordination against LAMMPS' thermo: "
+              f"largest difference {worst:.3g} (bound 1e-06; {note})")
 
     def gran_hooke_pair(self):
         """LAMMPS' gran/hooke line for the case's one material, which must give its dampers as
@@ -267,7 +331,7 @@ class Case:
         hooke = os.path.join(self.out, "deck-gran-hooke")
         shutil.rmtree(hooke, ignore_errors=True)
         shutil.copytree(deck, hooke)
-        path = os.path.join(hooke, f"in.{self.name}")
+        path = os.path.join(hooke, f"in.{self.deck_name}")
         with open(path) as f:
             lines = f.read().splitlines(keepends=True)
         kept = [line for line in lines if not line.startswith(("pair_style", "pair_coeff"))]
@@ -278,9 +342,9 @@ class Case:
         folder = os.path.join(self.out, "lammps-gran-hooke")
         shutil.rmtree(folder, ignore_errors=True)
         shutil.copytree(hooke, folder)
-        run([self.lmp, "-in", f"in.{self.name}", "-var", "snapshot_every", str(every), "-log",
+        run([self.lmp, "-in", f"in.{self.deck_name}", "-var", "snapshot_every", str(every), "-log",
              "log.lammps", "-screen", "none"], cwd=folder)
-        lmp = read_dump(os.path.join(folder, f"dump.{self.name}.lammpstrj"), self.dt)
+        lmp = read_dump(os.path.join(folder, f"dump.{self.deck_name}.lammpstrj"), self.dt)
         radius, _, _ = self.native("native-verlet-half_step-radius",
                                    ["simulation.integrator=verlet",
                                     "simulation.verlet_velocity=half_step",
@@ -294,28 +358,107 @@ class Case:
                 half, lmp, "conventions", "conventions"),
         }
 
+    def z_rows(self, quantity, values, spec, where):
+        """The rows of one statistic: native Verlet (half step), LAMMPS' scheme, against LAMMPS
+        must lie within z_max combined errors; native Gear against LAMMPS is reported (Gear's
+        dampers see another velocity, which can shift a dissipative statistic: a settled
+        packing's), and passes or fails only where the case sets gear_z_max."""
+        lammps = values["LAMMPS"]
+        self.stats.append((quantity, values))
+        for label, bound_key in (("native Verlet (half_step)", "z_max"),
+                                 ("native Gear", "gear_z_max")):
+            a = values[label]
+            z = abs(a[0] - lammps[0]) / max(np.hypot(a[1], lammps[1]), 1e-300)
+            bound = spec.get(bound_key)
+            passed = bound is None or bool(z <= bound)
+            note = (f"{label} {a[0]:.4g} +- {a[1]:.2g}, LAMMPS {lammps[0]:.4g} +- "
+                    f"{lammps[1]:.2g}{where}" + ("; reported, no bound" if bound is None else ""))
+            self.rows.append((f"{quantity}: z-score, {label} against LAMMPS", z,
+                              float("nan") if bound is None else bound, passed, note))
+            print(f"{'ok  ' if passed else 'FAIL'} {self.name}: {quantity}: {label} against "
+                  f"LAMMPS: z = {z:.2f} (bound {'none' if bound is None else f'{bound:g}'}; "
+                  f"{note})")
+
     def statistics(self):
-        """Time averages over the case's window, each with its standard error from block
-        averages, of the native engine's default (Gear) and LAMMPS: the difference passes when
-        its z-score (difference over the combined error) is below the bound."""
+        """Time averages of thermo columns over the case's window, each with its standard error
+        from block averages, of the native engine and LAMMPS (z_rows)."""
         spec = self.tolerances["statistics"]
         lo, hi = spec["window"]
-        native = np.genfromtxt(self.native_thermo["native-gear"], delimiter=",", names=True)
         lammps = read_lammps_thermo(self.lammps_logs[1])
-        self.stats = []
+        where = f" over t in [{lo:g}, {hi:g}] s, {spec['blocks']} blocks"
         for quantity, column in spec["quantities"].items():
-            a = block_mean(native["time"], native[quantity], lo, hi, spec["blocks"])
-            b = block_mean(lammps["Time"], lammps[column], lo, hi, spec["blocks"])
-            z = abs(a[0] - b[0]) / max(np.hypot(a[1], b[1]), 1e-300)
-            passed = z <= spec["z_max"]
-            note = (f"native Gear {a[0]:.4g} +- {a[1]:.2g}, LAMMPS {b[0]:.4g} +- {b[1]:.2g} "
-                    f"over t in [{lo:g}, {hi:g}] s, {spec['blocks']} blocks")
-            self.rows.append((f"{quantity}: z-score, native Gear against LAMMPS", z,
-                              spec["z_max"], passed, note))
-            self.stats.append((quantity, a, b))
-            print(f"{'ok  ' if passed else 'FAIL'} {self.name}: {quantity}: z = {z:.2f} (bound "
-                  f"{spec['z_max']:g}; {note})")
-        self.statistics_chart()
+            values = {"LAMMPS": block_mean(lammps["Time"], lammps[column], lo, hi,
+                                           spec["blocks"])}
+            for label, run_label in (("native Verlet (half_step)", "native-verlet-half_step"),
+                                     ("native Gear", "native-gear")):
+                native = np.genfromtxt(self.native_thermo[run_label], delimiter=",", names=True)
+                values[label] = block_mean(native["time"], native[quantity], lo, hi,
+                                           spec["blocks"])
+            self.z_rows(quantity, values, spec, where)
+
+    def seed_runs(self, seed):
+        """The run folders of the case with another seed: native Verlet (half step), native
+        Gear, LAMMPS on 1 rank (made into a talus run folder)."""
+        sets = [f"simulation.seed={seed}",
+                f"output.snapshot_interval={self.analysis['snapshot_interval']!r}"]
+        _, _, half = self.native(f"seed-{seed}/native-verlet-half_step",
+                                 ["simulation.integrator=verlet",
+                                  "simulation.verlet_velocity=half_step"] + sets)
+        _, _, gear = self.native(f"seed-{seed}/native-gear", ["simulation.integrator=gear"] + sets)
+        deck = self.export(f"seed-{seed}/deck", sets[:1])
+        every = max(1, round(self.track_interval / self.dt))
+        self.lammps(1, deck, every, name=f"seed-{seed}/lammps-1")
+        lammps = lammps_run_folder(os.path.join(self.out, f"seed-{seed}", "lammps-1"), half,
+                                   self.dt, os.path.join(self.out, f"seed-{seed}", "lammps-1-run"))
+        return {"native Verlet (half_step)": half, "native Gear": gear, "LAMMPS": lammps}
+
+    def measures(self):
+        """The [[measures]] of tolerances.toml (validation/measures.py), taken by the same code
+        from the native runs' snapshots and from the LAMMPS run's, made into a talus run folder,
+        for the case's seed and each of [analysis] seeds; compared by z_rows. Over several seeds
+        a value is the mean of the seeds' and its error the larger of two estimates: the seeds'
+        own errors combined, and their scatter (the standard error of the mean)."""
+        half = self.native_folders["native-verlet-half_step"]
+        runs = [{"native Verlet (half_step)": half,
+                 "native Gear": self.native_folders["native-gear"],
+                 "LAMMPS": lammps_run_folder(os.path.join(self.out, "lammps-1"), half, self.dt,
+                                             os.path.join(self.out, "lammps-1-run"))}]
+        seeds = self.analysis.get("seeds", [])
+        for seed in seeds:
+            runs.append(self.seed_runs(seed))
+        count = f", {len(runs)} seeds" if seeds else ""
+        for spec in self.tolerances["measures"]:
+            values = {}
+            for label in runs[0]:
+                v = np.array([measure(spec, r[label], self.talus) for r in runs])
+                own = float(np.sqrt(np.sum(v[:, 1] ** 2)) / len(v))
+                scatter = float(v[:, 0].std(ddof=1) / np.sqrt(len(v))) if len(v) > 1 else 0.0
+                values[label] = (float(v[:, 0].mean()), max(own, scatter))
+            where = (f" over t in [{spec['window'][0]:g}, {spec['window'][1]:g}] s"
+                     if "window" in spec else "") + count
+            self.z_rows(spec["name"], values, spec, where)
+        if any(spec.get("analysis") == "forces" for spec in self.tolerances["measures"]):
+            self.force_chart(runs[0])
+
+    def force_chart(self, folders):
+        """P(f/<f>) of the engines on one chart (talus analyze's forces.csv of each)."""
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5, 4))
+        for label, folder in folders.items():
+            data = np.genfromtxt(os.path.join(folder, "analysis", "forces.csv"), delimiter=",",
+                                 names=True)
+            data = data[data["count"] > 0]
+            ax.semilogy(data["f_over_mean"], data["probability_density"], "o-", ms=3,
+                        label=label)
+        ax.set_xlabel("f / <f>")
+        ax.set_ylabel("P(f / <f>)")
+        ax.set_title(f"{self.name}: normal contact forces", fontsize=9)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "force_distribution.png"), dpi=110)
+        plt.close(fig)
 
     def statistics_chart(self):
         import matplotlib
@@ -323,11 +466,14 @@ class Case:
         import matplotlib.pyplot as plt
         fig, axes = plt.subplots(1, len(self.stats), figsize=(3.5 * len(self.stats), 3.5),
                                  squeeze=False)
-        for ax, (quantity, a, b) in zip(axes[0], self.stats):
-            ax.errorbar([0, 1], [a[0], b[0]], yerr=[a[1], b[1]], fmt="o", capsize=6)
-            ax.set_xticks([0, 1], ["native (Gear)", "LAMMPS"])
-            ax.set_xlim(-0.5, 1.5)
-            ax.set_title(quantity, fontsize=9)
+        for ax, (quantity, values) in zip(axes[0], self.stats):
+            labels = list(values)
+            ax.errorbar(range(len(labels)), [values[k][0] for k in labels],
+                        yerr=[values[k][1] for k in labels], fmt="o", capsize=6)
+            ax.set_xticks(range(len(labels)),
+                          [k.replace("native ", "native\n") for k in labels], fontsize=8)
+            ax.set_xlim(-0.5, len(labels) - 0.5)
+            ax.set_title(quantity, fontsize=9, wrap=True)
         fig.tight_layout()
         fig.savefig(os.path.join(self.out, "statistics.png"), dpi=110)
         plt.close(fig)
@@ -353,15 +499,17 @@ def summary(cases, out):
     for c in cases:
         for what, value, bound, passed, note in c.rows:
             rows.append(f"<tr><td>{html.escape(c.name)}</td><td>{html.escape(what)}</td>"
-                        f"<td>{value:.3e}</td><td>{bound:g}</td><td>{html.escape(note)}</td>"
+                        f"<td>{value:.3e}</td><td>{'reported' if bound != bound else f'{bound:g}'}</td><td>{html.escape(note)}</td>"
                         f"<td class={'ok' if passed else 'fail'}>{'pass' if passed else 'FAIL'}"
                         f"</td></tr>")
         speeds = ", ".join(f"{k}: {v * 1e9:.0f} ns" for k, v in c.speeds.items())
         rows.append(f"<tr><td colspan=6>{html.escape(c.name)}: wall time per particle-step "
                     f"(whole runs, start-up included): {html.escape(speeds)}<br>"
                     f"<img src='{html.escape(c.name)}/position_difference.png'>"
-                    + (f"<img src='{html.escape(c.name)}/statistics.png'>"
-                       if "statistics" in c.tolerances else "") + "</td></tr>")
+                    + (f"<img src='{html.escape(c.name)}/statistics.png'>" if c.stats else "")
+                    + (f"<img src='{html.escape(c.name)}/force_distribution.png'>"
+                       if os.path.exists(os.path.join(c.out, "force_distribution.png")) else "")
+                    + "</td></tr>")
     page = ("<!doctype html><meta charset=utf-8><title>talus cross-check</title><style>"
             "body{font-family:sans-serif}td,th{padding:3px 8px;border-bottom:1px solid #ccc}"
             ".ok{color:green}.fail{color:red;font-weight:bold}</style>"

@@ -1,0 +1,181 @@
+"""Snapshots of both engines in the one layout `talus analyze` reads.
+
+A LAMMPS run of an exported deck, given the dumps `analysis_dumps` adds, becomes a talus run
+folder (particles.pvd, contacts.pvd and their .vtp files, the native scenario.toml), so that the
+native analyses (`talus analyze DIR forces`, `segregation`, `profiles`, ...) measure both engines
+with the same code. `read_frames` reads the particles of either folder back into arrays.
+"""
+import os
+import re
+import shutil
+
+import numpy as np
+
+# Appended to an exported deck before its `run`: every grain's state, and every pair within the
+# force cutoff with its distance, normal force F_n (granthesis' p5) and overlap (p6). The two
+# local computes walk the same neighbour list with the same cutoff, so their rows match.
+ANALYSIS_DUMPS = """\
+compute talus_pair_ids all property/local patom1 patom2
+compute talus_pair_forces all pair/local dist p5 p6
+dump talus_frames all custom ${analysis_every} dump.frames id type radius x y vx vy fx fy omegaz
+dump_modify talus_frames sort id format float %.17g
+dump talus_contacts all local ${analysis_every} dump.contacts c_talus_pair_ids[1] &
+  c_talus_pair_ids[2] c_talus_pair_forces[1] c_talus_pair_forces[2] c_talus_pair_forces[3]
+dump_modify talus_contacts format float %.17g
+"""
+
+
+def add_analysis_dumps(deck):
+    """Puts ANALYSIS_DUMPS before the deck's `run` line."""
+    with open(deck) as f:
+        lines = f.read().splitlines(keepends=True)
+    at = next(k for k, line in enumerate(lines) if line.startswith("run "))
+    lines.insert(at, ANALYSIS_DUMPS)
+    with open(deck, "w") as f:
+        f.writelines(lines)
+
+
+def dump_blocks(path):
+    """(timestep, column names, rows as a float array) for each block of a LAMMPS text dump."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        step, count = int(lines[k + 1]), int(lines[k + 3])
+        columns = lines[k + 8].split()[2:]
+        body = lines[k + 9:k + 9 + count]
+        rows = (np.array([[float(v) for v in line.split()] for line in body])
+                if count else np.zeros((0, len(columns))))
+        yield step, columns, rows
+        k += 9 + count
+
+
+def data_array(xml, name, path):
+    """The numbers of a talus .vtp's DataArray called `name`."""
+    match = re.search(r'<DataArray[^>]*Name="' + re.escape(name) + r'"[^>]*>(.*?)</DataArray>',
+                      xml, re.S)
+    if match is None:
+        raise ValueError(f"{path}: no DataArray '{name}' (not a talus snapshot?)")
+    return np.array(match.group(1).split(), dtype=float)
+
+
+def pvd_entries(path):
+    """(time, file relative to the folder) of a .pvd collection."""
+    with open(path) as f:
+        xml = f.read()
+    return [(float(t), name) for t, name in
+            re.findall(r'<DataSet timestep="([^"]+)"[^>]*file="([^"]+)"', xml)]
+
+
+def read_frames(folder):
+    """[(time, {id, radius, x, y, vx, vy, kind, material} arrays)] of a talus run folder."""
+    frames = []
+    for t, name in pvd_entries(os.path.join(folder, "particles.pvd")):
+        path = os.path.join(folder, name)
+        with open(path) as f:
+            xml = f.read()
+        pos = data_array(xml, "position", path).reshape(-1, 3)
+        vel = data_array(xml, "velocity", path).reshape(-1, 3)
+        frame = {"id": data_array(xml, "id", path).astype(int),
+                 "radius": data_array(xml, "radius", path),
+                 "x": pos[:, 0], "y": pos[:, 1], "vx": vel[:, 0], "vy": vel[:, 1],
+                 "kind": data_array(xml, "kind", path).astype(int),
+                 "material": data_array(xml, "material", path).astype(int)}
+        frames.append((t, frame))
+    return frames
+
+
+def array(name, components, values, fmt="{:.17g}"):
+    body = "\n".join(" ".join(fmt.format(v) for v in np.atleast_1d(row)) for row in values)
+    return (f'        <DataArray type="Float64" Name="{name}" NumberOfComponents="{components}" '
+            f'format="ascii">\n{body}\n        </DataArray>\n')
+
+
+def polydata(points, cells, point_data, cell_data):
+    """A VTK XML PolyData of `points` with verts (cells = 1) or lines (cells = 2)."""
+    n = len(points) // cells
+    tag = "Verts" if cells == 1 else "Lines"
+    out = ['<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" '
+           'byte_order="LittleEndian">\n  <PolyData>\n',
+           f'    <Piece NumberOfPoints="{len(points)}" NumberOf{tag}="{n}">\n']
+    for section, data in (("PointData", point_data), ("CellData", cell_data)):
+        out.append(f"      <{section}>\n")
+        out += [array(name, comps, values) for name, comps, values in data]
+        out.append(f"      </{section}>\n")
+    xyz = np.column_stack([points, np.zeros(len(points))])
+    out += ["      <Points>\n", array("position", 3, xyz), "      </Points>\n",
+            f"      <{tag}>\n",
+            '        <DataArray type="Int64" Name="connectivity" format="ascii">\n',
+            "\n".join(str(k) for k in range(len(points))), "\n        </DataArray>\n",
+            '        <DataArray type="Int64" Name="offsets" format="ascii">\n',
+            "\n".join(str(cells * (k + 1)) for k in range(n)), "\n        </DataArray>\n",
+            f"      </{tag}>\n    </Piece>\n  </PolyData>\n</VTKFile>\n"]
+    return "".join(out)
+
+
+def pvd(entries):
+    rows = "".join(f'    <DataSet timestep="{t!r}" part="0" file="{name}"/>\n'
+                   for t, name in entries)
+    return ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="1.0">\n'
+            f"  <Collection>\n{rows}  </Collection>\n</VTKFile>\n")
+
+
+def lammps_run_folder(lammps_dir, native_folder, dt, out):
+    """Writes `out`, a talus run folder of the LAMMPS run in `lammps_dir` (its dump.frames and
+    dump.contacts): the native run's scenario, and its kinds and materials by id (LAMMPS ids are
+    the native ids + 1; a grain's kind and material never change). Contacts between two wall
+    particles are left out, as the native engine never forms them."""
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(os.path.join(out, "snapshots"))
+    shutil.copy(os.path.join(native_folder, "scenario.toml"), out)
+    _, first = read_frames(native_folder)[0]
+    kind = dict(zip(first["id"] + 1, first["kind"]))
+    material = dict(zip(first["id"] + 1, first["material"]))
+    frames = list(dump_blocks(os.path.join(lammps_dir, "dump.frames")))
+    contacts = {step: (columns, rows) for step, columns, rows in
+                dump_blocks(os.path.join(lammps_dir, "dump.contacts"))}
+    particles_pvd, contacts_pvd = [], []
+    for k, (step, columns, rows) in enumerate(frames):
+        c = {name: rows[:, i] for i, name in enumerate(columns)}
+        ids = c["id"].astype(int)
+        at = {i: n for n, i in enumerate(ids)}
+        xy = np.column_stack([c["x"], c["y"]])
+        zero = np.zeros(len(ids))
+        name = f"snapshots/particles_{k:06d}.vtp"
+        with open(os.path.join(out, name), "w") as f:
+            f.write(polydata(xy, 1, [
+                ("id", 1, ids - 1), ("radius", 1, c["radius"]),
+                ("velocity", 3, np.column_stack([c["vx"], c["vy"], zero])),
+                ("angular_velocity", 1, c["omegaz"]),
+                ("force", 3, np.column_stack([c["fx"], c["fy"], zero])),
+                ("kind", 1, [kind[i] for i in ids]),
+                ("material", 1, [material[i] for i in ids])], []))
+        particles_pvd.append((step * dt, name))
+        pair_columns, pairs = contacts[step]
+        p = {n: pairs[:, i] for i, n in enumerate(pair_columns)}
+        keep = []
+        for r in range(len(pairs)):
+            a, b = int(p["c_talus_pair_ids[1]"][r]), int(p["c_talus_pair_ids[2]"][r])
+            if p["c_talus_pair_forces[3]"][r] <= 0.0 or (kind[a] != 0 and kind[b] != 0):
+                continue
+            # the distance pair/local saw must be that of the atoms dumped: rows in step
+            d = np.hypot(*(xy[at[a]] - xy[at[b]]))
+            if abs(d - p["c_talus_pair_forces[1]"][r]) > 1e-9 * d:
+                raise ValueError(f"{lammps_dir}: dump.contacts at step {step} does not match "
+                                 "dump.frames")
+            keep.append((a, b, r))
+        ends = np.array([xy[at[a]] if e == 0 else xy[at[b]] for a, b, _ in keep for e in (0, 1)])
+        rows_kept = [r for _, _, r in keep]
+        name = f"snapshots/contacts_{k:06d}.vtp"
+        with open(os.path.join(out, name), "w") as f:
+            f.write(polydata(ends.reshape(-1, 2), 2, [], [
+                ("normal_force", 1, p["c_talus_pair_forces[2]"][rows_kept]),
+                ("overlap", 1, p["c_talus_pair_forces[3]"][rows_kept]),
+                ("particle", 1, [a - 1 for a, _, _ in keep]),
+                ("partner", 1, [b - 1 for _, b, _ in keep])]))
+        contacts_pvd.append((step * dt, name))
+    with open(os.path.join(out, "particles.pvd"), "w") as f:
+        f.write(pvd(particles_pvd))
+    with open(os.path.join(out, "contacts.pvd"), "w") as f:
+        f.write(pvd(contacts_pvd))
+    return out
