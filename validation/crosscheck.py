@@ -44,7 +44,7 @@ import tomllib
 import numpy as np
 
 from measures import block_mean, measure
-from run_folder import add_analysis_dumps, lammps_run_folder
+from run_folder import add_analysis_dumps, dump_blocks, lammps_run_folder
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
@@ -78,20 +78,9 @@ def read_track(path):
 def read_dump(path, dt):
     """The same from a LAMMPS dump of `id type radius mass x y vx vy omegaz`, keyed by time."""
     frames = {}
-    with open(path) as f:
-        lines = f.read().splitlines()
-    k = 0
-    while k < len(lines):
-        step, count = int(lines[k + 1]), int(lines[k + 3])
-        columns = lines[k + 8].split()[2:]
-        at = {c: i for i, c in enumerate(columns)}
-        atoms = {}
-        for line in lines[k + 9:k + 9 + count]:
-            v = line.split()
-            atoms[int(v[at["id"]])] = tuple(float(v[at[c]]) for c in ("x", "y", "vx", "vy",
-                                                                      "omegaz"))
-        frames[step * dt] = atoms
-        k += 9 + count
+    for step, columns, rows in dump_blocks(path):
+        at = [columns.index(c) for c in ("id", "x", "y", "vx", "vy", "omegaz")]
+        frames[step * dt] = {int(r[at[0]]): tuple(float(r[k]) for k in at[1:]) for r in rows}
     return frames
 
 
