@@ -215,6 +215,7 @@ private:
     if (!book_.tracked.empty() && k % track_every_ != 0) record_track();
     // (a snapshot less than half an interval before the end stands for it: no near-twin frames)
     if (snapshot_every_ && k % snapshot_every_ >= (snapshot_every_ + 1) / 2) {
+      end_snapshot_step_ = k;
       write_snapshot();
       if (out_.is_open()) out_ << thesis_out_block(sim_);
     }
@@ -351,11 +352,12 @@ private:
   }
 
   void write_collections() {
-    // times of snapshot k: k * interval (snapshot 0 at t = 0)
+    // times of snapshot k: k * interval (snapshot 0 at t = 0), but for the end's, off the grid
     std::vector<std::pair<double, std::string>> particles, walls, contacts;
     const double dt = sim_.config().timestep;
     for (std::uint64_t k = 0; k < book_.snapshots; ++k) {
-      const double t = static_cast<double>(k * snapshot_every_) * dt;
+      const bool end = end_snapshot_step_ && k + 1 == book_.snapshots;
+      const double t = static_cast<double>(end ? end_snapshot_step_ : k * snapshot_every_) * dt;
       particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
       walls.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
       contacts.emplace_back(t, fmt::format("snapshots/contacts_{:06d}.vtp", k));
@@ -439,6 +441,7 @@ private:
         fs::remove(entry.path(), ignored);
     }
     book_.snapshots = checkpointed_snapshots_;
+    end_snapshot_step_ = 0; // an end snapshot, if written, was after the checkpoint
     try { // the collections and run.json need a little room too; the checkpoint is what counts
       write_collections();
       write_run_json(book_.wall_seconds, 0, "write_error");
@@ -515,6 +518,7 @@ private:
   RunOptions o_;
   std::uint64_t total_ = 0, stop_ = 0;
   std::uint64_t thermo_every_ = 1, snapshot_every_ = 0, track_every_ = 1, checkpoint_every_ = 0;
+  std::uint64_t end_snapshot_step_ = 0; ///< the step of the end's snapshot, if it has one
   std::ofstream thermo_, track_, out_, frost_, events_;
   std::optional<FrostFront> front_;
   std::optional<ContactEventLog> contact_log_;

@@ -7,6 +7,7 @@
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "io/track_csv.hpp"
+#include "io/vtp_reader.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
@@ -176,6 +177,13 @@ TEST(RunOutputs, EveryGrainTrackedExactlyAndTheEndIsASnapshot) {
   // snapshots at 0 and 0.08 s, and the end at 0.15 s
   EXPECT_TRUE(fs::exists(dir / "snapshots/particles_000002.vtp"));
   EXPECT_FALSE(fs::exists(dir / "snapshots/particles_000003.vtp"));
+  // the collection gives each its own time: the end's is the last track point's (the pvd's 9
+  // digits), not two intervals' 0.16 s
+  const auto entries = read_pvd((dir / "particles.pvd").string());
+  ASSERT_EQ(entries.size(), 3u);
+  EXPECT_NEAR(entries[1].first, 0.08, 1e-3);
+  EXPECT_NEAR(entries[2].first, tracks.at(0).back().time, 1e-8 * entries[2].first);
+  EXPECT_NEAR(entries[2].first, 0.15, 1e-3);
 }
 
 TEST(RunFolder, NothingIsWrittenWhenTheScenarioIsBad) {
