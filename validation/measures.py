@@ -12,6 +12,7 @@ A case's tolerances.toml lists them as [[measures]] tables:
   region (a static packing's snapshots are not independent; its strips nearly are).
 """
 import csv
+import functools
 import json
 import os
 import subprocess
@@ -45,6 +46,25 @@ def disk_area_in_box(cx, cy, r, x0, y0, x1, y1, samples=1024):
     return inside.sum(axis=1) * (2.0 * r / samples)
 
 
+def in_window(t, window):
+    return window[0] - 1e-9 <= t <= window[1] + 1e-9
+
+
+def strip_mean(per_strip, where):
+    """The mean over the strips of the rows' average (one row of strips per snapshot), and its
+    standard error over the strips."""
+    if not per_strip:
+        raise ValueError(f"{where}: no snapshot in the window")
+    v = np.mean(per_strip, axis=0)
+    return float(v.mean()), float(v.std(ddof=1) / np.sqrt(len(v)))
+
+
+@functools.lru_cache(maxsize=8)
+def frames_of(folder):
+    """A run folder's frames, read once however many measures look at them."""
+    return read_frames(folder)
+
+
 def packing_fraction(frames, region, strips, window):
     """The free grains' area fraction in `region`, per strip, averaged over the frames in
     `window`: the mean over the strips and its standard error."""
@@ -52,16 +72,13 @@ def packing_fraction(frames, region, strips, window):
     edges = np.linspace(x0, x1, strips + 1)
     per_strip = []
     for t, f in frames:
-        if not window[0] - 1e-9 <= t <= window[1] + 1e-9:
+        if not in_window(t, window):
             continue
         free = f["kind"] == 0
         cx, cy, r = f["x"][free], f["y"][free], f["radius"][free]
         per_strip.append([disk_area_in_box(cx, cy, r, a, y0, b, y1).sum() / ((b - a) * (y1 - y0))
                           for a, b in zip(edges[:-1], edges[1:])])
-    if not per_strip:
-        raise ValueError(f"no snapshot in the window {window}")
-    phi = np.mean(per_strip, axis=0)
-    return float(phi.mean()), float(phi.std(ddof=1) / np.sqrt(strips))
+    return strip_mean(per_strip, f"packing fraction over {window} s")
 
 
 def coordination(folder, region, strips, window):
@@ -71,9 +88,9 @@ def coordination(folder, region, strips, window):
     x0, y0, x1, y1 = region
     edges = np.linspace(x0, x1, strips + 1)
     per_strip = []
-    for (t, f), (_, name) in zip(read_frames(folder),
+    for (t, f), (_, name) in zip(frames_of(folder),
                                  pvd_entries(os.path.join(folder, "contacts.pvd"))):
-        if not window[0] - 1e-9 <= t <= window[1] + 1e-9:
+        if not in_window(t, window):
             continue
         path = os.path.join(folder, name)
         with open(path) as c:
@@ -87,10 +104,7 @@ def coordination(folder, region, strips, window):
         inside = (f["kind"] == 0) & (f["y"] >= y0) & (f["y"] <= y1)
         per_strip.append([z[inside & (f["x"] >= a) & (f["x"] < b)].mean()
                           for a, b in zip(edges[:-1], edges[1:])])
-    if not per_strip:
-        raise ValueError(f"{folder}: no snapshot in the window {window}")
-    z = np.mean(per_strip, axis=0)
-    return float(z.mean()), float(z.std(ddof=1) / np.sqrt(strips))
+    return strip_mean(per_strip, f"{folder}: coordination over {window} s")
 
 
 def analyze(talus, folder, analysis, options):
@@ -119,7 +133,7 @@ def measure(spec, folder, talus):
     """(value, standard error) of one [[measures]] table in one run folder."""
     if "packing" in spec:
         p = spec["packing"]
-        return packing_fraction(read_frames(folder), p["region"], p["strips"], spec["window"])
+        return packing_fraction(frames_of(folder), p["region"], p["strips"], spec["window"])
     if "coordination" in spec:
         p = spec["coordination"]
         return coordination(folder, p["region"], p["strips"], spec["window"])
