@@ -13,40 +13,15 @@
 #include "state/particles.hpp"
 #include "state/walls.hpp"
 #include "talus/contact_force.hpp"
+#include "talus/segment_contact.hpp"
 
 namespace talus {
 
-struct WallHit {
-  Vec2 point;     // nearest point of the segment
-  double u = 0.0; // position along the segment, 0 at a, 1 at b
-  bool touching = false;
-  bool vertex() const { return u <= 0.0 || u >= 1.0; }
-};
+// The wall geometry is src/talus/segment_contact.hpp's, shared with the LAMMPS package.
+using WallHit = SegmentHit;
 
 inline WallHit wall_hit(const Segment& s, Vec2 p, double radius) {
-  WallHit h;
-  const Vec2 ab = s.b - s.a;
-  const double l2 = norm2(ab);
-  h.u = l2 > 0.0 ? dot(p - s.a, ab) / l2 : 0.0;
-  h.point = h.u <= 0.0 ? s.a : (h.u >= 1.0 ? s.b : s.a + h.u * ab);
-  const double d2 = norm2(p - h.point);
-  h.touching = d2 < radius * radius && d2 > 0.0;
-  return h;
-}
-
-// A particle touching the shared end point of two segments touches that point only once: an end
-// point contact is dropped when a segment sharing that end point is touched along its face, or
-// when an earlier segment of the particle's list already touches the same end point.
-inline bool duplicate_vertex(const std::vector<WallHit>& hits, const std::uint32_t* segment,
-                             const Segments& walls, std::size_t k) {
-  const Vec2 v = hits[k].point;
-  for (std::size_t m = 0; m < hits.size(); ++m) {
-    if (m == k || !hits[m].touching) continue;
-    const Segment& o = walls[segment[m]];
-    if (o.a != v && o.b != v) continue;
-    if (!hits[m].vertex() || m < k) return true;
-  }
-  return false;
+  return segment_hit(s.a.x, s.a.y, s.b.x, s.b.y, p.x, p.y, radius);
 }
 
 // Calls touching(e, segment, geometry) for each entry e of particle i's wall row whose segment i
@@ -65,16 +40,19 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
     hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
   for (std::uint32_t e = w0; e < w1; ++e) {
     const WallHit& h = hits[e - w0];
-    if (!h.touching ||
-        (h.vertex() && duplicate_vertex(hits, &list.wall_segment[w0], walls, e - w0))) {
+    const auto shares = [&](std::size_t m, double x, double y) {
+      const Segment& o = walls[list.wall_segment[w0 + m]];
+      return (o.a.x == x && o.a.y == y) || (o.b.x == x && o.b.y == y);
+    };
+    if (!h.touching || (h.vertex() && duplicate_vertex(hits, hits.size(), e - w0, shares))) {
       apart(e);
       continue;
     }
     const Segment& s = walls[list.wall_segment[e]];
-    const Vec2 d = ri - h.point;
+    const Vec2 d = ri - Vec2{h.x, h.y};
     touching(e, s,
              wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i], p.angular_velocity[i],
-                           s.velocity_at(h.point), share));
+                           s.velocity_at(Vec2{h.x, h.y}), share));
   }
 }
 
