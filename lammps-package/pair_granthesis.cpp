@@ -12,6 +12,10 @@
 #include "error.h"
 #include "force.h"
 #include "host_api.hpp"
+#ifndef TALUS_HOST_LIGGGHTS
+#include "fix_contact_history.h"
+#include "modify.h"
+#endif
 #include "memory.h"
 #include "neigh_list.h"
 #include "pair_coefficients.hpp"
@@ -25,6 +29,7 @@ namespace talus::lammps {
 namespace {
 
 constexpr const char* style_name = "pair granthesis";
+constexpr const char* history_fix_id = "GRANTHESIS_HISTORY";
 
 } // namespace
 
@@ -41,6 +46,9 @@ PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
 
 PairGranthesis::~PairGranthesis() {
   svector = nullptr; // ours, not allocated by Pair
+#ifndef TALUS_HOST_LIGGGHTS
+  if (history_ && modify->find_fix(history_fix_id) >= 0) modify->delete_fix(history_fix_id);
+#endif
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -68,29 +76,45 @@ const PairParameters& PairGranthesis::parameters(int i, int j) const {
   return pair_[slot(i, j)];
 }
 
-// pair_style granthesis NORMAL TANGENTIAL [impact_speed V]
+// pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]
 void PairGranthesis::settings(int narg, char** arg) {
+#ifdef TALUS_HOST_LIGGGHTS
+  const std::string tangential_names = history_free_tangential_names();
+#else
+  const std::string tangential_names = law_names<TangentialLaw>();
+#endif
   const std::string usage =
-      "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V]; NORMAL: " +
-      law_names<NormalLaw>() + "; TANGENTIAL: " + history_free_tangential_names() +
+      "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]; "
+      "NORMAL: " +
+      law_names<NormalLaw>() + "; TANGENTIAL: " + tangential_names +
       "; V: the impact speed (m/s, > 0, default 1) at which a Hertz damping left to be derived "
-      "(hertz_damping -1) reaches the restitution";
-  if (narg != 2 && narg != 4) fail(usage);
+      "(hertz_damping -1) reaches the restitution; K: the contacts an atom may have at once with "
+      "a law that keeps a spring (1 to 1000, default 16)";
+  if (narg < 2 || narg % 2 != 0) fail(usage);
   try {
     normal_ = parse_normal_law(arg[0]);
     tangential_ = parse_tangential_law(arg[1]);
   } catch (const InvalidArgument& e) {
     fail(std::string(e.what()) + " (" + usage + ")");
   }
+#ifdef TALUS_HOST_LIGGGHTS
   if (keeps_history(tangential_))
     fail("tangential law '" + std::string(arg[1]) +
-         "' keeps a contact history, which this pair style does not yet store; allowed: " +
+         "' keeps a contact history, which this pair style stores in LAMMPS only; allowed in "
+         "LIGGGHTS: " +
          history_free_tangential_names());
+#endif
   impact_speed_ = 1.0;
-  if (narg == 4) {
-    const std::optional<double> v = finite_number(arg[3]);
-    if (std::string(arg[2]) != "impact_speed" || !v || !(*v > 0.0)) fail(usage);
-    impact_speed_ = *v;
+  history_slots_ = 16;
+  for (int k = 2; k < narg; k += 2) {
+    const std::string key = arg[k];
+    const std::optional<double> v = finite_number(arg[k + 1]);
+    if (key == "impact_speed" && v && *v > 0.0)
+      impact_speed_ = *v;
+    else if (key == "history_slots" && v && *v >= 1.0 && *v <= 1000.0 && *v == int(*v))
+      history_slots_ = static_cast<int>(*v);
+    else
+      fail(key + " = " + arg[k + 1] + " (" + usage + ")");
   }
 }
 
@@ -147,10 +171,30 @@ void PairGranthesis::init_style() {
              ": in 3d the contacts must lie in the x-y plane (spheres moving in a plane); a "
              "contact out of it stops the run",
          __FILE__, __LINE__);
+  if (keeps_history(tangential_)) init_history();
   double local = 0.0;
   for (int i = 0; i < atom->nlocal; ++i) local = std::max(local, atom->radius[i]);
   MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
   Pair::init_style(); // the default half list: j > i within the cutoff plus the skin
+}
+
+// A law with a spring keeps it per contact in fix granthesis/history. Each rank computes a
+// contact with a ghost atom itself (newton_pair off) and keeps the spring of its own atom, so
+// that no spring needs to be sent back to the rank that owns the ghost.
+void PairGranthesis::init_history() {
+#ifdef TALUS_HOST_LIGGGHTS
+  fail("a law with a contact history is not available in LIGGGHTS");
+#else
+  if (force->newton_pair)
+    fail("tangential law '" + std::string(name_of(tangential_)) +
+         "' keeps a spring per contact, which needs newton_pair off (newton off, or newton on "
+         "off), so that each rank computes its own atoms' contacts");
+  if (modify->find_fix(history_fix_id) < 0)
+    modify->add_fix(std::string(history_fix_id) + " all granthesis/history slots " +
+                    std::to_string(history_slots_));
+  history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(history_fix_id)]);
+  if (!history_) fail(std::string("fix ") + history_fix_id + " is not granthesis/history");
+#endif
 }
 
 double PairGranthesis::init_one(int i, int j) {
@@ -189,6 +233,13 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const double dt = update->dt;
+  [[maybe_unused]] const LAMMPS_NS::tagint* tag = atom->tag;
+  // in the setup before a run the forces are computed again at the same state: the springs
+  // keep their values (they advance once per step)
+  [[maybe_unused]] const bool advance = update->setupflag == 0;
+#ifndef TALUS_HOST_LIGGGHTS
+  if constexpr (T::has_history) history_->begin_pass();
+#endif
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int* neighbours = list->firstneigh[i];
@@ -205,8 +256,23 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
           dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0], v[i][1],
           v[j][0], v[j][1], omega[i][2], omega[j][2], N::uses_r_eff || T::uses_r_eff);
       const PairParameters& p = parameters(type[i], type[j]);
-      double history = 0.0; // the allowed tangential laws keep none
+      double history = 0.0; // the spring: 0 for a law without one
+#ifndef TALUS_HOST_LIGGGHTS
+      double* kept = nullptr;
+      if constexpr (T::has_history) {
+        kept = &history_->spring(i, tag[j]);
+        history = *kept;
+        if (j < nlocal) history_->spring(j, tag[i]); // one contact, seen from j: kept too
+      }
+#endif
       const ContactForce c = contact_force<N, T>(p, g, history, dt);
+#ifndef TALUS_HOST_LIGGGHTS
+      if constexpr (T::has_history)
+        if (advance) {
+          *kept = history;
+          if (j < nlocal) history_->spring(j, tag[i]) = history;
+        }
+#endif
       f[i][0] += c.force_x;
       f[i][1] += c.force_y;
       torque[i][2] += c.torque_i;
@@ -221,6 +287,9 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
                      c.force_y, 0.0, dx, dy, dz);
     }
   }
+#ifndef TALUS_HOST_LIGGGHTS
+  if constexpr (T::has_history) history_->end_pass(nlocal);
+#endif
 }
 
 void PairGranthesis::out_of_plane(int i, int j, double dz) const {
@@ -246,7 +315,10 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
       dx, dy, std::sqrt(dist2), atom->radius[i], atom->radius[j], atom->rmass[i], atom->rmass[j],
       v[i][0], v[i][1], v[j][0], v[j][1], atom->omega[i][2], atom->omega[j][2]);
   const PairParameters& p = parameters(itype, jtype);
-  double history = 0.0;
+  double history = 0.0; // the spring as it stands (single changes nothing)
+#ifndef TALUS_HOST_LIGGGHTS
+  if (history_ && keeps_history(tangential_)) history = history_->peek(i, atom->tag[j]);
+#endif
   return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
     const ContactForce c = contact_force<N, T>(p, g, history, update->dt);
     fforce = c.normal_force / std::sqrt(rsq);

@@ -21,6 +21,8 @@ PairStyle(granthesis, talus::lammps::PairGranthesis);
 
 namespace talus::lammps {
 
+class FixContactHistory;
+
 class PairGranthesis : public LAMMPS_NS::Pair {
 public:
   explicit PairGranthesis(LAMMPS_NS::LAMMPS* instance);
@@ -54,10 +56,21 @@ public:
   TangentialLaw tangential_law() const {
     return tangential_;
   }
+  double impact_speed() const {
+    return impact_speed_;
+  }
+  /// The material pair_coeff I I gave type i (1-based).
+  const Material& material(int i) const {
+    return material_[static_cast<std::size_t>(i)];
+  }
+  int history_slots() const {
+    return history_slots_;
+  }
 
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
   void allocate();
+  void init_history(); ///< makes or finds the springs' fix, for a law that keeps them
   /// The index of type pair (i, j) in pair_ and explicit_pair_.
   std::size_t slot(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
@@ -72,6 +85,8 @@ private:
   NormalLaw normal_ = law_id<HertzViscoelastic>;
   TangentialLaw tangential_ = law_id<ViscousCoulomb>;
   double impact_speed_ = 1.0; ///< m/s: where a derived Hertz damping reaches the restitution
+  int history_slots_ = 16;    ///< contacts with a spring an atom may have at once
+  FixContactHistory* history_ = nullptr; ///< the springs, for a law that keeps them
   int ntypes_ = 0;
   std::vector<Material> material_;   ///< per type, 1-based
   std::vector<PairParameters> pair_; ///< (ntypes + 1)^2: mixed or given per pair

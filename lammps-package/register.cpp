@@ -5,7 +5,9 @@
 #include "modify.h"
 #include "pair_granthesis.h"
 #ifndef TALUS_HOST_LIGGGHTS
+#include "fix_contact_history.h"
 #include "fix_frost_heave.h"
+#include "fix_segment_walls.h"
 #endif
 
 namespace {
@@ -18,6 +20,12 @@ LAMMPS_NS::Pair* create_pair_granthesis(LAMMPS_NS::LAMMPS* lmp) {
 LAMMPS_NS::Fix* create_fix_frost_heave(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
   return new talus::lammps::FixFrostHeave(lmp, narg, arg);
 }
+LAMMPS_NS::Fix* create_fix_contact_history(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new talus::lammps::FixContactHistory(lmp, narg, arg);
+}
+LAMMPS_NS::Fix* create_fix_segment_walls(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new talus::lammps::FixSegmentWalls(lmp, narg, arg);
+}
 #endif
 
 } // namespace
@@ -27,5 +35,7 @@ extern "C" void talus_lammps_register(void* lmp) {
   (*instance->force->pair_map)["granthesis"] = &create_pair_granthesis;
 #ifndef TALUS_HOST_LIGGGHTS // the LIGGGHTS adapter carries the pair style only
   (*instance->modify->fix_map)["frost/heave"] = &create_fix_frost_heave;
+  (*instance->modify->fix_map)["granthesis/history"] = &create_fix_contact_history;
+  (*instance->modify->fix_map)["granthesis/wall"] = &create_fix_segment_walls;
 #endif
 }

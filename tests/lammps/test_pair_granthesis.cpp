@@ -29,7 +29,11 @@ void expect_error(const std::vector<std::string>& lines, const std::string& expe
 TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
   expect_error({"pair_style granthesis"}, "NORMAL: linear, hertz");
   expect_error({"pair_style granthesis hooke coulomb"}, "unknown normal law 'hooke'");
-  expect_error({"pair_style granthesis linear cundall_strack"}, "allowed: coulomb, none");
+  expect_error({"pair_style granthesis linear stick"}, "allowed: coulomb, cundall_strack");
+  expect_error({"pair_style granthesis linear cundall_strack", "pair_coeff * *", "run 0"},
+               "needs newton_pair off (newton off");
+  expect_error({"pair_style granthesis linear coulomb history_slots 0"},
+               "K: the contacts an atom may have at once");
   expect_error({"pair_style granthesis linear coulomb", "pair_coeff 1 1 stiffness 1e5"},
                "unknown key 'stiffness'; allowed: young, poisson");
   expect_error({"pair_style granthesis linear coulomb", "pair_coeff 1 1 friction -0.1"},
@@ -43,11 +47,34 @@ TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
   expect_error({"pair_style granthesis linear coulomb", "pair_coeff 1 1", "run 0"},
                "no pair_coeff for type 2");
   expect_error({"pair_style granthesis hertz coulomb impact_speed -1"},
-               "impact_speed V]; NORMAL: linear, hertz");
+               "impact_speed = -1 (usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] "
+               "[history_slots K]; NORMAL: linear, hertz");
   expect_error({"pair_style granthesis hertz coulomb speed 1"}, "V: the impact speed (m/s, > 0");
   expect_error(
       {"comm_modify vel no", "pair_style granthesis linear coulomb", "pair_coeff * *", "run 0"},
       "comm_modify vel yes");
+}
+
+TEST(FixSegmentWalls, BadInputNamesTheSettingAndTheAllowedValues) {
+  const std::string pair = "pair_style granthesis linear coulomb";
+  expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall"}, "no segment given");
+  expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall segment 0 0 1"},
+               "BY is missing");
+  expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall segment 0 0 1 0"},
+               "'type T' must follow its end points");
+  expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall segment 0 0 1 nan type 1"},
+               "BY = nan; allowed: a finite number");
+  expect_error(
+      {pair, "pair_coeff * *", "fix w all granthesis/wall segment 0 0 1 0 type 3", "run 0"},
+      "type 3 does not exist; allowed: 1 to 2");
+  expect_error({pair, "pair_coeff * *",
+                "fix w all granthesis/wall segment 0 0 1 0 type 1 velocity 1 0 rotate 0 0 1"},
+               "both translates and turns");
+  expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall wall 0 0 1 0"},
+               "unknown keyword 'wall'; allowed: segment, velocity, rotate");
+  expect_error({"pair_style zero 0.01", "pair_coeff * *",
+                "fix w all granthesis/wall segment 0 0 1 0 type 1", "run 0"},
+               "needs pair_style granthesis");
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // Two disks in the host (LAMMPS, or LIGGGHTS with TALUS_HOST_LIGGGHTS) and in the native engine:
 // what the pair style's tests against the native engine and the closed forms share.
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <numbers>
 #include <string>
@@ -57,9 +58,10 @@ inline void set_up(LammpsInstance& l, const std::string& laws, const Material& m
 }
 
 // The same disks in the native engine: the forces its first force stage computes.
-inline Simulation native(const std::string& normal, const std::string& tangential,
-                         const Material& m, const std::vector<Disk>& disks, double dt,
-                         VerletVelocity velocity = VerletVelocity::predicted) {
+inline Simulation native(
+    const std::string& normal, const std::string& tangential, const Material& m,
+    const std::vector<Disk>& disks, double dt, VerletVelocity velocity = VerletVelocity::predicted,
+    const std::function<void(World&)>& more = [](World&) {}) {
   World w;
   w.materials = {m};
   for (const Disk& d : disks)
@@ -68,6 +70,7 @@ inline Simulation native(const std::string& normal, const std::string& tangentia
                     .velocity = d.velocity,
                     .angular_velocity = d.spin,
                     .mass = d.mass});
+  more(w);
   SimulationConfig c;
   c.timestep = dt;
   c.integrator = Integrator::verlet;

@@ -1,0 +1,126 @@
+#include "fix_contact_history.h"
+
+#include <algorithm>
+#include <string>
+
+#include "atom.h"
+#include "error.h"
+#include "host_api.hpp"
+#include "pair_coefficients.hpp"
+
+namespace talus::lammps {
+
+namespace {
+
+constexpr const char* style_name = "fix granthesis/history";
+
+} // namespace
+
+FixContactHistory::FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
+    : Fix(instance, narg, arg) {
+  if (narg != 3 && narg != 5)
+    fail("usage: fix ID GROUP granthesis/history [slots K] (pair_style granthesis and fix "
+         "granthesis/wall make it themselves)");
+  if (narg == 5) {
+    const std::optional<double> k = finite_number(arg[4]);
+    if (std::string(arg[3]) != "slots" || !k || *k < 1.0 || *k > 1000.0 || *k != int(*k))
+      fail(std::string("slots = ") + arg[4] + "; allowed: a whole number from 1 to 1000");
+    slots_ = static_cast<int>(*k);
+  }
+  create_attribute = 1;
+  maxexchange = 1 + 2 * slots_;
+  grow_arrays(atom->nmax);
+  atom->add_callback(LAMMPS_NS::Atom::GROW);
+  std::fill(count_.begin(), count_.end(), 0);
+}
+
+FixContactHistory::~FixContactHistory() {
+  atom->delete_callback(id, LAMMPS_NS::Atom::GROW);
+}
+
+void FixContactHistory::fail(const std::string& message) const {
+  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+}
+
+int FixContactHistory::setmask() {
+  return 0; // nothing to do at any stage of a step: the owners call begin_pass and end_pass
+}
+
+void FixContactHistory::grow_arrays(int nmax) {
+  const auto n = static_cast<std::size_t>(std::max(nmax, 1));
+  count_.resize(n, 0);
+  slot_.resize(n * static_cast<std::size_t>(slots_));
+}
+
+void FixContactHistory::copy_arrays(int i, int j, int /*delflag*/) {
+  const auto k = static_cast<std::size_t>(slots_);
+  count_[static_cast<std::size_t>(j)] = count_[static_cast<std::size_t>(i)];
+  std::copy_n(slot_.begin() + static_cast<std::ptrdiff_t>(k * static_cast<std::size_t>(i)),
+              count_[static_cast<std::size_t>(i)],
+              slot_.begin() + static_cast<std::ptrdiff_t>(k * static_cast<std::size_t>(j)));
+}
+
+void FixContactHistory::set_arrays(int i) {
+  count_[static_cast<std::size_t>(i)] = 0;
+}
+
+// count, then (partner, spring) per contact; the partner as an integer in a double's bits
+int FixContactHistory::pack_exchange(int i, double* buffer) {
+  const int n = count_[static_cast<std::size_t>(i)];
+  const Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(i)];
+  buffer[0] = n;
+  for (int k = 0; k < n; ++k) {
+    buffer[1 + 2 * k] = LAMMPS_NS::ubuf(static_cast<int64_t>(s[k].partner)).d;
+    buffer[2 + 2 * k] = s[k].spring;
+  }
+  return 1 + 2 * n;
+}
+
+int FixContactHistory::unpack_exchange(int nlocal, double* buffer) {
+  const int n = static_cast<int>(buffer[0]);
+  count_[static_cast<std::size_t>(nlocal)] = n;
+  Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(nlocal)];
+  for (int k = 0; k < n; ++k)
+    s[k] = {static_cast<LAMMPS_NS::tagint>(LAMMPS_NS::ubuf(buffer[1 + 2 * k]).i), buffer[2 + 2 * k],
+            pass_};
+  return 1 + 2 * n;
+}
+
+double FixContactHistory::memory_usage() {
+  return static_cast<double>(count_.capacity() * sizeof(int) + slot_.capacity() * sizeof(Slot));
+}
+
+void FixContactHistory::end_pass(int nlocal) {
+  const auto k = static_cast<std::size_t>(slots_);
+  for (int i = 0; i < nlocal; ++i) {
+    Slot* s = &slot_[k * static_cast<std::size_t>(i)];
+    int& n = count_[static_cast<std::size_t>(i)];
+    n = static_cast<int>(std::remove_if(s, s + n, [&](const Slot& x) { return x.pass != pass_; }) -
+                         s);
+  }
+}
+
+double& FixContactHistory::spring(int i, LAMMPS_NS::tagint partner) {
+  Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(i)];
+  int& n = count_[static_cast<std::size_t>(i)];
+  for (int k = 0; k < n; ++k)
+    if (s[k].partner == partner) {
+      s[k].pass = pass_;
+      return s[k].spring;
+    }
+  if (n == slots_)
+    fail("atom " + std::to_string(atom->tag[i]) + " touches more than " + std::to_string(slots_) +
+         " others at once; give the pair style more: pair_style granthesis NORMAL TANGENTIAL "
+         "history_slots K");
+  s[n] = {partner, 0.0, pass_};
+  return s[n++].spring;
+}
+
+double FixContactHistory::peek(int i, LAMMPS_NS::tagint partner) const {
+  const Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(i)];
+  for (int k = 0; k < count_[static_cast<std::size_t>(i)]; ++k)
+    if (s[k].partner == partner) return s[k].spring;
+  return 0.0;
+}
+
+} // namespace talus::lammps

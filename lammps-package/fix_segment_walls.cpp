@@ -1,0 +1,229 @@
+#include "fix_segment_walls.h"
+
+#include <cmath>
+#include <string>
+
+#include <mpi.h>
+
+#include "atom.h"
+#include "error.h"
+#include "fix_contact_history.h"
+#include "force.h"
+#include "host_api.hpp"
+#include "modify.h"
+#include "pair_coefficients.hpp"
+#include "pair_granthesis.h"
+#include "talus/contact_force.hpp"
+#include "update.h"
+
+namespace talus::lammps {
+
+namespace {
+
+constexpr const char* style_name = "fix granthesis/wall";
+constexpr const char* usage =
+    "usage: fix ID GROUP granthesis/wall segment AX AY BX BY type T [velocity VX VY | rotate CX "
+    "CY OMEGA] [segment ...]";
+
+} // namespace
+
+FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
+    : Fix(instance, narg, arg) {
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extscalar = 1;
+  extvector = 1;
+  energy_global_flag = 1; // fix_modify ID energy yes: the walls' elastic energy joins pe
+  const auto number = [&](int k, const char* what) {
+    if (k >= narg) fail(std::string(what) + " is missing (" + usage + ")");
+    const std::optional<double> x = finite_number(arg[k]);
+    if (!x) fail(std::string(what) + " = " + arg[k] + "; allowed: a finite number");
+    return *x;
+  };
+  for (int k = 3; k < narg;) {
+    const std::string key = arg[k];
+    if (key == "segment") {
+      Wall w{number(k + 1, "AX"), number(k + 2, "AY"), number(k + 3, "BX"), number(k + 4, "BY"), 0};
+      if (k + 5 >= narg || std::string(arg[k + 5]) != "type")
+        fail("segment " + std::to_string(walls_.size() + 1) +
+             ": 'type T' must follow its end "
+             "points (" +
+             usage + ")");
+      const double t = number(k + 6, "T");
+      if (t < 1.0 || t != std::floor(t))
+        fail("type = " + std::string(arg[k + 6]) + "; allowed: an atom type, 1 or more");
+      w.type = static_cast<int>(t);
+      walls_.push_back(w);
+      k += 7;
+    } else if (key == "velocity" || key == "rotate") {
+      if (walls_.empty()) fail(key + " before any segment (" + usage + ")");
+      Wall& w = walls_.back();
+      if (key == "velocity") {
+        w.vx = number(k + 1, "VX"), w.vy = number(k + 2, "VY");
+        k += 3;
+      } else {
+        w.cx = number(k + 1, "CX"), w.cy = number(k + 2, "CY"), w.omega = number(k + 3, "OMEGA");
+        k += 4;
+      }
+      if (w.omega != 0.0 && (w.vx != 0.0 || w.vy != 0.0))
+        fail("segment " + std::to_string(walls_.size()) +
+             " both translates and turns; allowed: one motion per segment");
+    } else {
+      fail("unknown keyword '" + key + "'; allowed: segment, velocity, rotate (" + usage + ")");
+    }
+  }
+  if (walls_.empty()) fail(std::string("no segment given (") + usage + ")");
+  placed_.resize(walls_.size());
+  hits_.resize(walls_.size());
+  start_ = now();
+  place(0.0);
+}
+
+FixSegmentWalls::~FixSegmentWalls() {
+  if (history_ && modify->find_fix(history_id_) >= 0) modify->delete_fix(history_id_);
+}
+
+void FixSegmentWalls::fail(const std::string& message) const {
+  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+}
+
+int FixSegmentWalls::setmask() {
+  return LAMMPS_NS::FixConst::POST_FORCE;
+}
+
+double FixSegmentWalls::now() const {
+  return update->atime + static_cast<double>(update->ntimestep - update->atimestep) * update->dt;
+}
+
+void FixSegmentWalls::init() {
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    fail("needs per-atom radius, mass, angular velocity and torque: atom_style sphere");
+  pair_ = dynamic_cast<PairGranthesis*>(force->pair_match("granthesis", 1));
+  if (!pair_)
+    fail("needs pair_style granthesis: the walls take its laws and the materials of its types");
+  for (std::size_t s = 0; s < walls_.size(); ++s)
+    if (walls_[s].type > atom->ntypes)
+      fail("segment " + std::to_string(s + 1) + ": type " + std::to_string(walls_[s].type) +
+           " does not exist; allowed: 1 to " + std::to_string(atom->ntypes));
+  history_ = nullptr;
+  if (!keeps_history(pair_->tangential_law())) return;
+  // the springs of the wall contacts, per atom and segment (numbered from 1)
+  history_id_ = std::string(id) + "_HISTORY";
+  if (modify->find_fix(history_id_) < 0)
+    modify->add_fix(history_id_ + " all granthesis/history slots " +
+                    std::to_string(pair_->history_slots()));
+  history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(history_id_)]);
+  if (!history_) fail("fix " + history_id_ + " is not granthesis/history");
+}
+
+void FixSegmentWalls::setup(int vflag) {
+  post_force(vflag);
+}
+
+// Where the walls are t seconds after the start: translated, or turned about their centre.
+void FixSegmentWalls::place(double t) {
+  for (std::size_t s = 0; s < walls_.size(); ++s) {
+    const Wall& w = walls_[s];
+    Placed& p = placed_[s];
+    if (w.omega == 0.0) {
+      p = {w.ax + w.vx * t, w.ay + w.vy * t, w.bx + w.vx * t, w.by + w.vy * t};
+      continue;
+    }
+    const double c = std::cos(w.omega * t), sn = std::sin(w.omega * t);
+    const auto turn = [&](double x, double y, double& ox, double& oy) {
+      ox = w.cx + c * (x - w.cx) - sn * (y - w.cy);
+      oy = w.cy + sn * (x - w.cx) + c * (y - w.cy);
+    };
+    turn(w.ax, w.ay, p.ax, p.ay);
+    turn(w.bx, w.by, p.bx, p.by);
+  }
+}
+
+void FixSegmentWalls::post_force(int /*vflag*/) {
+  place(now() - start_);
+  // in the setup before a run the forces are computed again at the same state: the springs and
+  // the work keep their values
+  const bool advance = update->setupflag == 0;
+  with_contact_law(pair_->normal_law(), pair_->tangential_law(),
+                   [&]<class N, class T>() { add_forces<N, T>(advance); });
+}
+
+template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const int* mask = atom->mask;
+  const int* type = atom->type;
+  const double dt = update->dt;
+  energy_ = 0.0;
+  force_[0] = force_[1] = 0.0;
+  double power = 0.0;
+  if constexpr (T::has_history) history_->begin_pass();
+  const std::size_t count = placed_.size();
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(mask[i] & groupbit)) continue;
+    const double r = atom->radius[i];
+    for (std::size_t s = 0; s < count; ++s) {
+      const Placed& w = placed_[s];
+      hits_[s] = segment_hit(w.ax, w.ay, w.bx, w.by, x[i][0], x[i][1], r);
+    }
+    const auto shares = [&](std::size_t m, double px, double py) {
+      const Placed& o = placed_[m];
+      return (o.ax == px && o.ay == py) || (o.bx == px && o.by == py);
+    };
+    for (std::size_t s = 0; s < count; ++s) {
+      const SegmentHit& h = hits_[s];
+      if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, s, shares))) continue;
+      const Wall& w = walls_[s];
+      // the wall's velocity at the contact: its translation, or its turn about the centre
+      const double wx = w.vx - w.omega * (h.y - w.cy), wy = w.vy + w.omega * (h.x - w.cx);
+      const double dx = x[i][0] - h.x, dy = x[i][1] - h.y;
+      const ContactGeometry g =
+          wall_geometry(dx, dy, std::sqrt(dx * dx + dy * dy), r, atom->rmass[i], v[i][0], v[i][1],
+                        omega[i][2], wx, wy);
+      const PairParameters& p = pair_->parameters(type[i], w.type);
+      double spring = 0.0;
+      double* kept = nullptr;
+      if constexpr (T::has_history) {
+        kept = &history_->spring(i, static_cast<LAMMPS_NS::tagint>(s + 1));
+        spring = *kept;
+      }
+      const ContactForce c = contact_force<N, T>(p, g, spring, dt);
+      if constexpr (T::has_history)
+        if (advance) *kept = spring;
+      f[i][0] += c.force_x;
+      f[i][1] += c.force_y;
+      torque[i][2] += c.torque_i;
+      force_[0] -= c.force_x;
+      force_[1] -= c.force_y;
+      power += c.force_x * wx + c.force_y * wy;
+      energy_ += contact_elastic_energy<N, T>(p, g, spring);
+    }
+  }
+  if constexpr (T::has_history) history_->end_pass(atom->nlocal);
+  if (advance) work_ += power * dt;
+}
+
+// The walls' elastic energy, over every rank's atoms (with fix_modify energy yes, part of pe).
+double FixSegmentWalls::compute_scalar() {
+  double total = 0.0;
+  MPI_Allreduce(&energy_, &total, 1, MPI_DOUBLE, MPI_SUM, world);
+  return total;
+}
+
+// 1: the work the walls have done on the atoms so far (J); 2, 3: the force of the atoms on the
+// walls in the last step (N).
+double FixSegmentWalls::compute_vector(int n) {
+  if (summed_step_ != update->ntimestep) {
+    const double local[3] = {work_, force_[0], force_[1]};
+    MPI_Allreduce(local, totals_, 3, MPI_DOUBLE, MPI_SUM, world);
+    summed_step_ = update->ntimestep;
+  }
+  return totals_[n];
+}
+
+} // namespace talus::lammps

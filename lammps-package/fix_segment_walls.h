@@ -1,0 +1,70 @@
+// fix granthesis/wall: straight wall segments, fixed, translating or turning, that act on the
+// group's atoms with pair_style granthesis' laws and its materials, evaluated by the same code as
+// the native engine's segment walls (src/talus: segment_contact.hpp for where a grain touches,
+// contact_force.hpp for the force). Syntax and conventions: lammps-package/README.md.
+// The style block lets the file drop into a LAMMPS source tree as a package (so no #pragma once).
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
+// clang-format on
+#else
+#ifndef TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#define TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#include <string>
+#include <vector>
+
+#include "fix.h"
+#include "talus/segment_contact.hpp"
+
+namespace talus::lammps {
+
+class FixContactHistory;
+class PairGranthesis;
+
+class FixSegmentWalls : public LAMMPS_NS::Fix {
+public:
+  FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** arg);
+  ~FixSegmentWalls() override;
+
+  int setmask() override;
+  void init() override;
+  void setup(int vflag) override;
+  void post_force(int vflag) override;
+  double compute_scalar() override;
+  double compute_vector(int n) override;
+
+private:
+  /// A segment as the deck gives it, at the fix's start, and its motion.
+  struct Wall {
+    double ax, ay, bx, by;     ///< end points at the start (m)
+    int type;                  ///< the atom type whose material (pair_coeff T T) the wall is of
+    double vx = 0.0, vy = 0.0; ///< translation (m/s)
+    double cx = 0.0, cy = 0.0, omega = 0.0; ///< rotation about (cx, cy) (rad/s)
+  };
+  /// A segment where it is now.
+  struct Placed {
+    double ax, ay, bx, by;
+  };
+  [[noreturn]] void fail(const std::string& message) const;
+  double now() const; ///< s: the simulation time
+  void place(double t);
+  template <class N, class T> void add_forces(bool advance);
+
+  std::vector<Wall> walls_;
+  std::vector<Placed> placed_;
+  std::vector<SegmentHit> hits_; ///< one atom's hits, scratch
+  double start_ = 0.0;           ///< s: the time at which the walls are where the deck puts them
+  PairGranthesis* pair_ = nullptr;
+  FixContactHistory* history_ = nullptr;
+  std::string history_id_;
+  double energy_ = 0.0;   ///< J: elastic energy in the wall contacts (this rank's atoms)
+  double work_ = 0.0;     ///< J: work the walls did on this rank's atoms so far
+  double force_[2] = {};  ///< N: force of this rank's atoms on the walls, last step
+  double totals_[4] = {}; ///< compute_vector's values, summed over ranks
+  LAMMPS_NS::bigint summed_step_ = -1;
+};
+
+} // namespace talus::lammps
+
+#endif // TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#endif // FIX_CLASS
