@@ -1,11 +1,13 @@
 #!/bin/bash
 # Writes the LAMMPS cases of the thesis' experiments into inputs/<experiment>/lammps/ with
 # `talus export lammps` (run from the repository root after building). Each case is its native
-# scenario with the changes LAMMPS' pair_style granthesis needs, and only those:
+# scenario in the thesis' own terms, as the cross-check's cases (validation/) were set up on
+# them; the native laws and segment walls export too (granthesis keeps springs, and fix
+# granthesis/wall is the segment walls), but these cases stay:
 # - the thesis' tangential law, the Coulomb-capped viscous friction (eq. 2.12), for the native
-#   scenarios' Cundall-Strack spring, which keeps a contact history granthesis does not store;
-#   its rate tangential_damping is about the normal dashpot's rate for a pair of mean grains;
-# - the thesis' particle walls for segment walls (no LAMMPS style has the native wall law);
+#   scenarios' Cundall-Strack spring; its rate tangential_damping is about the normal dashpot's
+#   rate for a pair of mean grains;
+# - the thesis' particle walls for segment walls;
 # - where particle walls take room: the hourglass holds 1780 grains, not 1859, and the frost box's
 #   stones sit a wall particle's radius higher.
 # The viscous friction holds no static pile: the hourglass' packing still creeps when its

@@ -31,19 +31,6 @@ std::string refused(const std::string& key, const std::string& why) {
 
 // What LAMMPS cannot express: the reason, with the key to change, or nothing.
 std::optional<std::string> refusal(const Scenario& s) {
-  if ((s.geometry.builder != "none" && s.geometry.walls == "segments") ||
-      !s.geometry.segments.empty())
-    return refused("geometry.walls",
-                   "segment walls: pair_style granthesis acts between particles, and LAMMPS' "
-                   "fix wall/gran has laws of its own; use the thesis' particle walls "
-                   "(--set geometry.walls=particles)");
-  if (keeps_history(s.simulation.tangential_law))
-    return refused("simulation.tangential_law",
-                   fmt::format("'{}' keeps a contact history, which pair_style granthesis does not "
-                               "store; allowed: {} (e.g. --set simulation.tangential_law=coulomb, "
-                               "the thesis' eq. 2.12)",
-                               name_of(s.simulation.tangential_law),
-                               history_free_tangential_names()));
   if (s.simulation.lever_arm == LeverArm::radius)
     return refused("simulation.lever_arm",
                    "the lever arms at the radius are LAMMPS' own granular styles' convention; "
@@ -61,11 +48,13 @@ std::optional<std::string> refusal(const Scenario& s) {
 }
 
 // A LAMMPS atom type per (role, material): role 0 the grains, 1 the fixed wall particles, 2 + k
-// those driver k moves. Types are numbered in that order.
+// those driver k moves, and last the materials of the wall segments (types with no atoms, whose
+// pair_coeff gives fix granthesis/wall the segments' material). Types are numbered in that order.
 struct Typing {
   std::vector<int> type_of;                 ///< per particle, from 1
   std::vector<std::pair<int, int>> key_of;  ///< per type - 1: (role, material)
   std::vector<std::vector<int>> role_types; ///< per role: its types
+  std::vector<int> segment_type;            ///< per wall segment: its material's type
 };
 
 int role_of(const BuiltScenario& b, std::size_t i) {
@@ -96,8 +85,11 @@ Typing assign_types(const BuiltScenario& b) {
     roles[i] = role_of(b, i);
     types.emplace(std::pair{roles[i], static_cast<int>(p.material[i])}, 0);
   }
+  const int segment_role = 2 + static_cast<int>(b.world.drivers.size());
+  for (const Segment& w : b.world.walls)
+    types.emplace(std::pair{segment_role, static_cast<int>(w.material)}, 0);
   Typing t;
-  t.role_types.resize(2 + b.world.drivers.size());
+  t.role_types.resize(3 + b.world.drivers.size());
   for (auto& [key, type] : types) {
     t.key_of.push_back(key);
     type = static_cast<int>(t.key_of.size());
@@ -105,6 +97,8 @@ Typing assign_types(const BuiltScenario& b) {
   }
   for (std::size_t i = 0; i < p.size(); ++i)
     t.type_of.push_back(types.at({roles[i], static_cast<int>(p.material[i])}));
+  for (const Segment& w : b.world.walls)
+    t.segment_type.push_back(types.at({segment_role, static_cast<int>(w.material)}));
   return t;
 }
 
@@ -224,9 +218,9 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
       s.name, exact(s.simulation.duration));
   out += fmt::format(
       "# The native scenario's system: its grains after the packing, materials, laws, timestep,\n"
-      "# gravity, wall particles and drivers. LAMMPS' atom ids are the native ids + 1. LAMMPS\n"
-      "# integrates with velocity Verlet (the scenario: {}); compute erotate/sphere counts\n"
-      "# 2/5 m r^2 for every atom (the native disks have 1/2 m r^2).\n",
+      "# gravity, wall particles, wall segments and drivers. LAMMPS' atom ids are the native\n"
+      "# ids + 1. LAMMPS integrates with velocity Verlet (the scenario: {}); compute\n"
+      "# erotate/sphere counts 2/5 m r^2 for every atom (the native disks have 1/2 m r^2).\n",
       to_string(b.config.integrator));
   if (b.config.integrator == Integrator::verlet)
     out +=
@@ -272,6 +266,37 @@ std::string frost_section(const Scenario& s, const BuiltScenario& b, std::uint64
   return out;
 }
 
+// The segment a driver moves: its motion as fix granthesis/wall words ("" when none moves it).
+std::string segment_motion(const BuiltScenario& b, std::size_t s) {
+  for (const Driver& d : b.world.drivers) {
+    const auto& t = d.targets.segments;
+    if (std::find(t.begin(), t.end(), static_cast<std::uint32_t>(s)) == t.end()) continue;
+    if (const auto* v = std::get_if<Translate>(&d.motion))
+      return fmt::format(" velocity {} {}", exact(v->velocity.x), exact(v->velocity.y));
+    if (const auto* r = std::get_if<Rotate>(&d.motion))
+      return fmt::format(" rotate {} {} {}", exact(r->centre.x), exact(r->centre.y),
+                         exact(r->angular_velocity));
+    throw InvalidArgument(refused("drivers", "wall segment " + std::to_string(s) +
+                                                 " vibrates, which fix granthesis/wall does "
+                                                 "not do yet; allowed for segments: translate, "
+                                                 "rotate (or --set geometry.walls=particles)"));
+  }
+  return "";
+}
+
+// The wall segments as fix granthesis/wall, with the same laws and the segments' materials; their
+// elastic energy joins pe. One segment a line.
+std::string walls_section(const BuiltScenario& b, const Typing& t) {
+  if (b.world.walls.empty()) return "";
+  std::string out = "fix walls grains granthesis/wall";
+  for (std::size_t s = 0; s < b.world.walls.size(); ++s) {
+    const Segment& w = b.world.walls[s];
+    out += fmt::format(" &\n  segment {} {} {} {} type {}{}", exact(w.a.x), exact(w.a.y),
+                       exact(w.b.x), exact(w.b.y), t.segment_type[s], segment_motion(b, s));
+  }
+  return out + "\nfix_modify walls energy yes\n";
+}
+
 std::string motion_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
   std::string out = fmt::format("group grains type {}\n", type_list(t.role_types[0]));
   if (!t.role_types[1].empty())
@@ -286,6 +311,7 @@ std::string motion_section(const Scenario& s, const BuiltScenario& b, const Typi
                        exact(b.world.gravity.x / g), exact(b.world.gravity.y / g));
   for (std::size_t k = 0; k < b.world.drivers.size(); ++k)
     if (!t.role_types[2 + k].empty()) out += driver_fix(b.world.drivers[k], k);
+  out += walls_section(b, t);
   return out + "fix plane all enforce2d\n";
 }
 
@@ -302,6 +328,8 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
   out += fmt::format("units si\ndimension 2\natom_style sphere\natom_modify map array\n"
                      "boundary {} {} p\ncomm_modify vel yes\n",
                      box.periodic_x ? "p" : "f", box.periodic_y ? "p" : "f");
+  // a law with a spring: each rank computes its own atoms' contacts (pair_style granthesis)
+  if (keeps_history(s.simulation.tangential_law)) out += "newton off\n";
   out += fmt::format("read_data data.{0}\ninclude masses.{0}\n\n", s.name);
   out += pair_section(s, b, t) + "\n" + motion_section(s, b, t);
   out += frost_section(s, b, thermo) + "\n";
@@ -313,8 +341,11 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
   out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n"
          "compute contacts all contact/atom\ncompute coordination grains reduce ave "
          "c_contacts\n";
+  // f_gravity: the grains' potential energy in gravity; f_walls[1]: the walls' work on them
   out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation c_coordination "
-                     "pe press{}\n",
+                     "pe press{}{}{}\n",
+                     norm(b.world.gravity) > 0.0 ? " f_gravity" : "",
+                     b.world.walls.empty() ? "" : " f_walls[1]",
                      s.frost.model == "uniform" ? " f_frost" : "");
   out += fmt::format("thermo {}\nthermo_modify norm no\n", thermo);
   if (s.output.snapshot_interval > 0.0)
@@ -334,8 +365,6 @@ void check_lammps_export(const Scenario& s) {
 LammpsCase export_lammps(const Scenario& s, const BuiltScenario& built,
                          const std::string& command) {
   check_lammps_export(s);
-  if (!built.world.walls.empty())
-    throw InvalidArgument(refused("geometry", "the built scenario has segment walls"));
   const Typing t = assign_types(built);
   const Box box = lammps_box(built);
   return {.name = s.name,

@@ -126,15 +126,6 @@ TEST(LammpsExport, UniformFrostBecomesFixFrostHeave) {
 }
 
 TEST(LammpsExport, RefusesWhatLammpsCannotExpress) {
-  EXPECT_NE(refusal("hourglass", {"simulation.tangential_law=coulomb"})
-                .find("key 'geometry.walls': segment walls"),
-            std::string::npos);
-  const std::string history = refusal("silo_shake", {});
-  EXPECT_NE(history.find("key 'simulation.tangential_law': 'cundall_strack' keeps a contact "
-                         "history"),
-            std::string::npos)
-      << history;
-  EXPECT_NE(history.find("allowed: coulomb, none"), std::string::npos) << history;
   EXPECT_NE(
       refusal("frost_front", {"simulation.tangential_law=coulomb", "geometry.walls=particles"})
           .find("key 'frost.model'"),
@@ -143,6 +134,47 @@ TEST(LammpsExport, RefusesWhatLammpsCannotExpress) {
                 .find("key 'simulation.lever_arm': the lever arms at the radius"),
             std::string::npos);
   EXPECT_EQ(refusal("collisions", {}), "(not refused)");
+  // a vibrating segment: known only once the drivers are built
+  const Scenario s = builtin(
+      "silo_shake", {"geometry.walls=segments", "particles.count=20", "packing.method=lattice"});
+  try {
+    export_lammps(s, build_scenario(s), "test");
+    ADD_FAILURE() << "a vibrating segment was exported";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'drivers': wall segment 0 vibrates"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// Segment walls and Cundall-Strack: the walls as fix granthesis/wall, each segment with its
+// material's type (a type without atoms) and its motion; newton off for the springs; the
+// walls' energy in pe and their work in the thermo output.
+TEST(LammpsExport, SegmentWallsBecomeFixGranthesisWall) {
+  const Scenario s = builtin(
+      "force_network", {"geometry.walls=segments", "particles.count=40", "packing.method=lattice"});
+  const BuiltScenario b = build_scenario(s);
+  const LammpsCase c = export_lammps(s, b, "test");
+  ASSERT_EQ(b.world.walls.size(), 4u);
+  EXPECT_NE(c.deck.find(" cundall_strack"), std::string::npos) << c.deck;
+  EXPECT_TRUE(has_line(c.deck, "newton off")) << c.deck;
+  EXPECT_TRUE(has_line(c.deck, "fix walls grains granthesis/wall &")) << c.deck;
+  EXPECT_TRUE(has_line(c.deck, "fix_modify walls energy yes")) << c.deck;
+  // every segment, at full precision, the moving lid with its velocity
+  std::size_t lines = 0;
+  for (const Segment& w : b.world.walls) {
+    const std::string at = fmt::format("  segment {} {} {} {} type 2", w.a.x, w.a.y, w.b.x, w.b.y);
+    const std::size_t k = c.deck.find(at);
+    EXPECT_NE(k, std::string::npos) << at << "\n" << c.deck;
+    lines += k != std::string::npos;
+  }
+  EXPECT_EQ(lines, 4u);
+  EXPECT_NE(c.deck.find("type 2 velocity 0 -"), std::string::npos) << c.deck;
+  EXPECT_NE(c.deck.find("pair_coeff 2 2 young"), std::string::npos) << c.deck;
+  EXPECT_NE(c.deck.find(" f_walls[1]"), std::string::npos) << c.deck;
+  // no atom has the walls' type
+  EXPECT_EQ(c.data.find("\n41 "), std::string::npos);
+  EXPECT_NE(c.data.find("2 atom types"), std::string::npos) << c.data.substr(0, 200);
 }
 
 } // namespace
