@@ -103,7 +103,8 @@ Typing assign_types(const BuiltScenario& b) {
 }
 
 // The box: a periodic direction's period as it is; otherwise the native engine's escape box (the
-// container and as much again around it), or the particles' extent and ten radii around it.
+// container and as much again around it), or the extent of the particles and wall segments and
+// as much again around it (at least ten radii).
 struct Box {
   Vec2 lo, hi;
   double z = 0.0;
@@ -121,6 +122,12 @@ Box lammps_box(const BuiltScenario& b) {
     hi = {std::max(hi.x, p.position[i].x + p.radius[i]),
           std::max(hi.y, p.position[i].y + p.radius[i])};
   }
+  // the wall segments too: grains that roll along one stay inside the box
+  for (const Segment& w : b.world.walls)
+    for (const Vec2 e : {w.a, w.b}) {
+      lo = {std::min(lo.x, e.x), std::min(lo.y, e.y)};
+      hi = {std::max(hi.x, e.x), std::max(hi.y, e.y)};
+    }
   if (b.config.escape_hi.x > b.config.escape_lo.x) {
     lo = {std::min(lo.x, b.config.escape_lo.x), std::min(lo.y, b.config.escape_lo.y)};
     hi = {std::max(hi.x, b.config.escape_hi.x), std::max(hi.y, b.config.escape_hi.y)};
