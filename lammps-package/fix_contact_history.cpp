@@ -6,6 +6,7 @@
 #include "atom.h"
 #include "error.h"
 #include "host_api.hpp"
+#include "modify.h"
 #include "pair_coefficients.hpp"
 
 namespace talus::lammps {
@@ -29,9 +30,21 @@ FixContactHistory::FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char
   }
   create_attribute = 1;
   maxexchange = 1 + 2 * slots_;
-  grow_arrays(atom->nmax);
+  grow_arrays(atom->nmax); // no springs yet for any atom
   atom->add_callback(LAMMPS_NS::Atom::GROW);
-  std::fill(count_.begin(), count_.end(), 0);
+}
+
+FixContactHistory* FixContactHistory::find_or_make(LAMMPS_NS::LAMMPS* instance,
+                                                   const std::string& id, int slots,
+                                                   const std::string& owner) {
+  LAMMPS_NS::Modify* modify = instance->modify;
+  if (modify->find_fix(id) < 0)
+    modify->add_fix(id + " all granthesis/history slots " + std::to_string(slots));
+  auto* fix = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(id)]);
+  if (!fix)
+    talus::lammps::fail(instance->error, owner, "fix " + id + " is not granthesis/history",
+                        __FILE__, __LINE__);
+  return fix;
 }
 
 FixContactHistory::~FixContactHistory() {

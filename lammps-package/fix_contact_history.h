@@ -26,6 +26,11 @@ public:
   FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char** arg);
   ~FixContactHistory() override;
 
+  /// The fix `id` of this style, made with `slots` slots if there is none yet; `owner` (a style's
+  /// name) is named in the error when a fix of that ID is of another style.
+  static FixContactHistory* find_or_make(LAMMPS_NS::LAMMPS* instance, const std::string& id,
+                                         int slots, const std::string& owner);
+
   int setmask() override;
   void grow_arrays(int nmax) override;
   void copy_arrays(int i, int j, int delflag) override;

@@ -48,9 +48,7 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
       Wall w{number(k + 1, "AX"), number(k + 2, "AY"), number(k + 3, "BX"), number(k + 4, "BY"), 0};
       if (k + 5 >= narg || std::string(arg[k + 5]) != "type")
         fail("segment " + std::to_string(walls_.size() + 1) +
-             ": 'type T' must follow its end "
-             "points (" +
-             usage + ")");
+             ": 'type T' must follow its end points (" + usage + ")");
       const double t = number(k + 6, "T");
       if (t < 1.0 || t != std::floor(t))
         fail("type = " + std::string(arg[k + 6]) + "; allowed: an atom type, 1 or more");
@@ -111,11 +109,7 @@ void FixSegmentWalls::init() {
   if (!keeps_history(pair_->tangential_law())) return;
   // the springs of the wall contacts, per atom and segment (numbered from 1)
   history_id_ = std::string(id) + "_HISTORY";
-  if (modify->find_fix(history_id_) < 0)
-    modify->add_fix(history_id_ + " all granthesis/history slots " +
-                    std::to_string(pair_->history_slots()));
-  history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(history_id_)]);
-  if (!history_) fail("fix " + history_id_ + " is not granthesis/history");
+  history_ = FixContactHistory::find_or_make(lmp, history_id_, pair_->history_slots(), style_name);
 }
 
 void FixSegmentWalls::setup(int vflag) {

@@ -189,11 +189,7 @@ void PairGranthesis::init_history() {
     fail("tangential law '" + std::string(name_of(tangential_)) +
          "' keeps a spring per contact, which needs newton_pair off (newton off, or newton on "
          "off), so that each rank computes its own atoms' contacts");
-  if (modify->find_fix(history_fix_id) < 0)
-    modify->add_fix(std::string(history_fix_id) + " all granthesis/history slots " +
-                    std::to_string(history_slots_));
-  history_ = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(history_fix_id)]);
-  if (!history_) fail(std::string("fix ") + history_fix_id + " is not granthesis/history");
+  history_ = FixContactHistory::find_or_make(lmp, history_fix_id, history_slots_, style_name);
 #endif
 }
 
@@ -258,11 +254,12 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
       const PairParameters& p = parameters(type[i], type[j]);
       double history = 0.0; // the spring: 0 for a law without one
 #ifndef TALUS_HOST_LIGGGHTS
-      double* kept = nullptr;
+      double* kept = nullptr;   // i's spring
+      double* mirror = nullptr; // the same contact's spring kept by j, when j is this rank's
       if constexpr (T::has_history) {
         kept = &history_->spring(i, tag[j]);
+        if (j < nlocal) mirror = &history_->spring(j, tag[i]);
         history = *kept;
-        if (j < nlocal) history_->spring(j, tag[i]); // one contact, seen from j: kept too
       }
 #endif
       const ContactForce c = contact_force<N, T>(p, g, history, dt);
@@ -270,7 +267,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
       if constexpr (T::has_history)
         if (advance) {
           *kept = history;
-          if (j < nlocal) history_->spring(j, tag[i]) = history;
+          if (mirror) *mirror = history;
         }
 #endif
       f[i][0] += c.force_x;
@@ -317,7 +314,7 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
   const PairParameters& p = parameters(itype, jtype);
   double history = 0.0; // the spring as it stands (single changes nothing)
 #ifndef TALUS_HOST_LIGGGHTS
-  if (history_ && keeps_history(tangential_)) history = history_->peek(i, atom->tag[j]);
+  if (history_) history = history_->peek(i, atom->tag[j]);
 #endif
   return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
     const ContactForce c = contact_force<N, T>(p, g, history, update->dt);

@@ -17,20 +17,24 @@ void* create_pair_granthesis(void* lmp) {
       new talus::lammps::PairGranthesis(static_cast<LAMMPS_NS::LAMMPS*>(lmp)));
 }
 
-void* create_fix_frost_heave(void* lmp, int narg, char** arg) {
-  return static_cast<LAMMPS_NS::Fix*>(
-      new talus::lammps::FixFrostHeave(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg));
+// A fix style's creator, as the loader calls it: the fix as the base class.
+template <class F> void* create_fix(void* lmp, int narg, char** arg) {
+  return static_cast<LAMMPS_NS::Fix*>(new F(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg));
 }
 
-void* create_fix_contact_history(void* lmp, int narg, char** arg) {
-  return static_cast<LAMMPS_NS::Fix*>(
-      new talus::lammps::FixContactHistory(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg));
-}
+struct FixEntry {
+  const char* name;
+  const char* info;
+  lammpsplugin_factory2* creator;
+};
 
-void* create_fix_segment_walls(void* lmp, int narg, char** arg) {
-  return static_cast<LAMMPS_NS::Fix*>(
-      new talus::lammps::FixSegmentWalls(static_cast<LAMMPS_NS::LAMMPS*>(lmp), narg, arg));
-}
+constexpr FixEntry fixes[] = {
+    {"frost/heave", "the thesis' freeze-thaw heave", &create_fix<talus::lammps::FixFrostHeave>},
+    {"granthesis/history", "the tangential springs of granthesis' contacts (made by the styles)",
+     &create_fix<talus::lammps::FixContactHistory>},
+    {"granthesis/wall", "straight wall segments with granthesis' laws",
+     &create_fix<talus::lammps::FixSegmentWalls>},
+};
 
 } // namespace
 
@@ -48,18 +52,10 @@ extern "C" void lammpsplugin_init(void* lmp, void* handle, void* regfunc) {
   register_plugin(&plugin, lmp);
 
   plugin.style = "fix";
-  plugin.name = "frost/heave";
-  plugin.info = "the thesis' freeze-thaw heave";
-  plugin.creator.v2 = &create_fix_frost_heave;
-  register_plugin(&plugin, lmp);
-
-  plugin.name = "granthesis/history";
-  plugin.info = "the tangential springs of granthesis' contacts (made by the styles)";
-  plugin.creator.v2 = &create_fix_contact_history;
-  register_plugin(&plugin, lmp);
-
-  plugin.name = "granthesis/wall";
-  plugin.info = "straight wall segments with granthesis' laws";
-  plugin.creator.v2 = &create_fix_segment_walls;
-  register_plugin(&plugin, lmp);
+  for (const FixEntry& f : fixes) {
+    plugin.name = f.name;
+    plugin.info = f.info;
+    plugin.creator.v2 = f.creator;
+    register_plugin(&plugin, lmp);
+  }
 }

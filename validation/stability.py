@@ -146,7 +146,7 @@ class Runner:
         if case not in self.exported:
             self.exported.add(case)
             shutil.rmtree(base, ignore_errors=True)
-            done = subprocess.run(
+            subprocess.run(
                 [self.talus, "export", "lammps", os.path.join(CASES, case, "scenario.toml"), base,
                  "--quiet", "--set", "simulation.integrator=verlet",
                  "--set", "simulation.verlet_velocity=half_step",
@@ -165,17 +165,17 @@ class Runner:
         steps50 = int(next(l.split()[3] for l in deck if l.startswith("variable steps index")))
         dt = dt50 * 50.0 / factor
         scale = dt50 / dt
+        steps = max(1, round(steps50 * scale))
         rewritten = []
         for line in deck:
             w = line.split()
             if line.startswith("timestep "):
                 line = f"timestep {dt!r}"
             elif line.startswith("variable steps index"):
-                line = f"variable steps index {max(1, round(steps50 * scale))}"
+                line = f"variable steps index {steps}"
             elif w[:1] == ["thermo"] and len(w) == 2:
                 # at least 2000 rows, as the native guard looks at every step: an energy that
                 # grows within an impact and falls back is seen
-                steps = max(1, round(steps50 * scale))
                 line = f"thermo {max(1, min(round(int(w[1]) * scale), steps // 2000))}"
             elif line.startswith("run ") and case in SIDES:  # where the grains are, every step
                 rewritten += ["dump sides all custom 1 sides.lammpstrj id x y",

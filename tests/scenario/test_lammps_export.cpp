@@ -172,7 +172,7 @@ TEST(LammpsExport, SegmentWallsBecomeFixGranthesisWall) {
   EXPECT_NE(c.deck.find("type 2 velocity 0 -"), std::string::npos) << c.deck;
   EXPECT_NE(c.deck.find("pair_coeff 2 2 young"), std::string::npos) << c.deck;
   EXPECT_NE(c.deck.find(" f_walls[1]"), std::string::npos) << c.deck;
-  // no atom has the walls' type
+  // no atoms are made for the walls: the 40 grains alone, and a type for the walls' material
   EXPECT_EQ(c.data.find("\n41 "), std::string::npos);
   EXPECT_NE(c.data.find("2 atom types"), std::string::npos) << c.data.substr(0, 200);
 }
