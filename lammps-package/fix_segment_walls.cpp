@@ -1,5 +1,6 @@
 #include "fix_segment_walls.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -36,6 +37,10 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
   extscalar = 1;
   extvector = 1;
   energy_global_flag = 1; // fix_modify ID energy yes: the walls' elastic energy joins pe
+  // per atom: how many segments it touches (compute contact/atom does not see the walls)
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  peratom_freq = 1;
   const auto number = [&](int k, const char* what) {
     if (k >= narg) fail(std::string(what) + " is missing (" + usage + ")");
     const std::optional<double> x = finite_number(arg[k]);
@@ -157,6 +162,9 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   force_[0] = force_[1] = 0.0;
   double power = 0.0;
   if constexpr (T::has_history) history_->begin_pass();
+  // read only after this step's forces (thermo, dumps), so it need not move with the atoms
+  contacts_.assign(static_cast<std::size_t>(std::max(atom->nmax, 1)), 0.0);
+  vector_atom = contacts_.data();
   const std::size_t count = placed_.size();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
@@ -172,6 +180,7 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
     for (std::size_t s = 0; s < count; ++s) {
       const SegmentHit& h = hits_[s];
       if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, s, shares))) continue;
+      contacts_[static_cast<std::size_t>(i)] += 1.0;
       const Wall& w = walls_[s];
       // the wall's velocity at the contact: its translation, or its turn about the centre
       const double wx = w.vx - w.omega * (h.y - w.cy), wy = w.vy + w.omega * (h.x - w.cx);

@@ -57,10 +57,11 @@ private:
   PairGranthesis* pair_ = nullptr;
   FixContactHistory* history_ = nullptr;
   std::string history_id_;
-  double energy_ = 0.0;   ///< J: elastic energy in the wall contacts (this rank's atoms)
-  double work_ = 0.0;     ///< J: work the walls did on this rank's atoms so far
-  double force_[2] = {};  ///< N: force of this rank's atoms on the walls, last step
-  double totals_[4] = {}; ///< compute_vector's values, summed over ranks
+  double energy_ = 0.0;          ///< J: elastic energy in the wall contacts (this rank's atoms)
+  double work_ = 0.0;            ///< J: work the walls did on this rank's atoms so far
+  double force_[2] = {};         ///< N: force of this rank's atoms on the walls, last step
+  double totals_[4] = {};        ///< compute_vector's values, summed over ranks
+  std::vector<double> contacts_; ///< per atom: segments touched in the last step
   LAMMPS_NS::bigint summed_step_ = -1;
 };
 

@@ -344,16 +344,21 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
                      exact(b.world.particles.min_radius()), exact(dt));
   // the coordination number as the native engine counts it: contacts per grain, with walls.
   // contact/atom counts a grain's contacts only with atoms in its own group, so it runs on all
-  // atoms and the average is over the grains.
+  // atoms and the average is over the grains; it does not see the wall segments, whose fix
+  // counts its own.
   out += "compute grains_ke grains ke\ncompute grains_rotation grains erotate/sphere\n"
-         "compute contacts all contact/atom\ncompute coordination grains reduce ave "
-         "c_contacts\n";
+         "compute contacts all contact/atom\n";
+  // (a per-atom reduce: in a variable f_walls would be the fix's global scalar)
+  out += b.world.walls.empty() ? "compute coordination grains reduce ave c_contacts\n"
+                               : "compute contact_parts grains reduce ave c_contacts f_walls\n"
+                                 "variable coordination equal "
+                                 "c_contact_parts[1]+c_contact_parts[2]\n";
   // f_gravity: the grains' potential energy in gravity; f_walls[1]: the walls' work on them
-  out += fmt::format("thermo_style custom step time c_grains_ke c_grains_rotation c_coordination "
-                     "pe press{}{}{}\n",
-                     norm(b.world.gravity) > 0.0 ? " f_gravity" : "",
-                     b.world.walls.empty() ? "" : " f_walls[1]",
-                     s.frost.model == "uniform" ? " f_frost" : "");
+  out += fmt::format(
+      "thermo_style custom step time c_grains_ke c_grains_rotation {}coordination "
+      "pe press{}{}{}\n",
+      b.world.walls.empty() ? "c_" : "v_", norm(b.world.gravity) > 0.0 ? " f_gravity" : "",
+      b.world.walls.empty() ? "" : " f_walls[1]", s.frost.model == "uniform" ? " f_frost" : "");
   out += fmt::format("thermo {}\nthermo_modify norm no\n", thermo);
   if (s.output.snapshot_interval > 0.0)
     out += fmt::format("dump snapshots all custom ${{snapshot_every}} dump.{}.lammpstrj id type "

@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "fix.h"
 #include "lammps_instance.hpp"
+#include "modify.h"
 
 namespace talus::lammps_test {
 namespace {
@@ -75,6 +77,32 @@ TEST(FixSegmentWalls, BadInputNamesTheSettingAndTheAllowedValues) {
   expect_error({"pair_style zero 0.01", "pair_coeff * *",
                 "fix w all granthesis/wall segment 0 0 1 0 type 1", "run 0"},
                "needs pair_style granthesis");
+}
+
+// The per-atom vector of fix granthesis/wall counts each atom's wall contacts as the native
+// engine does: a face is one contact, the shared end point of two segments one, not two.
+TEST(FixSegmentWalls, CountsEachAtomsWallContactsAsTheNativeEngine) {
+  LammpsInstance lammps;
+  lammps.commands({"dimension 2", "units si", "atom_style sphere", "atom_modify map array",
+                   "boundary f f p", "comm_modify vel yes", "region box block -1 1 -1 1 -0.01 0.01",
+                   "create_box 2 box",
+                   // on a floor; above the valley of a V (both arms' faces); on the peak of an
+                   // inverted V (the shared end point only); in the air
+                   "create_atoms 1 single -0.5 0.004 0", "create_atoms 1 single 0.3 0.004 0",
+                   "create_atoms 1 single 0.6 0.104 0", "create_atoms 1 single -0.5 0.5 0",
+                   "set atom * diameter 0.01", "set atom * density/disc 2650",
+                   "pair_style granthesis linear coulomb", "pair_coeff * * normal_stiffness 1e4",
+                   "fix w all granthesis/wall segment -1 0 0 0 type 2 segment 0.2 0.1 0.3 0 type 2 "
+                   "segment 0.3 0 0.4 0.1 type 2 segment 0.5 0 0.6 0.1 type 2 segment 0.6 0.1 0.7 "
+                   "0 type 2",
+                   "fix integrate all nve/sphere disc", "run 0"});
+  LAMMPS_NS::Modify* modify = lammps.lmp()->modify;
+  const double* count = modify->fix[modify->find_fix("w")]->vector_atom;
+  ASSERT_NE(count, nullptr);
+  EXPECT_EQ(count[lammps.index(1)], 1.0);
+  EXPECT_EQ(count[lammps.index(2)], 2.0);
+  EXPECT_EQ(count[lammps.index(3)], 1.0);
+  EXPECT_EQ(count[lammps.index(4)], 0.0);
 }
 
 } // namespace

@@ -172,6 +172,12 @@ TEST(LammpsExport, SegmentWallsBecomeFixGranthesisWall) {
   EXPECT_NE(c.deck.find("type 2 velocity 0 -"), std::string::npos) << c.deck;
   EXPECT_NE(c.deck.find("pair_coeff 2 2 young"), std::string::npos) << c.deck;
   EXPECT_NE(c.deck.find(" f_walls[1]"), std::string::npos) << c.deck;
+  // the coordination counts the wall segments too, which contact/atom does not see
+  EXPECT_TRUE(has_line(c.deck, "compute contact_parts grains reduce ave c_contacts f_walls"))
+      << c.deck;
+  EXPECT_TRUE(has_line(c.deck, "variable coordination equal c_contact_parts[1]+c_contact_parts[2]"))
+      << c.deck;
+  EXPECT_NE(c.deck.find("c_grains_rotation v_coordination pe"), std::string::npos) << c.deck;
   // no atoms are made for the walls: the 40 grains alone, and a type for the walls' material
   EXPECT_EQ(c.data.find("\n41 "), std::string::npos);
   EXPECT_NE(c.data.find("2 atom types"), std::string::npos) << c.data.substr(0, 200);
