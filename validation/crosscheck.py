@@ -3,11 +3,14 @@
 
     /usr/bin/python3 validation/crosscheck.py [CASE ...] [--quick] [--build build] [--out DIR]
 
-A case is a folder of inputs/validation/ with the native scenario.toml and tolerances.toml (the
-bound of each comparison, with its reason). Each case runs in:
+A case is a folder of inputs/validation/ with the native scenario.toml (or the name of one),
+tolerances.toml (the bound of each comparison, with its reason) and lammps/, the deck `talus
+export lammps` writes of it (`--write-decks` writes it again; every run checks that it is still
+the deck export writes). Each case runs in:
 
 - the native engine with velocity Verlet and LAMMPS' damper velocity (verlet_velocity =
-  half_step), with velocity Verlet and the native default (predicted), and with Gear;
+  half_step), with that and a skin of a mean radius (other lists, so other summation orders),
+  with velocity Verlet and the native default (predicted), and with Gear;
 - LAMMPS with pair_style granthesis (talus-lmp), on 1 rank and on 2, from the deck that
   `talus export lammps` writes of the same scenario;
 - where tolerances.toml says `gran_hooke = true`, LAMMPS' own gran/hooke with limit_damping in
@@ -17,7 +20,7 @@ bound of each comparison, with its reason). Each case runs in:
 Every grain is tracked at full precision in both (track.csv, the LAMMPS dump); the trajectories
 are compared by id at the common times: the largest and the RMS position difference, in mean
 radii, against time. While native Verlet (half step) and LAMMPS agree to rounding, their thermo
-rows must count the same contacts.
+rows must count the same contacts, and the uniform frost rule must freeze at the same steps.
 
 Long cases are also compared by their statistics, each with its standard error: [statistics]
 (thermo columns, block averages over a window) and [[measures]] (validation/measures.py: the
@@ -44,7 +47,8 @@ import tomllib
 import numpy as np
 
 from measures import block_mean, measure
-from run_folder import add_analysis_dumps, dump_blocks, lammps_run_folder
+from run_folder import (add_analysis_dumps, dump_blocks, frost_heaves, lammps_run_folder,
+                        read_frames)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
@@ -66,12 +70,20 @@ def run(command, cwd=None):
 
 
 def read_track(path):
-    """{step index: {id: (x, y, vx, vy, omega)}} from a native track.csv (ids as LAMMPS': +1)."""
-    data = np.genfromtxt(path, delimiter=",", names=True)
+    """{time: {id: (x, y, vx, vy, omega)}} from a native track.csv (ids as LAMMPS': +1)."""
+    with open(path) as f:
+        names = f.readline().strip().split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    column = {n: k for k, n in enumerate(names)}
+    time = data[:, column["time"]]
+    ids = (data[:, column["id"]].astype(int) + 1).tolist()
+    state = data[:, [column[n] for n in ("x", "y", "vx", "vy", "omega")]].tolist()
+    # the rows come in frames of one time each
+    cuts = [0, *(np.flatnonzero(np.diff(time)) + 1).tolist(), len(time)]
     frames = {}
-    for row in np.atleast_1d(data):
-        frames.setdefault(float(row["time"]), {})[int(row["id"]) + 1] = (
-            row["x"], row["y"], row["vx"], row["vy"], row["omega"])
+    for start, end in zip(cuts, cuts[1:]):
+        frames.setdefault(float(time[start]), {}).update(
+            zip(ids[start:end], map(tuple, state[start:end])))
     return frames
 
 
@@ -79,8 +91,9 @@ def read_dump(path, dt):
     """The same from a LAMMPS dump of `id type radius mass x y vx vy omegaz`, keyed by time."""
     frames = {}
     for step, columns, rows in dump_blocks(path):
-        at = [columns.index(c) for c in ("id", "x", "y", "vx", "vy", "omegaz")]
-        frames[step * dt] = {int(r[at[0]]): tuple(float(r[k]) for k in at[1:]) for r in rows}
+        at = [columns.index(c) for c in ("x", "y", "vx", "vy", "omegaz")]
+        ids = rows[:, columns.index("id")].astype(int).tolist()
+        frames[step * dt] = dict(zip(ids, map(tuple, rows[:, at].tolist())))
     return frames
 
 
@@ -172,17 +185,49 @@ class Case:
         self.native_folders[label] = folder
         return read_track(os.path.join(folder, "track.csv")), wall, folder
 
-    def export(self, name, sets):
+    def export(self, name, sets, deck=None):
         """The deck `talus export lammps` writes of the case (with `sets`), for velocity Verlet
-        with the half-step damper velocity, LAMMPS' scheme."""
-        deck = os.path.join(self.out, name)
+        with the half-step damper velocity, LAMMPS' scheme, into the case's results (or `deck`).
+        Paths in the command are relative to the repository, as the deck's header repeats it."""
+        deck = deck or os.path.join(self.out, name)
         shutil.rmtree(deck, ignore_errors=True)
-        command = [self.talus, "export", "lammps", self.scenario_file, deck, "--quiet", "--set",
-                   "simulation.integrator=verlet", "--set", "simulation.verlet_velocity=half_step"]
+        command = [os.path.relpath(self.talus, ROOT), "export", "lammps",
+                   os.path.relpath(self.scenario_file, ROOT), os.path.relpath(deck, ROOT),
+                   "--quiet", "--set", "simulation.integrator=verlet", "--set",
+                   "simulation.verlet_velocity=half_step"]
         for s in self.sets + sets:
             command += ["--set", s]
-        run(command)
+        run(command, cwd=ROOT)
         return deck
+
+    def write_deck(self):
+        """The case's deck, committed beside its tolerances (inputs/validation/CASE/lammps)."""
+        deck = self.export("lammps", [], os.path.join(self.folder, "lammps"))
+        print(f"wrote {os.path.relpath(deck, ROOT)}")
+
+    def compare_deck(self, deck):
+        """The deck committed with the case must be the one `talus export lammps` writes now,
+        file for file (but the header's line naming where it was written), so that it is what
+        the cross-check ran."""
+        committed = os.path.join(self.folder, "lammps")
+
+        def text(folder, name):
+            with open(os.path.join(folder, name)) as f:
+                return [line for line in f if not line.startswith("# Written by: ")]
+
+        names = sorted(os.listdir(deck))
+        if not os.path.isdir(committed):
+            differ = ["no deck committed"]
+        elif sorted(os.listdir(committed)) != names:
+            differ = [f"files {sorted(os.listdir(committed))} against {names}"]
+        else:
+            differ = [n for n in names if text(committed, n) != text(deck, n)]
+        passed = not differ
+        note = ("the same files" if passed else f"differs: {', '.join(differ)}; write it again "
+                f"with validation/crosscheck.py --write-decks {self.name}")
+        self.rows.append((f"inputs/validation/{self.name}/lammps is talus export's deck now",
+                          float(len(differ)), 0.0, passed, note))
+        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: committed LAMMPS deck: {note}")
 
     def lammps(self, ranks, deck_dir, every, name=None):
         folder = os.path.join(self.out, name or f"lammps-{ranks}")
@@ -235,14 +280,15 @@ class Case:
         with open(os.path.join(folder, "run.json")) as f:
             info = json.load(f)
         self.dt, steps, n = info["timestep"], info["steps"], info["particles"]
-        radii = [p["radius"] for p in self.scenario["particles"].get("list", [])]
-        self.radius = float(np.mean(radii)) if radii else self.scenario["particles"]["size"][
-            "mean_radius"]
+        # the unit of the position differences: the free grains' mean radius, at the start
+        _, first = read_frames(folder)[0]
+        self.radius = float(np.mean(first["radius"][first["kind"] == 0]))
         predicted, wall_p, _ = self.native("native-verlet-predicted",
                                            ["simulation.integrator=verlet",
                                             "simulation.verlet_velocity=predicted"])
         gear, wall_g, _ = self.native("native-gear", ["simulation.integrator=gear"] + snapshots)
         deck = self.export("deck", [])
+        self.compare_deck(deck)
         every = max(1, round(self.track_interval / self.dt))
         curves = {}
         lmp1, wall_l1 = self.lammps(1, deck, every)
@@ -250,6 +296,8 @@ class Case:
             "native Verlet (half_step) against LAMMPS granthesis, 1 rank", half, lmp1,
             "rounding", "rounding")
         self.compare_coordination(*curves["Verlet (half step) - LAMMPS"])
+        if self.scenario.get("frost", {}).get("model") == "uniform":
+            self.compare_freezes(*curves["Verlet (half step) - LAMMPS"])
         if ranks > 1:
             lmp2, _ = self.lammps(ranks, deck, every)
             curves[f"LAMMPS 1 - {ranks} ranks"] = self.compare(
@@ -259,6 +307,15 @@ class Case:
             "integrators", "integrators")
         curves["Gear - Verlet"] = self.compare("native Gear against Verlet (half_step)", gear,
                                                half, "integrators", "integrators")
+        # another skin gives other lists, rebuilt at other steps, so the forces on a grain are
+        # summed in another order: rounding, as LAMMPS against the native engine
+        skin, _, _ = self.native("native-verlet-half_step-skin",
+                                 ["simulation.integrator=verlet",
+                                  "simulation.verlet_velocity=half_step",
+                                  f"simulation.skin={self.radius!r}"])
+        curves["Verlet: skin of a mean radius - automatic"] = self.compare(
+            "native Verlet (half_step), a skin of a mean radius against the automatic one", skin,
+            half, "rounding", "rounding")
         if self.tolerances["trajectory"].get("gran_hooke", False):
             curves.update(self.gran_hooke(deck, every, half))
         if "statistics" in self.tolerances:
@@ -283,10 +340,15 @@ class Case:
         native = np.genfromtxt(self.native_thermo["native-verlet-half_step"], delimiter=",",
                                names=True)
         lammps = read_lammps_thermo(self.lammps_logs[1])
-        at = {round(x / self.dt): z for x, z in zip(lammps["Time"], lammps["c_coordination"])}
+        # c_coordination, or v_coordination where wall segments add their contacts
+        column = lammps.get("c_coordination", lammps.get("v_coordination"))
+        at = {round(x / self.dt): z for x, z in zip(lammps["Time"], column)}
+        # at a freeze's step the native row is the bed before the heave, LAMMPS' (thermo comes
+        # after fix frost/heave's end_of_step) the bed after it
+        heaves = {round(x / self.dt) for _, x in frost_heaves(self.lammps_logs[1])}
         pairs = [(z, at[round(x / self.dt)]) for x, z in
                  zip(np.atleast_1d(native["time"]), np.atleast_1d(native["coordination"]))
-                 if x < until and round(x / self.dt) in at]
+                 if x < until and round(x / self.dt) in at and round(x / self.dt) not in heaves]
         worst = max((abs(a - b) for a, b in pairs), default=float("nan"))
         passed = bool(pairs) and worst <= 1e-6
         note = (f"{len(pairs)} thermo rows to t = {min(until, float(t[-1])):.4g} s; largest "
@@ -295,6 +357,29 @@ class Case:
                           1e-6, passed, note))
         print(f"{'ok  ' if passed else 'FAIL'} {self.name}: coordination against LAMMPS' thermo: "
               f"largest difference {worst:.3g} (bound 1e-06; {note})")
+
+    def compare_freezes(self, t, largest):
+        """The uniform frost rule's freezes: while native Verlet (half step) and LAMMPS agree to
+        rounding, fix frost/heave must heave at the steps the native engine froze (the times
+        as both write them, 9 digits); after that the two are reported."""
+        bound = self.tolerances["trajectory"]["rounding"]
+        apart = t[largest > bound]
+        until = float(apart[0]) if len(apart) else float("inf")
+        with open(os.path.join(self.native_folders["native-verlet-half_step"], "frost.csv")) as f:
+            native = [float(line.split(",")[1]) for line in f.readlines()[1:]
+                      if line.strip().endswith(",freeze")]
+        lammps = [x for _, x in frost_heaves(self.lammps_logs[1])]
+        early = [(a, b) for a, b in zip(native, lammps) if min(a, b) < until]
+        worst = max((abs(a - b) for a, b in early), default=float("nan"))
+        passed = bool(early) and worst <= 1e-9 * max(native[-1], 1e-300)
+        note = (f"{len(early)} freezes before the trajectories part (t = {min(until, float(t[-1])):.4g}"
+                f" s); in the whole run native {len(native)} at "
+                f"{', '.join(f'{x:.4g}' for x in native)} s, LAMMPS {len(lammps)} at "
+                f"{', '.join(f'{x:.4g}' for x in lammps)} s")
+        self.rows.append(("freeze times, native Verlet (half_step) against LAMMPS fix frost/heave",
+                          worst, 1e-9 * max(native[-1], 1e-300), passed, note))
+        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: freeze times against fix frost/heave: "
+              f"largest difference {worst:.3g} s ({note})")
 
     def gran_hooke_pair(self):
         """LAMMPS' gran/hooke line for the case's one material, which must give its dampers as
@@ -519,6 +604,9 @@ def main():
     parser.add_argument("--ranks", type=int, default=2, help="LAMMPS' second run's ranks")
     parser.add_argument("--build", default=os.path.join(ROOT, "build"), help="the build folder")
     parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results"))
+    parser.add_argument("--write-decks", action="store_true",
+                        help="write each case's LAMMPS deck into inputs/validation/CASE/lammps "
+                        "(the committed deck every run checks) and run nothing")
     args = parser.parse_args()
     names = args.cases or sorted(os.listdir(CASES))
     if args.quick:
@@ -526,6 +614,10 @@ def main():
     unknown = [n for n in names if not os.path.isdir(os.path.join(CASES, n))]
     if unknown:
         sys.exit(f"no case {', '.join(unknown)} in {CASES}; cases: {', '.join(sorted(os.listdir(CASES)))}")
+    if args.write_decks:
+        for name in names:
+            Case(name, args.out, args.build).write_deck()
+        sys.exit(0)
     if shutil.which("mpirun") is None:
         print("mpirun not found (Debian package openmpi-bin): skipped")
         sys.exit(77)

@@ -7,6 +7,10 @@ A case's tolerances.toml lists them as [[measures]] tables:
   of its JSON, "forces.json:beta", with its error "forces.json:beta_error";
 - `analysis` + `series`: a column of its CSV, "segregation.csv:index", averaged over `window`
   with the standard error of `blocks` block averages;
+- `analysis = "frost"` + `cycle` K + `quantity`: from `talus analyze DIR frost`, which samples
+  the bed at rest before each freeze, sample K's "stone_height" (the stones' mean centre height
+  above the bed's bottom, m) or "sorting_index" ((mean stone height - mean fine height) / bed
+  height); one number per run, so its error is the seeds' scatter;
 - `packing`: the area fraction of the free grains in `region` = [x0, y0, x1, y1], averaged over
   the snapshots in `window`, with the standard error over `strips` equal vertical strips of the
   region (a static packing's snapshots are not independent; its strips nearly are).
@@ -140,6 +144,8 @@ def measure(spec, folder, talus):
     options = list(spec.get("options", []))
     analyze(talus, folder, spec["analysis"], options)
     out = os.path.join(folder, "analysis")
+    if "cycle" in spec:
+        return frost_sample(out, spec["quantity"], spec["cycle"]), 0.0
     if "series" in spec:
         name, column = spec["series"].split(":")
         t, x = read_column(os.path.join(out, name), column)
@@ -153,3 +159,21 @@ def measure(spec, folder, talus):
         with open(os.path.join(out, name)) as f:
             error = json.load(f)[key]
     return float(value), float(error)
+
+
+def frost_sample(out, quantity, cycle):
+    """One number of `talus analyze DIR frost`'s sample `cycle` (analysis/frost.csv, .json)."""
+    if quantity == "sorting_index":
+        with open(os.path.join(out, "frost.json")) as f:
+            index = json.load(f)["sorting_index"]
+        if cycle >= len(index):
+            raise ValueError(f"{out}: {len(index)} frost samples, no sample {cycle}")
+        return float(index[cycle])
+    if quantity != "stone_height":
+        raise ValueError(f"frost quantity '{quantity}': allowed: stone_height, sorting_index")
+    with open(os.path.join(out, "frost.csv")) as f:
+        heights = [float(r["height"]) for r in csv.DictReader(f)
+                   if r["role"] == "stone" and int(r["cycle"]) == cycle]
+    if not heights:
+        raise ValueError(f"{out}/frost.csv: no stone at sample {cycle}")
+    return float(np.mean(heights))

@@ -1,9 +1,9 @@
 """Snapshots of both engines in the one layout `talus analyze` reads.
 
 A LAMMPS run of an exported deck, given the dumps `analysis_dumps` adds, becomes a talus run
-folder (particles.pvd, contacts.pvd and their .vtp files, the native scenario.toml), so that the
-native analyses (`talus analyze DIR forces`, `segregation`, `profiles`, ...) measure both engines
-with the same code. `read_frames` reads the particles of either folder back into arrays.
+folder (particles.pvd, contacts.pvd and their .vtp files, the native scenario.toml, and frost.csv
+from `fix frost/heave`'s heaves in log.lammps), so that the native analyses (`talus analyze DIR
+forces`, `segregation`, `profiles`, `frost`, ...) measure both engines with the same code. `read_frames` reads the particles of either folder back into arrays.
 """
 import os
 import re
@@ -44,7 +44,7 @@ def dump_blocks(path):
         step, count = int(lines[k + 1]), int(lines[k + 3])
         columns = lines[k + 8].split()[2:]
         body = lines[k + 9:k + 9 + count]
-        rows = (np.array([[float(v) for v in line.split()] for line in body])
+        rows = (np.array(" ".join(body).split(), dtype=float).reshape(count, -1)
                 if count else np.zeros((0, len(columns))))
         yield step, columns, rows
         k += 9 + count
@@ -178,4 +178,22 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
         f.write(pvd(particles_pvd))
     with open(os.path.join(out, "contacts.pvd"), "w") as f:
         f.write(pvd(contacts_pvd))
+    heaves = frost_heaves(os.path.join(lammps_dir, "log.lammps"))
+    if heaves:
+        # the native frost.csv's layout and digits: `talus analyze DIR frost` samples the bed
+        # at rest before each freeze
+        with open(os.path.join(out, "frost.csv"), "w") as f:
+            f.write("cycle,time,event\n" + "".join(
+                f"{n},{t:.9g},freeze\n" for n, t in heaves))
     return out
+
+
+HEAVE = re.compile(r"^(?:fix )?frost/heave: heave (\d+) at t = (\S+) s \(step \d+\)$")
+
+
+def frost_heaves(log):
+    """(number, time) of each heave `fix frost/heave` wrote to a LAMMPS log; [] if none."""
+    if not os.path.exists(log):
+        return []
+    with open(log) as f:
+        return [(int(m[1]), float(m[2])) for m in map(HEAVE.match, f) if m]
