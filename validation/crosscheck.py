@@ -47,8 +47,8 @@ import tomllib
 import numpy as np
 
 from measures import block_mean, measure
-from run_folder import (add_analysis_dumps, dump_blocks, frost_heaves, lammps_run_folder,
-                        read_frames)
+from run_folder import (add_analysis_dumps, dump_blocks, first_frame, frost_heaves,
+                        lammps_run_folder)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
@@ -281,7 +281,7 @@ class Case:
             info = json.load(f)
         self.dt, steps, n = info["timestep"], info["steps"], info["particles"]
         # the unit of the position differences: the free grains' mean radius, at the start
-        _, first = read_frames(folder)[0]
+        first = first_frame(folder)
         self.radius = float(np.mean(first["radius"][first["kind"] == 0]))
         predicted, wall_p, _ = self.native("native-verlet-predicted",
                                            ["simulation.integrator=verlet",
@@ -330,13 +330,16 @@ class Case:
         self.chart(curves)
         return all(r[3] for r in self.rows)
 
+    def rounding_until(self, t, largest):
+        """The first time the trajectories differ by more than the rounding bound (or never)."""
+        apart = t[largest > self.tolerances["trajectory"]["rounding"]]
+        return float(apart[0]) if len(apart) else float("inf")
+
     def compare_coordination(self, t, largest):
         """While native Verlet (half step) and LAMMPS agree to rounding, their thermo rows must
         count the same contacts: the coordination (walls included) at every common time, to the
         digits the native thermo.csv prints (6 decimals)."""
-        bound = self.tolerances["trajectory"]["rounding"]
-        apart = t[largest > bound]
-        until = float(apart[0]) if len(apart) else float("inf")
+        until = self.rounding_until(t, largest)
         native = np.genfromtxt(self.native_thermo["native-verlet-half_step"], delimiter=",",
                                names=True)
         lammps = read_lammps_thermo(self.lammps_logs[1])
@@ -362,9 +365,7 @@ class Case:
         """The uniform frost rule's freezes: while native Verlet (half step) and LAMMPS agree to
         rounding, fix frost/heave must heave at the steps the native engine froze (the times
         as both write them, 9 digits); after that the two are reported."""
-        bound = self.tolerances["trajectory"]["rounding"]
-        apart = t[largest > bound]
-        until = float(apart[0]) if len(apart) else float("inf")
+        until = self.rounding_until(t, largest)
         with open(os.path.join(self.native_folders["native-verlet-half_step"], "frost.csv")) as f:
             native = [float(line.split(",")[1]) for line in f.readlines()[1:]
                       if line.strip().endswith(",freeze")]
@@ -372,8 +373,8 @@ class Case:
         early = [(a, b) for a, b in zip(native, lammps) if min(a, b) < until]
         worst = max((abs(a - b) for a, b in early), default=float("nan"))
         passed = bool(early) and worst <= 1e-9 * max(native[-1], 1e-300)
-        note = (f"{len(early)} freezes before the trajectories part (t = {min(until, float(t[-1])):.4g}"
-                f" s); in the whole run native {len(native)} at "
+        note = (f"{len(early)} freezes before the trajectories part (t = "
+                f"{min(until, float(t[-1])):.4g} s); in the whole run native {len(native)} at "
                 f"{', '.join(f'{x:.4g}' for x in native)} s, LAMMPS {len(lammps)} at "
                 f"{', '.join(f'{x:.4g}' for x in lammps)} s")
         self.rows.append(("freeze times, native Verlet (half_step) against LAMMPS fix frost/heave",

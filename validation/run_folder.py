@@ -3,7 +3,8 @@
 A LAMMPS run of an exported deck, given the dumps `analysis_dumps` adds, becomes a talus run
 folder (particles.pvd, contacts.pvd and their .vtp files, the native scenario.toml, and frost.csv
 from `fix frost/heave`'s heaves in log.lammps), so that the native analyses (`talus analyze DIR
-forces`, `segregation`, `profiles`, `frost`, ...) measure both engines with the same code. `read_frames` reads the particles of either folder back into arrays.
+forces`, `segregation`, `profiles`, `frost`, ...) measure both engines with the same code.
+`read_frames` reads the particles of either folder back into arrays.
 """
 import os
 import re
@@ -67,22 +68,29 @@ def pvd_entries(path):
             re.findall(r'<DataSet timestep="([^"]+)"[^>]*file="([^"]+)"', xml)]
 
 
+def read_frame(path):
+    """{id, radius, x, y, vx, vy, kind, material} arrays of one particles_*.vtp."""
+    with open(path) as f:
+        xml = f.read()
+    pos = data_array(xml, "position", path).reshape(-1, 3)
+    vel = data_array(xml, "velocity", path).reshape(-1, 3)
+    return {"id": data_array(xml, "id", path).astype(int),
+            "radius": data_array(xml, "radius", path),
+            "x": pos[:, 0], "y": pos[:, 1], "vx": vel[:, 0], "vy": vel[:, 1],
+            "kind": data_array(xml, "kind", path).astype(int),
+            "material": data_array(xml, "material", path).astype(int)}
+
+
 def read_frames(folder):
-    """[(time, {id, radius, x, y, vx, vy, kind, material} arrays)] of a talus run folder."""
-    frames = []
-    for t, name in pvd_entries(os.path.join(folder, "particles.pvd")):
-        path = os.path.join(folder, name)
-        with open(path) as f:
-            xml = f.read()
-        pos = data_array(xml, "position", path).reshape(-1, 3)
-        vel = data_array(xml, "velocity", path).reshape(-1, 3)
-        frame = {"id": data_array(xml, "id", path).astype(int),
-                 "radius": data_array(xml, "radius", path),
-                 "x": pos[:, 0], "y": pos[:, 1], "vx": vel[:, 0], "vy": vel[:, 1],
-                 "kind": data_array(xml, "kind", path).astype(int),
-                 "material": data_array(xml, "material", path).astype(int)}
-        frames.append((t, frame))
-    return frames
+    """[(time, read_frame's arrays)] of a talus run folder."""
+    return [(t, read_frame(os.path.join(folder, name)))
+            for t, name in pvd_entries(os.path.join(folder, "particles.pvd"))]
+
+
+def first_frame(folder):
+    """read_frame's arrays of a talus run folder's first snapshot, without reading the rest."""
+    _, name = pvd_entries(os.path.join(folder, "particles.pvd"))[0]
+    return read_frame(os.path.join(folder, name))
 
 
 def array(name, components, values, fmt="{:.17g}"):
@@ -128,7 +136,7 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(os.path.join(out, "snapshots"))
     shutil.copy(os.path.join(native_folder, "scenario.toml"), out)
-    _, first = read_frames(native_folder)[0]
+    first = first_frame(native_folder)
     kind = dict(zip(first["id"] + 1, first["kind"]))
     material = dict(zip(first["id"] + 1, first["material"]))
     frames = list(dump_blocks(os.path.join(lammps_dir, "dump.frames")))
