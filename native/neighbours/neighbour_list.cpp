@@ -2,20 +2,26 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 
 #include "neighbours/cell_grid.hpp"
 
 namespace talus {
 
-bool particles_moved(const NeighbourList& list, const Particles& p, int threads) {
-  if (list.reference.size() != p.size()) return true;
-  const double limit2 = 0.25 * list.skin * list.skin;
-  bool moved = false;
+double largest_drift2(const NeighbourList& list, const Particles& p, int threads) {
+  if (list.reference.size() != p.size()) return std::numeric_limits<double>::infinity();
+  double largest = 0.0;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(|| : moved)
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    moved = moved || norm2(p.position[i] - list.reference[i]) > limit2;
-  return moved;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(max : largest)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const double d2 = norm2(p.position[i] - list.reference[i]);
+    largest = d2 > largest ? d2 : largest; // a NaN position is left to the step's finite check
+  }
+  return largest;
+}
+
+bool particles_moved(const NeighbourList& list, const Particles& p, int threads) {
+  return largest_drift2(list, p, threads) > 0.25 * list.skin * list.skin;
 }
 
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls) {

@@ -5,6 +5,7 @@
 // touch test and the candidates (contact_candidates.hpp), the pair pass (pair_pass.hpp), the
 // wall pass (wall_pass.hpp), the late pass (late_pass.hpp) and what is done to a particle once
 // its force is complete (particle_finish.hpp). The laws come from src/talus.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -53,6 +54,16 @@ public:
 
   /// The list changed (built, renumbered, a grain held or freed): choose the candidates again.
   void list_changed() { candidates_stale_ = true; }
+  /// The drift bound was lowered from `from` to `to` (the positions were compared with the
+  /// build's). The candidates' base moves by as much, so that the bound's growth since they were
+  /// chosen still bounds every grain's move since then; from an unknown bound (infinite) they are
+  /// chosen again.
+  void drift_bound_lowered(double from, double to) {
+    if (std::isfinite(from))
+      candidates_base_ -= from - to;
+    else
+      candidates_stale_ = true;
+  }
   /// The pass before the next stage set every force and torque as the stage starts them
   /// (start_forces): the fused passes do, while they have them in cache.
   void forces_started(bool started) { forces_started_ = started; }

@@ -196,7 +196,17 @@ bool Simulation::drifted(double displacement2) {
   drift_bound_ += std::sqrt(displacement2);
   if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
   ++drift_tests_;
-  return particles_moved(list_, world_.particles, threads_);
+  const double moved = std::sqrt(largest_drift2(list_, world_.particles, threads_));
+  if (moved > 0.5 * list_.skin) return true;
+  // The positions were compared with the build's: the farthest move is the new bound. A bound
+  // that sums every pass's farthest move soon overstates it (the farthest grains change from pass
+  // to pass), and an unknown one (after a restore or an edit) would otherwise compare the
+  // positions and choose the candidates again at every step until the next build.
+  if (moved < drift_bound_) {
+    forces_.drift_bound_lowered(drift_bound_, moved);
+    drift_bound_ = moved;
+  }
+  return false;
 }
 
 double Simulation::next_skin() const {

@@ -53,6 +53,30 @@ TEST_P(ListReuse, RunsAreBitIdenticalToTestingEverythingEveryStep) {
   expect_same_state(fused, testing_all);
 }
 
+// A restored run (a checkpoint resumed, a benchmark's round) and a run after an edit start with
+// the drift bound unknown: the first step compares the positions with the build's and takes the
+// farthest move as the bound, so the shortcuts are taken again from then on, not only after the
+// next build. Bit-identical still to testing everything at every step.
+TEST_P(ListReuse, ARestoredRunTakesTheShortcutsBeforeTheNextBuild) {
+  Simulation settling(mixed_box(), config(GetParam()));
+  settling.run(300);
+  const SimulationState state = settling.state();
+  Simulation restored = Simulation::restore(state, settling.config());
+  Simulation testing_all = Simulation::restore(state, settling.config());
+  const std::uint64_t builds = restored.neighbours().builds;
+  int steps = 0; // until the next build
+  for (; steps < 200 && restored.neighbours().builds == builds; ++steps) {
+    restored.step();
+    testing_all.edit_world();
+    testing_all.step();
+  }
+  // an unknown bound would choose the candidates and compare the positions at every step
+  ASSERT_GE(steps, 20);
+  EXPECT_LE(restored.candidate_choices(), static_cast<std::uint64_t>(steps / 4));
+  EXPECT_LT(restored.drift_tests(), static_cast<std::uint64_t>(steps / 2));
+  expect_same_state(restored, testing_all);
+}
+
 INSTANTIATE_TEST_SUITE_P(BothIntegrators, ListReuse,
                          ::testing::Values(Integrator::verlet, Integrator::gear),
                          [](const ::testing::TestParamInfo<Integrator>& param) {
