@@ -196,8 +196,9 @@ bool Simulation::drifted(double displacement2) {
   drift_bound_ += std::sqrt(displacement2);
   if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
   ++drift_tests_;
-  const double moved = std::sqrt(largest_drift2(list_, world_.particles, threads_));
-  if (moved > 0.5 * list_.skin) return true;
+  const double largest2 = largest_drift2(list_, world_.particles, threads_);
+  if (largest2 > 0.25 * list_.skin * list_.skin) return true; // particles_moved's very test
+  const double moved = std::sqrt(largest2);
   // The positions were compared with the build's: the farthest move is the new bound. A bound
   // that sums every pass's farthest move soon overstates it (the farthest grains change from pass
   // to pass), and an unknown one (after a restore or an edit) would otherwise compare the
