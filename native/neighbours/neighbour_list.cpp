@@ -21,7 +21,7 @@ double largest_drift2(const NeighbourList& list, const Particles& p, int threads
 }
 
 bool particles_moved(const NeighbourList& list, const Particles& p, int threads) {
-  return largest_drift2(list, p, threads) > 0.25 * list.skin * list.skin;
+  return largest_drift2(list, p, threads) > drift_limit2(list);
 }
 
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls) {
@@ -32,7 +32,7 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
                  const std::vector<std::uint32_t>& driven) {
   if (list.reference.size() != p.size() || list.segment_reference.size() != 2 * walls.size())
     return true;
-  const double limit2 = 0.25 * list.skin * list.skin;
+  const double limit2 = drift_limit2(list);
   for (const auto i : driven)
     if (norm2(p.position[i] - list.reference[i]) > limit2) return true;
   for (std::size_t s = 0; s < walls.size(); ++s)

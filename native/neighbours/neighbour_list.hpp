@@ -80,6 +80,11 @@ void index_force_blocks(NeighbourList& list, int threads = 1);
 /// True when some particle or wall end point moved more than half the skin since the last build.
 bool needs_rebuild(const NeighbourList& list, const Particles& p, const Segments& walls);
 
+/// The squared move (m^2) past which the list may miss a pair: half the skin, squared.
+inline double drift_limit2(const NeighbourList& list) {
+  return 0.25 * list.skin * list.skin;
+}
+
 /// The largest squared distance a particle moved since the last build (m^2), or infinity when
 /// the particles are not those of the build (another count). A NaN position does not count.
 double largest_drift2(const NeighbourList& list, const Particles& p, int threads = 1);

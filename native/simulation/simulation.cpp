@@ -197,7 +197,7 @@ bool Simulation::drifted(double displacement2) {
   if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
   ++drift_tests_;
   const double largest2 = largest_drift2(list_, world_.particles, threads_);
-  if (largest2 > 0.25 * list_.skin * list_.skin) return true; // particles_moved's very test
+  if (largest2 > drift_limit2(list_)) return true; // particles_moved's very test
   const double moved = std::sqrt(largest2);
   // The positions were compared with the build's: the farthest move is the new bound. A bound
   // that sums every pass's farthest move soon overstates it (the farthest grains change from pass
