@@ -30,8 +30,10 @@ FixContactHistory::FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char
   }
   create_attribute = 1;
   maxexchange = 1 + 2 * slots_;
+  restart_peratom = 1;
   grow_arrays(atom->nmax); // no springs yet for any atom
   atom->add_callback(LAMMPS_NS::Atom::GROW);
+  atom->add_callback(LAMMPS_NS::Atom::RESTART);
 }
 
 FixContactHistory* FixContactHistory::find_or_make(LAMMPS_NS::LAMMPS* instance,
@@ -49,6 +51,7 @@ FixContactHistory* FixContactHistory::find_or_make(LAMMPS_NS::LAMMPS* instance,
 
 FixContactHistory::~FixContactHistory() {
   atom->delete_callback(id, LAMMPS_NS::Atom::GROW);
+  atom->delete_callback(id, LAMMPS_NS::Atom::RESTART);
 }
 
 void FixContactHistory::fail(const std::string& message) const {
@@ -97,6 +100,34 @@ int FixContactHistory::unpack_exchange(int nlocal, double* buffer) {
     s[k] = {static_cast<LAMMPS_NS::tagint>(LAMMPS_NS::ubuf(buffer[1 + 2 * k]).i), buffer[2 + 2 * k],
             pass_};
   return 1 + 2 * n;
+}
+
+// As pack_exchange, after the size of the whole (counted in): restart files hold every fix's
+// values for an atom one after another, and each fix finds its own by skipping the others'.
+int FixContactHistory::pack_restart(int i, double* buffer) {
+  const int n = pack_exchange(i, buffer + 1);
+  buffer[0] = 1 + n;
+  return 1 + n;
+}
+
+void FixContactHistory::unpack_restart(int nlocal, int nth) {
+  double* values = atom->extra[nlocal];
+  std::size_t m = 0;
+  for (int k = 0; k < nth; ++k) m += static_cast<std::size_t>(values[m]);
+  const int n = static_cast<int>(values[m + 1]);
+  if (n > slots_)
+    fail("atom " + std::to_string(atom->tag[nlocal]) + " had " + std::to_string(n) +
+         " springs in the restart file, more than the " + std::to_string(slots_) +
+         " slots now; allowed: history_slots at least as many as when it was written");
+  unpack_exchange(nlocal, values + m + 1);
+}
+
+int FixContactHistory::size_restart(int nlocal) {
+  return 2 + 2 * count_[static_cast<std::size_t>(nlocal)];
+}
+
+int FixContactHistory::maxsize_restart() {
+  return 2 + 2 * slots_;
 }
 
 double FixContactHistory::memory_usage() {

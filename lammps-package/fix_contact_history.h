@@ -1,7 +1,9 @@
 // fix granthesis/history: the tangential springs of the contacts of pair_style granthesis (and
 // fix granthesis/wall) with a law that keeps them (Cundall-Strack, Mindlin). Made by those
 // styles, not by a deck. Each atom keeps its contacts' springs beside the partner they are with
-// (an atom id, or a wall segment's number) and takes them along when it moves to another rank.
+// (an atom id, or a wall segment's number) and takes them along when it moves to another rank
+// and into a restart file; the style that made it makes it again, under the same ID, after
+// read_restart, and gets them back.
 // The pair style computes a contact with a ghost atom on both ranks (newton_pair off), and each
 // rank keeps the spring of its own atom: the spring is the same seen from either side.
 // The style block lets the file drop into a LAMMPS source tree as a package (so no #pragma once).
@@ -37,6 +39,10 @@ public:
   void set_arrays(int i) override;
   int pack_exchange(int i, double* buffer) override;
   int unpack_exchange(int nlocal, double* buffer) override;
+  int pack_restart(int i, double* buffer) override;
+  void unpack_restart(int nlocal, int nth) override;
+  int size_restart(int nlocal) override;
+  int maxsize_restart() override;
   double memory_usage() override;
 
   /// A pass over the contacts starts: a contact not looked up (spring()) during it is

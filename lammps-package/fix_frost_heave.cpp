@@ -122,9 +122,12 @@ double FixFrostHeave::group_kinetic_energy() const {
   return total;
 }
 
+void FixFrostHeave::setup(int /*vflag*/) {
+  clock_.setup(*update);
+}
+
 double FixFrostHeave::now() const {
-  return clock_offset_ + update->atime +
-         static_cast<double>(update->ntimestep - update->atimestep) * update->dt;
+  return clock_.now(*update);
 }
 
 void FixFrostHeave::end_of_step() {
@@ -165,8 +168,8 @@ double FixFrostHeave::compute_vector(int n) {
   return n == 0 ? cycles_ : n == 1 ? last_time_ : kinetic_;
 }
 
-// The heaves, the time and step of the last one and the time now: this LAMMPS starts the time
-// again from 0 at read_restart, so the fix keeps its own clock's offset.
+// The heaves, the time and step of the last one and the time now (RunClock says why the fix
+// keeps its own).
 void FixFrostHeave::write_restart(FILE* file) {
   if (comm->me != 0) return;
   const double state[4] = {cycles_, last_time_, static_cast<double>(last_step_), now()};
@@ -181,8 +184,7 @@ void FixFrostHeave::restart(char* buffer) {
   cycles_ = state[0];
   last_time_ = state[1];
   last_step_ = static_cast<LAMMPS_NS::bigint>(state[2]);
-  clock_offset_ = 0.0;
-  clock_offset_ = state[3] - now();
+  clock_.resume(state[3]);
 }
 
 } // namespace talus::lammps

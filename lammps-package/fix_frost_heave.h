@@ -15,6 +15,7 @@ FixStyle(frost/heave, talus::lammps::FixFrostHeave);
 #include <string>
 
 #include "fix.h"
+#include "run_clock.hpp"
 
 namespace talus::lammps {
 
@@ -24,6 +25,7 @@ public:
 
   int setmask() override;
   void init() override;
+  void setup(int vflag) override;
   void end_of_step() override;
   double compute_scalar() override;
   double compute_vector(int n) override;
@@ -34,7 +36,7 @@ private:
   [[noreturn]] void fail(const std::string& message) const;
   double group_kinetic_energy() const;
   void heave();
-  double now() const; ///< s: the simulation time, as it was before any read_restart
+  double now() const; ///< s: the simulation time, carried across restart files
 
   double epsilon_ = 0.0;    ///< J: the kinetic energy below which the group is at rest
   double factor_ = 1.0;     ///< delta_H: the heights above the table are multiplied by it
@@ -46,7 +48,7 @@ private:
   double kinetic_ = 0.0;    ///< J: the group's kinetic energy at the last test
   LAMMPS_NS::bigint last_step_ = -1; ///< the step of the last heave (or of the fix's definition
                                      ///< with initial_wait yes), -1 before the first
-  double clock_offset_ = 0.0;        ///< s: added to LAMMPS' time, which read_restart resets
+  RunClock clock_;
 };
 
 } // namespace talus::lammps

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <string>
 
 #include <mpi.h>
 
 #include "atom.h"
+#include "comm.h"
 #include "error.h"
 #include "fix_contact_history.h"
 #include "force.h"
@@ -37,6 +40,7 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
   extscalar = 1;
   extvector = 1;
   energy_global_flag = 1; // fix_modify ID energy yes: the walls' elastic energy joins pe
+  restart_global = 1;     // the walls' clock and work
   // per atom: how many segments it touches (compute contact/atom does not see the walls)
   peratom_flag = 1;
   size_peratom_cols = 0;
@@ -97,7 +101,7 @@ int FixSegmentWalls::setmask() {
 }
 
 double FixSegmentWalls::now() const {
-  return update->atime + static_cast<double>(update->ntimestep - update->atimestep) * update->dt;
+  return clock_.now(*update);
 }
 
 void FixSegmentWalls::init() {
@@ -111,13 +115,25 @@ void FixSegmentWalls::init() {
       fail("segment " + std::to_string(s + 1) + ": type " + std::to_string(walls_[s].type) +
            " does not exist; allowed: 1 to " + std::to_string(atom->ntypes));
   history_ = nullptr;
-  if (!keeps_history(pair_->tangential_law())) return;
-  // the springs of the wall contacts, per atom and segment (numbered from 1)
+  if (keeps_history(pair_->tangential_law())) make_history();
+}
+
+// The springs of the wall contacts, per atom and segment (numbered from 1).
+void FixSegmentWalls::make_history() {
   history_id_ = std::string(id) + "_HISTORY";
   history_ = FixContactHistory::find_or_make(lmp, history_id_, pair_->history_slots(), style_name);
 }
 
+// Where the pair style is known already (always after read_restart, which brings it back), the
+// springs' fix is made now, not at init(): only a fix made before the first run after
+// read_restart gets its atoms' values from the restart file.
+void FixSegmentWalls::post_constructor() {
+  pair_ = dynamic_cast<PairGranthesis*>(force->pair_match("granthesis", 1));
+  if (pair_ && keeps_history(pair_->tangential_law())) make_history();
+}
+
 void FixSegmentWalls::setup(int vflag) {
+  clock_.setup(*update);
   post_force(vflag);
 }
 
@@ -227,6 +243,32 @@ double FixSegmentWalls::compute_vector(int n) {
     summed_step_ = update->ntimestep;
   }
   return totals_[n];
+}
+
+// The time, the walls' start, the work they have done (over every rank's atoms) and their count:
+// the fix defined again under the same ID after read_restart takes up the motion where it was,
+// rather than from the deck's end points.
+void FixSegmentWalls::write_restart(FILE* file) {
+  double work = 0.0;
+  MPI_Allreduce(&work_, &work, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  const double state[4] = {now(), start_, work, static_cast<double>(walls_.size())};
+  const int size = static_cast<int>(sizeof state);
+  std::fwrite(&size, sizeof(int), 1, file);
+  std::fwrite(state, sizeof(double), 4, file);
+}
+
+void FixSegmentWalls::restart(char* buffer) {
+  double state[4];
+  std::memcpy(state, buffer, sizeof state);
+  if (state[3] != static_cast<double>(walls_.size()))
+    fail("fix " + std::string(id) + " had " + std::to_string(static_cast<long>(state[3])) +
+         " segment(s) in the run that wrote the restart file, " + std::to_string(walls_.size()) +
+         " now; allowed: the segments of that run, as its deck gave them");
+  clock_.resume(state[0]);
+  start_ = state[1];
+  work_ = comm->me == 0 ? state[2] : 0.0; // the total, kept by one rank
+  place(now() - start_);
 }
 
 } // namespace talus::lammps

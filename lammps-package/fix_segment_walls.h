@@ -14,6 +14,7 @@ FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
 #include <vector>
 
 #include "fix.h"
+#include "run_clock.hpp"
 #include "talus/segment_contact.hpp"
 
 namespace talus::lammps {
@@ -27,11 +28,14 @@ public:
   ~FixSegmentWalls() override;
 
   int setmask() override;
+  void post_constructor() override;
   void init() override;
   void setup(int vflag) override;
   void post_force(int vflag) override;
   double compute_scalar() override;
   double compute_vector(int n) override;
+  void write_restart(FILE* file) override;
+  void restart(char* buffer) override;
 
 private:
   /// A segment as the deck gives it, at the fix's start, and its motion.
@@ -46,14 +50,16 @@ private:
     double ax, ay, bx, by;
   };
   [[noreturn]] void fail(const std::string& message) const;
-  double now() const; ///< s: the simulation time
+  double now() const; ///< s: the simulation time, carried across restart files
   void place(double t);
+  void make_history();
   template <class N, class T> void add_forces(bool advance);
 
   std::vector<Wall> walls_;
   std::vector<Placed> placed_;
   std::vector<SegmentHit> hits_; ///< one atom's hits, scratch
   double start_ = 0.0;           ///< s: the time at which the walls are where the deck puts them
+  RunClock clock_;
   PairGranthesis* pair_ = nullptr;
   FixContactHistory* history_ = nullptr;
   std::string history_id_;
