@@ -18,6 +18,7 @@
 #include "pair_coefficients.hpp"
 #include "pair_granthesis.h"
 #include "talus/contact_force.hpp"
+#include "talus/vibration.hpp"
 #include "update.h"
 
 namespace talus::lammps {
@@ -27,7 +28,7 @@ namespace {
 constexpr const char* style_name = "fix granthesis/wall";
 constexpr const char* usage =
     "usage: fix ID GROUP granthesis/wall segment AX AY BX BY type T [velocity VX VY | rotate CX "
-    "CY OMEGA] [segment ...]";
+    "CY OMEGA | vibrate DX DY AMPLITUDE FREQUENCY PHASE] [segment ...]";
 
 } // namespace
 
@@ -45,40 +46,25 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
-  const auto number = [&](int k, const char* what) {
-    if (k >= narg) fail(std::string(what) + " is missing (" + usage + ")");
-    const std::optional<double> x = finite_number(arg[k]);
-    if (!x) fail(std::string(what) + " = " + arg[k] + "; allowed: a finite number");
-    return *x;
-  };
   for (int k = 3; k < narg;) {
     const std::string key = arg[k];
     if (key == "segment") {
-      Wall w{number(k + 1, "AX"), number(k + 2, "AY"), number(k + 3, "BX"), number(k + 4, "BY"), 0};
+      Wall w{number(narg, arg, k + 1, "AX"), number(narg, arg, k + 2, "AY"),
+             number(narg, arg, k + 3, "BX"), number(narg, arg, k + 4, "BY"), 0};
       if (k + 5 >= narg || std::string(arg[k + 5]) != "type")
         fail("segment " + std::to_string(walls_.size() + 1) +
              ": 'type T' must follow its end points (" + usage + ")");
-      const double t = number(k + 6, "T");
+      const double t = number(narg, arg, k + 6, "T");
       if (t < 1.0 || t != std::floor(t))
         fail("type = " + std::string(arg[k + 6]) + "; allowed: an atom type, 1 or more");
       w.type = static_cast<int>(t);
       walls_.push_back(w);
       k += 7;
-    } else if (key == "velocity" || key == "rotate") {
-      if (walls_.empty()) fail(key + " before any segment (" + usage + ")");
-      Wall& w = walls_.back();
-      if (key == "velocity") {
-        w.vx = number(k + 1, "VX"), w.vy = number(k + 2, "VY");
-        k += 3;
-      } else {
-        w.cx = number(k + 1, "CX"), w.cy = number(k + 2, "CY"), w.omega = number(k + 3, "OMEGA");
-        k += 4;
-      }
-      if (w.omega != 0.0 && (w.vx != 0.0 || w.vy != 0.0))
-        fail("segment " + std::to_string(walls_.size()) +
-             " both translates and turns; allowed: one motion per segment");
+    } else if (key == "velocity" || key == "rotate" || key == "vibrate") {
+      k = read_motion(narg, arg, k);
     } else {
-      fail("unknown keyword '" + key + "'; allowed: segment, velocity, rotate (" + usage + ")");
+      fail("unknown keyword '" + key + "'; allowed: segment, velocity, rotate, vibrate (" + usage +
+           ")");
     }
   }
   if (walls_.empty()) fail(std::string("no segment given (") + usage + ")");
@@ -86,6 +72,46 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
   hits_.resize(walls_.size());
   start_ = now();
   place(0.0);
+}
+
+double FixSegmentWalls::number(int narg, char** arg, int k, const char* what) const {
+  if (k >= narg) fail(std::string(what) + " is missing (" + usage + ")");
+  const std::optional<double> x = finite_number(arg[k]);
+  if (!x) fail(std::string(what) + " = " + arg[k] + "; allowed: a finite number");
+  return *x;
+}
+
+// The motion keyword at arg[k] for the last segment; returns the index past its values.
+int FixSegmentWalls::read_motion(int narg, char** arg, int k) {
+  const std::string key = arg[k];
+  if (walls_.empty()) fail(key + " before any segment (" + usage + ")");
+  Wall& w = walls_.back();
+  const std::string which = "segment " + std::to_string(walls_.size());
+  if (w.motion != Motion::none)
+    fail(which + " is given a second motion (" + key + "); allowed: one motion per segment");
+  if (key == "velocity") {
+    w.motion = Motion::translate;
+    w.vx = number(narg, arg, k + 1, "VX"), w.vy = number(narg, arg, k + 2, "VY");
+    return k + 3;
+  }
+  if (key == "rotate") {
+    w.motion = Motion::rotate;
+    w.cx = number(narg, arg, k + 1, "CX"), w.cy = number(narg, arg, k + 2, "CY");
+    w.omega = number(narg, arg, k + 3, "OMEGA");
+    return k + 4;
+  }
+  w.motion = Motion::vibrate;
+  const double dx = number(narg, arg, k + 1, "DX"), dy = number(narg, arg, k + 2, "DY");
+  const double length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0.0)) fail(which + ": vibrate DX DY = 0 0; allowed: a direction, not zero");
+  w.dx = dx / length, w.dy = dy / length; // as the native driver normalises it
+  w.amplitude = number(narg, arg, k + 3, "AMPLITUDE");
+  w.frequency = number(narg, arg, k + 4, "FREQUENCY");
+  w.phase = number(narg, arg, k + 5, "PHASE");
+  if (w.amplitude < 0.0 || w.frequency < 0.0)
+    fail(which + ": vibrate AMPLITUDE " + arg[k + 3] + " FREQUENCY " + arg[k + 4] +
+         "; allowed: both >= 0 (m, Hz)");
+  return k + 6;
 }
 
 FixSegmentWalls::~FixSegmentWalls() {
@@ -137,22 +163,31 @@ void FixSegmentWalls::setup(int vflag) {
   post_force(vflag);
 }
 
-// Where the walls are t seconds after the start: translated, or turned about their centre.
+// Where the walls are t seconds after the start, and their translation's velocity: moved along,
+// turned about their centre, or vibrating along their direction.
 void FixSegmentWalls::place(double t) {
   for (std::size_t s = 0; s < walls_.size(); ++s) {
     const Wall& w = walls_[s];
     Placed& p = placed_[s];
-    if (w.omega == 0.0) {
-      p = {w.ax + w.vx * t, w.ay + w.vy * t, w.bx + w.vx * t, w.by + w.vy * t};
+    if (w.motion == Motion::rotate) {
+      const double c = std::cos(w.omega * t), sn = std::sin(w.omega * t);
+      const auto turn = [&](double x, double y, double& ox, double& oy) {
+        ox = w.cx + c * (x - w.cx) - sn * (y - w.cy);
+        oy = w.cy + sn * (x - w.cx) + c * (y - w.cy);
+      };
+      turn(w.ax, w.ay, p.ax, p.ay);
+      turn(w.bx, w.by, p.bx, p.by);
+      p.vx = p.vy = 0.0;
       continue;
     }
-    const double c = std::cos(w.omega * t), sn = std::sin(w.omega * t);
-    const auto turn = [&](double x, double y, double& ox, double& oy) {
-      ox = w.cx + c * (x - w.cx) - sn * (y - w.cy);
-      oy = w.cy + sn * (x - w.cx) + c * (y - w.cy);
-    };
-    turn(w.ax, w.ay, p.ax, p.ay);
-    turn(w.bx, w.by, p.bx, p.by);
+    double ox = w.vx * t, oy = w.vy * t; // no motion: velocity 0
+    p.vx = w.vx, p.vy = w.vy;
+    if (w.motion == Motion::vibrate) {
+      const VibrationState v = vibration_at(w.amplitude, w.frequency, w.phase, t);
+      ox = v.displacement * w.dx, oy = v.displacement * w.dy;
+      p.vx = v.velocity * w.dx, p.vy = v.velocity * w.dy;
+    }
+    p.ax = w.ax + ox, p.ay = w.ay + oy, p.bx = w.bx + ox, p.by = w.by + oy;
   }
 }
 
@@ -198,8 +233,9 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, s, shares))) continue;
       contacts_[static_cast<std::size_t>(i)] += 1.0;
       const Wall& w = walls_[s];
+      const Placed& at = placed_[s];
       // the wall's velocity at the contact: its translation, or its turn about the centre
-      const double wx = w.vx - w.omega * (h.y - w.cy), wy = w.vy + w.omega * (h.x - w.cx);
+      const double wx = at.vx - w.omega * (h.y - w.cy), wy = at.vy + w.omega * (h.x - w.cx);
       const double dx = x[i][0] - h.x, dy = x[i][1] - h.y;
       const ContactGeometry g =
           wall_geometry(dx, dy, std::sqrt(dx * dx + dy * dy), r, atom->rmass[i], v[i][0], v[i][1],

@@ -38,18 +38,25 @@ public:
   void restart(char* buffer) override;
 
 private:
+  enum class Motion { none, translate, rotate, vibrate };
   /// A segment as the deck gives it, at the fix's start, and its motion.
   struct Wall {
-    double ax, ay, bx, by;     ///< end points at the start (m)
-    int type;                  ///< the atom type whose material (pair_coeff T T) the wall is of
-    double vx = 0.0, vy = 0.0; ///< translation (m/s)
+    double ax, ay, bx, by; ///< end points at the start (m)
+    int type;              ///< the atom type whose material (pair_coeff T T) the wall is of
+    Motion motion = Motion::none;
+    double vx = 0.0, vy = 0.0;              ///< translation (m/s)
     double cx = 0.0, cy = 0.0, omega = 0.0; ///< rotation about (cx, cy) (rad/s)
+    double dx = 0.0, dy = 0.0;              ///< vibration: its direction, a unit vector
+    double amplitude = 0.0, frequency = 0.0, phase = 0.0; ///< m, Hz, rad
   };
-  /// A segment where it is now.
+  /// A segment where it is now, and the velocity of its translation or vibration.
   struct Placed {
     double ax, ay, bx, by;
+    double vx = 0.0, vy = 0.0; ///< m/s
   };
   [[noreturn]] void fail(const std::string& message) const;
+  double number(int narg, char** arg, int k, const char* what) const;
+  int read_motion(int narg, char** arg, int k);
   double now() const; ///< s: the simulation time, carried across restart files
   void place(double t);
   void make_history();

@@ -35,7 +35,7 @@ void add_export_command(CLI::App& app) {
   CLI::App* lammps = cmd->add_subcommand(
       "lammps", "a LAMMPS data file, masses and input deck (pair_style granthesis) of a scenario "
                 "after its packing, in DIR; refused, with the reason, for what LAMMPS cannot "
-                "express (segment walls, a tangential law with history, the freezing front)");
+                "express (the freezing front, rigid materials, lever arms at the radius)");
   lammps->add_option("scenario", o->scenario, "scenario file or built-in name")->required();
   lammps->add_option("dir", o->dir, "the folder for in.NAME, data.NAME and masses.NAME")
       ->required();

@@ -1,10 +1,10 @@
 #include "drivers/drivers.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
 #include "talus/error.hpp"
+#include "talus/vibration.hpp"
 
 namespace talus {
 
@@ -45,9 +45,9 @@ struct Pose {
 Pose pose_at(const Motion& m, double t) {
   Pose pose;
   if (const auto* v = std::get_if<Vibrate>(&m)) {
-    const double w = 2.0 * std::numbers::pi * v->frequency;
-    pose.offset = v->amplitude * std::sin(w * t + v->phase) * v->direction;
-    pose.velocity = v->amplitude * w * std::cos(w * t + v->phase) * v->direction;
+    const VibrationState s = vibration_at(v->amplitude, v->frequency, v->phase, t);
+    pose.offset = s.displacement * v->direction;
+    pose.velocity = s.velocity * v->direction;
   } else if (const auto* tr = std::get_if<Translate>(&m)) {
     pose.offset = t * tr->velocity;
     pose.velocity = tr->velocity;

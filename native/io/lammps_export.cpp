@@ -283,10 +283,9 @@ std::string segment_motion(const BuiltScenario& b, std::size_t s) {
     if (const auto* r = std::get_if<Rotate>(&d.motion))
       return fmt::format(" rotate {} {} {}", exact(r->centre.x), exact(r->centre.y),
                          exact(r->angular_velocity));
-    throw InvalidArgument(refused("drivers", "wall segment " + std::to_string(s) +
-                                                 " vibrates, which fix granthesis/wall does "
-                                                 "not do yet; allowed for segments: translate, "
-                                                 "rotate (or --set geometry.walls=particles)"));
+    const auto& v = std::get<Vibrate>(d.motion);
+    return fmt::format(" vibrate {} {} {} {} {}", exact(v.direction.x), exact(v.direction.y),
+                       exact(v.amplitude), exact(v.frequency), exact(v.phase));
   }
   return "";
 }

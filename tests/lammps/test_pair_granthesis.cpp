@@ -71,9 +71,18 @@ TEST(FixSegmentWalls, BadInputNamesTheSettingAndTheAllowedValues) {
       "type 3 does not exist; allowed: 1 to 2");
   expect_error({pair, "pair_coeff * *",
                 "fix w all granthesis/wall segment 0 0 1 0 type 1 velocity 1 0 rotate 0 0 1"},
-               "both translates and turns");
+               "segment 1 is given a second motion (rotate); allowed: one motion per segment");
+  expect_error({pair, "pair_coeff * *",
+                "fix w all granthesis/wall segment 0 0 1 0 type 1 vibrate 0 0 0.001 10 0"},
+               "segment 1: vibrate DX DY = 0 0; allowed: a direction, not zero");
+  expect_error({pair, "pair_coeff * *",
+                "fix w all granthesis/wall segment 0 0 1 0 type 1 vibrate 0 1 -0.001 10 0"},
+               "vibrate AMPLITUDE -0.001 FREQUENCY 10; allowed: both >= 0 (m, Hz)");
+  expect_error({pair, "pair_coeff * *",
+                "fix w all granthesis/wall segment 0 0 1 0 type 1 vibrate 0 1 0.001 10"},
+               "PHASE is missing");
   expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall wall 0 0 1 0"},
-               "unknown keyword 'wall'; allowed: segment, velocity, rotate");
+               "unknown keyword 'wall'; allowed: segment, velocity, rotate, vibrate");
   expect_error({"pair_style zero 0.01", "pair_coeff * *",
                 "fix w all granthesis/wall segment 0 0 1 0 type 1", "run 0"},
                "needs pair_style granthesis");

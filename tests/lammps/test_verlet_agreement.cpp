@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "two_disks.hpp"
 
@@ -95,14 +96,12 @@ TEST(VerletAgreement, SpringLawsAgreeToRounding) {
     }
 }
 
-// fix granthesis/wall against the native segment walls: a spinning disk thrown obliquely onto a
-// floor, and one falling onto the joint of a V (the shared end point touched once), with each
-// tangential law, through the whole contact: rounding as above.
-TEST(VerletAgreement, SegmentWallsAgreeToRounding) {
+// Disks against segment walls in both engines, given as the fix's line and as the same walls
+// (and drivers) built natively, with each tangential law for 5000 steps of 1e-7 s: rounding as
+// above, and every disk turned round by its wall.
+void segment_walls_agree(const char* what, const std::vector<Disk>& disks, const std::string& fix,
+                         const std::function<void(World&)>& walls) {
   const Material m = grains();
-  // 50 um above the floor, and 0.18 mm above the V's faces, with 0.2 and 1 m/s to go
-  const std::vector<Disk> disks{{{-0.02, 0.00505}, {0.2, -0.2}, 0.005, 2.0e-4, 30.0},
-                                {{0.04, 0.0032}, {0.0, -1.0}, 0.004, 1.5e-4, -10.0}};
   const double dt = 1e-7;
   const int steps = 5000;
   for (const std::string tangential : {"coulomb", "cundall_strack", "mindlin"}) {
@@ -110,28 +109,62 @@ TEST(VerletAgreement, SegmentWallsAgreeToRounding) {
     LammpsInstance l;
     set_up(l, "hertz " + tangential, m, disks, !keeps_history(parse_tangential_law(tangential)),
            dt);
-    // the floor up to x = 0.03, then a V whose joint lies under the second disk
-    l.commands({"fix walls all granthesis/wall segment -0.05 0 0.03 0 type 1 segment 0.03 0 0.04 "
-                "-0.001 type 1 segment 0.04 -0.001 0.05 0.002 type 1",
-                "fix move all nve/sphere disc", "fix plane all enforce2d",
+    l.commands({fix, "fix move all nve/sphere disc", "fix plane all enforce2d",
                 "run " + std::to_string(steps)});
-    Simulation s =
-        native("hertz", tangential, m, disks, dt, VerletVelocity::half_step, [](World& w) {
-          w.add_wall({-0.05, 0.0}, {0.03, 0.0});
-          w.add_wall({0.03, 0.0}, {0.04, -0.001});
-          w.add_wall({0.04, -0.001}, {0.05, 0.002});
-        });
+    Simulation s = native("hertz", tangential, m, disks, dt, VerletVelocity::half_step, walls);
     s.run(static_cast<std::uint64_t>(steps));
     const Difference d = between(l, s);
-    std::printf("walls, %s: %.2e m, %.2e m/s, %.2e rad/s\n", tangential.c_str(), d.position,
+    std::printf("%s, %s: %.2e m, %.2e m/s, %.2e rad/s\n", what, tangential.c_str(), d.position,
                 d.velocity, d.spin);
     EXPECT_LT(d.position, 1e-15);
     EXPECT_LT(d.velocity, 1e-12 * 1.0);
     EXPECT_LT(d.spin, 1e-12 * 30.0);
-    // the disks did reach the walls: both turned round
-    EXPECT_GT(l.velocity(1)[1], 0.0);
-    EXPECT_GT(l.velocity(2)[1], 0.0);
+    for (std::size_t k = 1; k <= disks.size(); ++k)
+      EXPECT_GT(l.velocity(static_cast<int>(k))[1], 0.0) << "disk " << k;
   }
+}
+
+// fix granthesis/wall against the native segment walls: a spinning disk thrown obliquely onto a
+// floor, and one falling onto the joint of a V (the shared end point touched once), through the
+// whole contact.
+TEST(VerletAgreement, SegmentWallsAgreeToRounding) {
+  // 50 um above the floor, and 0.18 mm above the V's faces, with 0.2 and 1 m/s to go
+  const std::vector<Disk> disks{{{-0.02, 0.00505}, {0.2, -0.2}, 0.005, 2.0e-4, 30.0},
+                                {{0.04, 0.0032}, {0.0, -1.0}, 0.004, 1.5e-4, -10.0}};
+  // the floor up to x = 0.03, then a V whose joint lies under the second disk
+  segment_walls_agree("walls", disks,
+                      "fix walls all granthesis/wall segment -0.05 0 0.03 0 type 1 segment 0.03 0 "
+                      "0.04 -0.001 type 1 segment 0.04 -0.001 0.05 0.002 type 1",
+                      [](World& w) {
+                        w.add_wall({-0.05, 0.0}, {0.03, 0.0});
+                        w.add_wall({0.03, 0.0}, {0.04, -0.001});
+                        w.add_wall({0.04, -0.001}, {0.05, 0.002});
+                      });
+}
+
+// The three motions of fix granthesis/wall against the native drivers of segments: a vibrating
+// floor, one moving up and one turning, each met by a falling disk: the walls are where the
+// drivers put them at every step.
+TEST(VerletAgreement, MovingSegmentsAgreeToRounding) {
+  // 50 um above each segment, falling at 0.3 m/s
+  const std::vector<Disk> disks{{{-0.02, 0.00505}, {0.05, -0.3}, 0.005, 2.0e-4, 30.0},
+                                {{0.075, 0.00505}, {0.0, -0.3}, 0.005, 2.0e-4, 0.0},
+                                {{0.14, 0.00405}, {-0.02, -0.3}, 0.004, 1.5e-4, -10.0}};
+  segment_walls_agree("moving walls", disks,
+                      "fix walls all granthesis/wall segment -0.05 0 0.03 0 type 1 vibrate 0 1 "
+                      "2e-4 40 0 segment 0.06 0 0.09 0 type 1 velocity 0 0.1 segment 0.11 0 0.15 "
+                      "0 type 1 rotate 0.13 0 2",
+                      [](World& w) {
+                        const auto moved = [&](Vec2 a, Vec2 b, Motion motion) {
+                          Driver d;
+                          d.motion = motion;
+                          d.targets.segments = {static_cast<std::uint32_t>(w.add_wall(a, b))};
+                          w.drivers.push_back(d);
+                        };
+                        moved({-0.05, 0.0}, {0.03, 0.0}, Vibrate{{0.0, 1.0}, 2e-4, 40.0, 0.0});
+                        moved({0.06, 0.0}, {0.09, 0.0}, Translate{{0.0, 0.1}});
+                        moved({0.11, 0.0}, {0.15, 0.0}, Rotate{{0.13, 0.0}, 2.0});
+                      });
 }
 
 } // namespace
