@@ -117,6 +117,21 @@ void time_rounds(LawRuns& l, int rounds, std::uint64_t steps) {
   }
 }
 
+// Each copy's bytes per particle by what they hold (Simulation::footprint).
+void print_footprints(const LawRuns& l) {
+  const double n = static_cast<double>(l.settled.world.particles.size());
+  fmt::print("| tangential law | step | particles | integrator | neighbour list | history | "
+             "contact candidates | other | total (bytes per particle) |\n"
+             "|---|---|---|---|---|---|---|---|---|\n");
+  for (std::size_t k = 0; k < l.runs.size(); ++k) {
+    const Footprint f = l.runs[k].sim->footprint();
+    const auto per = [&](std::size_t b) { return static_cast<double>(b) / n; };
+    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} |\n",
+               l.labels[k], l.runs[k].sim->step_description(), per(f.particles), per(f.integrator),
+               per(f.list), per(f.history), per(f.candidates), per(f.other), per(f.total()));
+  }
+}
+
 // The table, against the Cundall-Strack copy if there is one, and the results CSV's rows.
 void report(const LawsOptions& o, const LawRuns& l, std::size_t nx, std::size_t ny) {
   const auto reference = std::find(l.labels.begin(), l.labels.end(), "cundall_strack");
@@ -172,6 +187,7 @@ void run_laws(const LawsOptions& o) {
   fmt::print("  (each round: {})\n", fmt::format("{}", fmt::join(l.labels, ", ")));
   time_rounds(l, o.rounds, o.steps);
   report(o, l, nx, ny);
+  print_footprints(l);
 }
 
 } // namespace

@@ -175,10 +175,18 @@ double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLa
   return worst;
 }
 
+namespace {
+template <class V> std::size_t bytes(const std::vector<V>& v) {
+  return v.capacity() * sizeof(V);
+}
+} // namespace
+
+std::size_t ForceStage::candidate_bytes() const {
+  return bytes(candidates_.entry) + bytes(candidates_.slot) + bytes(candidates_.count);
+}
+
 std::size_t ForceStage::footprint_bytes() const {
-  const auto bytes = []<class V>(const std::vector<V>& v) { return v.capacity() * sizeof(V); };
-  return bytes(deferred_) + bytes(wall_force_) + bytes(candidates_.entry) +
-         bytes(candidates_.slot) + bytes(candidates_.count) + schedule_.footprint_bytes();
+  return bytes(deferred_) + bytes(wall_force_) + schedule_.footprint_bytes();
 }
 
 } // namespace talus

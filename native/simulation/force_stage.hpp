@@ -71,6 +71,8 @@ public:
   double deepest_overlap() const { return deepest_overlap_; }
   /// How many stages chose the candidates again.
   std::uint64_t candidate_choices() const { return candidate_choices_; }
+  /// Bytes of the contact candidates, and of everything else the stage holds.
+  std::size_t candidate_bytes() const;
   std::size_t footprint_bytes() const;
 
 private:

@@ -298,20 +298,25 @@ template <class T> std::size_t bytes(const std::vector<T>& v) {
 }
 } // namespace
 
-std::size_t Simulation::footprint_bytes() const {
+Footprint Simulation::footprint() const {
   const Particles& p = world_.particles;
   const GearDerivatives& g = p.gear;
   const NeighbourList& l = list_;
-  return bytes(p.position) + bytes(p.velocity) + bytes(p.force) + bytes(p.angle) +
-         bytes(p.angular_velocity) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
-         bytes(p.inertia) + bytes(p.inv_mass) + bytes(p.inv_inertia) + bytes(p.material) +
-         bytes(p.kind) + bytes(p.id) + bytes(g.r2) + bytes(g.r3) + bytes(g.r4) + bytes(g.phi2) +
-         bytes(g.phi3) + bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous) +
-         bytes(world_.walls) + bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) +
-         bytes(l.history) + bytes(l.block_first_slot) + bytes(l.deferred_offset) +
-         bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) + bytes(l.wall_offset) +
-         bytes(l.wall_segment) + bytes(l.wall_history) + bytes(l.reference) +
-         bytes(l.segment_reference) + bytes(driven_) + forces_.footprint_bytes();
+  Footprint f;
+  f.particles = bytes(p.position) + bytes(p.velocity) + bytes(p.force) + bytes(p.angle) +
+                bytes(p.angular_velocity) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
+                bytes(p.inertia) + bytes(p.inv_mass) + bytes(p.inv_inertia) + bytes(p.material) +
+                bytes(p.kind) + bytes(p.id);
+  f.integrator = bytes(g.r2) + bytes(g.r3) + bytes(g.r4) + bytes(g.phi2) + bytes(g.phi3) +
+                 bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous);
+  f.list = bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) + bytes(l.block_first_slot) +
+           bytes(l.deferred_offset) + bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) +
+           bytes(l.wall_offset) + bytes(l.wall_segment) + bytes(l.reference) +
+           bytes(l.segment_reference);
+  f.history = bytes(l.history) + bytes(l.wall_history);
+  f.candidates = forces_.candidate_bytes();
+  f.other = bytes(world_.walls) + bytes(driven_) + forces_.footprint_bytes();
+  return f;
 }
 
 void Simulation::run(std::uint64_t steps, const std::function<void(const Simulation&)>& observer,

@@ -68,6 +68,19 @@ struct SimulationState {
 
 class ParticleEdits;
 
+/// The engine's memory by what it holds, bytes.
+struct Footprint {
+  std::size_t particles = 0;  ///< positions, velocities, forces, angles, spins, torques, radii,
+                              ///< masses, inertia, materials, kinds, ids
+  std::size_t integrator = 0; ///< Gear's higher derivatives, or Verlet's previous force and torque
+  std::size_t list = 0;       ///< the neighbour list: rows, neighbours, images, build positions,
+                              ///< deferred slots, wall entries
+  std::size_t history = 0;    ///< the springs of the list's entries and of the wall contacts
+  std::size_t candidates = 0; ///< the contact candidates (ContactCandidates)
+  std::size_t other = 0;      ///< walls, driven particles, the force stage's slots and schedule
+  std::size_t total() const { return particles + integrator + list + history + candidates + other; }
+};
+
 class Simulation {
 public:
   /// Validates the setup (materials, laws, timestep) and computes the initial forces.
@@ -116,9 +129,9 @@ public:
   /// chose the contact candidates again (ContactCandidates), since construction.
   std::uint64_t drift_tests() const { return drift_tests_; }
   std::uint64_t candidate_choices() const { return forces_.candidate_choices(); }
-  /// Bytes the engine holds: particles, walls, neighbour list with its history, force buffers
-  /// (allocated capacity, not the process' resident size).
-  std::size_t footprint_bytes() const;
+  /// Bytes the engine holds, by what for (allocated capacity, not the process' resident size).
+  Footprint footprint() const;
+  std::size_t footprint_bytes() const { return footprint().total(); }
   /// What the scene uses, and so what the step leaves out (step_features.hpp): chosen at the
   /// construction and again at the first step after the world or a particle was edited.
   const StepFeatures& step_features() const { return features_; }
