@@ -155,5 +155,31 @@ TEST(StepFeatures, TheStepIsChosenAgainWhenTheSceneChanges) {
   }
 }
 
+// A wall added to a scene that had none, then gravity switched off, with a history-free law:
+// the step takes the wall pass up and leaves the weight out, as the general step does.
+TEST(StepFeatures, TheStepIsChosenAgainWhenAWallIsAddedOrGravityGoes) {
+  const World w = scene(Scene::no_walls_no_drivers);
+  for (const Integrator integrator : {Integrator::gear, Integrator::verlet}) {
+    Simulation special(w, config(integrator, law_id<ViscousCoulomb>));
+    Simulation general(w, config(integrator, law_id<ViscousCoulomb>));
+    general.use_general_step(true);
+    const auto both = [&](auto&& edit) {
+      edit(special);
+      edit(general);
+      special.run(100);
+      general.run(100);
+      expect_same_state(special, general, false);
+    };
+    both([](Simulation&) {});
+    EXPECT_EQ(special.step_description(), "history-free, no walls, no drivers, one material");
+    // a floor under the lowest grains, which they reach within the run
+    both([](Simulation& s) { s.edit_world().add_wall({0.0, 0.011}, {0.3, 0.011}); });
+    EXPECT_EQ(special.step_description(), "history-free, no drivers, one material");
+    EXPECT_NE(special.world().walls[0].force.y, 0.0); // the grains did press on it
+    both([](Simulation& s) { s.edit_world().gravity = {0.0, 0.0}; });
+    EXPECT_EQ(special.step_description(), "history-free, no drivers, one material, no gravity");
+  }
+}
+
 } // namespace
 } // namespace talus
