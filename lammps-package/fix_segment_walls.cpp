@@ -46,6 +46,10 @@ FixSegmentWalls::FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** a
   peratom_flag = 1;
   size_peratom_cols = 0;
   peratom_freq = 1;
+  // local: a row per wall contact (dump local), as the native engine's contacts.vtp has them
+  local_flag = 1;
+  size_local_cols = local_columns;
+  local_freq = 1;
   for (int k = 3; k < narg;) {
     const std::string key = arg[k];
     if (key == "segment") {
@@ -123,7 +127,7 @@ void FixSegmentWalls::fail(const std::string& message) const {
 }
 
 int FixSegmentWalls::setmask() {
-  return LAMMPS_NS::FixConst::POST_FORCE;
+  return LAMMPS_NS::FixConst::POST_FORCE | LAMMPS_NS::FixConst::END_OF_STEP;
 }
 
 double FixSegmentWalls::now() const {
@@ -202,9 +206,7 @@ void FixSegmentWalls::post_force(int /*vflag*/) {
 
 template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   double** x = atom->x;
-  double** v = atom->v;
   double** f = atom->f;
-  double** omega = atom->omega;
   double** torque = atom->torque;
   const int* mask = atom->mask;
   const int* type = atom->type;
@@ -216,6 +218,8 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   // read only after this step's forces (thermo, dumps), so it need not move with the atoms
   contacts_.assign(static_cast<std::size_t>(std::max(atom->nmax, 1)), 0.0);
   vector_atom = contacts_.data();
+  local_.clear();
+  local_atom_.clear();
   const std::size_t count = placed_.size();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
@@ -232,15 +236,9 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       const SegmentHit& h = hits_[s];
       if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, s, shares))) continue;
       contacts_[static_cast<std::size_t>(i)] += 1.0;
-      const Wall& w = walls_[s];
-      const Placed& at = placed_[s];
-      // the wall's velocity at the contact: its translation, or its turn about the centre
-      const double wx = at.vx - w.omega * (h.y - w.cy), wy = at.vy + w.omega * (h.x - w.cx);
-      const double dx = x[i][0] - h.x, dy = x[i][1] - h.y;
-      const ContactGeometry g =
-          wall_geometry(dx, dy, std::sqrt(dx * dx + dy * dy), r, atom->rmass[i], v[i][0], v[i][1],
-                        omega[i][2], wx, wy);
-      const PairParameters& p = pair_->parameters(type[i], w.type);
+      double wx = 0.0, wy = 0.0;
+      const ContactGeometry g = geometry(i, s, h.x, h.y, wx, wy);
+      const PairParameters& p = pair_->parameters(type[i], walls_[s].type);
       double spring = 0.0;
       double* kept = nullptr;
       if constexpr (T::has_history) {
@@ -257,10 +255,63 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       force_[1] -= c.force_y;
       power += c.force_x * wx + c.force_y * wy;
       energy_ += contact_elastic_energy<N, T>(p, g, spring);
+      const double row[local_columns] = {static_cast<double>(atom->tag[i]),
+                                         static_cast<double>(s + 1),
+                                         c.normal_force,
+                                         g.overlap,
+                                         h.x,
+                                         h.y};
+      local_.insert(local_.end(), row, row + local_columns);
+      local_atom_.push_back(i);
     }
   }
+  publish_local();
   if constexpr (T::has_history) history_->end_pass(atom->nlocal);
   if (advance) work_ += power * dt;
+}
+
+// Atom i's contact with segment s at the point (hx, hy): its geometry, and the wall's velocity
+// there (its translation or vibration, or its turn about the centre).
+ContactGeometry FixSegmentWalls::geometry(int i, std::size_t s, double hx, double hy, double& wx,
+                                          double& wy) const {
+  const Wall& w = walls_[s];
+  const Placed& at = placed_[s];
+  wx = at.vx - w.omega * (hy - w.cy), wy = at.vy + w.omega * (hx - w.cx);
+  const double* x = atom->x[i];
+  const double dx = x[0] - hx, dy = x[1] - hy;
+  return wall_geometry(dx, dy, std::sqrt(dx * dx + dy * dy), atom->radius[i], atom->rmass[i],
+                       atom->v[i][0], atom->v[i][1], atom->omega[i][2], wx, wy);
+}
+
+// The local array's normal forces again from the step's final velocities: the state a dump
+// shows, as compute pair/local gives the pairs' (the positions, so the overlaps and points, are
+// those of the force stage).
+void FixSegmentWalls::end_of_step() {
+  with_contact_law(pair_->normal_law(), pair_->tangential_law(),
+                   [&]<class N, class T>() { refresh_normal_forces<N, T>(); });
+}
+
+template <class N, class T> void FixSegmentWalls::refresh_normal_forces() {
+  for (std::size_t k = 0; k < local_atom_.size(); ++k) {
+    double* row = &local_[k * local_columns];
+    const int i = local_atom_[k];
+    const auto s = static_cast<std::size_t>(row[1]) - 1;
+    double wx = 0.0, wy = 0.0;
+    const ContactGeometry g = geometry(i, s, row[4], row[5], wx, wy);
+    double spring = 0.0; // the normal force does not depend on it
+    row[2] =
+        contact_force<N, T>(pair_->parameters(atom->type[i], walls_[s].type), g, spring, update->dt)
+            .normal_force;
+  }
+}
+
+// The local array: a row per wall contact of this rank's atoms in the last step.
+void FixSegmentWalls::publish_local() {
+  const std::size_t rows = local_.size() / local_columns;
+  local_rows_.resize(rows);
+  for (std::size_t k = 0; k < rows; ++k) local_rows_[k] = &local_[k * local_columns];
+  size_local_rows = static_cast<int>(rows);
+  array_local = local_rows_.data();
 }
 
 // The walls' elastic energy, over every rank's atoms (with fix_modify energy yes, part of pe).

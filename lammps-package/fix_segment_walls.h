@@ -15,6 +15,7 @@ FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
 
 #include "fix.h"
 #include "run_clock.hpp"
+#include "talus/contact_geometry.hpp"
 #include "talus/segment_contact.hpp"
 
 namespace talus::lammps {
@@ -32,6 +33,7 @@ public:
   void init() override;
   void setup(int vflag) override;
   void post_force(int vflag) override;
+  void end_of_step() override;
   double compute_scalar() override;
   double compute_vector(int n) override;
   void write_restart(FILE* file) override;
@@ -61,6 +63,10 @@ private:
   void place(double t);
   void make_history();
   template <class N, class T> void add_forces(bool advance);
+  void publish_local();
+  ContactGeometry geometry(int i, std::size_t s, double hx, double hy, double& wx,
+                           double& wy) const;
+  template <class N, class T> void refresh_normal_forces();
 
   std::vector<Wall> walls_;
   std::vector<Placed> placed_;
@@ -75,6 +81,12 @@ private:
   double force_[2] = {};         ///< N: force of this rank's atoms on the walls, last step
   double totals_[4] = {};        ///< compute_vector's values, summed over ranks
   std::vector<double> contacts_; ///< per atom: segments touched in the last step
+  /// The local array's columns: the atom's id, the segment (from 1), the normal force F_n (N),
+  /// the overlap (m), and the contact's point on the segment (x, y, m).
+  static constexpr int local_columns = 6;
+  std::vector<double> local_;       ///< the last step's wall contacts, a row after another
+  std::vector<double*> local_rows_; ///< array_local: the rows of local_
+  std::vector<int> local_atom_;     ///< each row's atom (its local index)
   LAMMPS_NS::bigint summed_step_ = -1;
 };
 

@@ -26,12 +26,23 @@ dump_modify talus_contacts format float %.17g
 """
 
 
+# Where the deck has wall segments (the export's `fix walls ... granthesis/wall`): each wall
+# contact with the atom, the segment (from 1), F_n, the overlap and the point on the segment.
+WALL_DUMP = """\
+dump talus_walls all local ${analysis_every} dump.walls f_walls[1] f_walls[2] f_walls[3] &
+  f_walls[4] f_walls[5] f_walls[6]
+dump_modify talus_walls format float %.17g
+"""
+
+
 def add_analysis_dumps(deck):
-    """Puts ANALYSIS_DUMPS before the deck's `run` line."""
+    """Puts ANALYSIS_DUMPS (and WALL_DUMP where there are wall segments) before the deck's `run`
+    line."""
     with open(deck) as f:
         lines = f.read().splitlines(keepends=True)
     at = next(k for k, line in enumerate(lines) if line.startswith("run "))
-    lines.insert(at, ANALYSIS_DUMPS)
+    walls = any(line.startswith("fix walls ") and "granthesis/wall" in line for line in lines)
+    lines.insert(at, ANALYSIS_DUMPS + (WALL_DUMP if walls else ""))
     with open(deck, "w") as f:
         f.writelines(lines)
 
@@ -128,11 +139,50 @@ def pvd(entries):
             f"  <Collection>\n{rows}  </Collection>\n</VTKFile>\n")
 
 
+def pair_contacts(lammps_dir, step, pairs_block, xy, at, kind):
+    """The touching pairs of dump.contacts at `step` as (id, partner id, F_n, overlap, centre,
+    partner's centre), without those of two wall particles (the native engine never forms
+    them); the distance pair/local saw must be that of the atoms dumped."""
+    columns, pairs = pairs_block
+    p = {n: pairs[:, i] for i, n in enumerate(columns)}
+    found = []
+    for r in range(len(pairs)):
+        a, b = int(p["c_talus_pair_ids[1]"][r]), int(p["c_talus_pair_ids[2]"][r])
+        if p["c_talus_pair_forces[3]"][r] <= 0.0 or (kind[a] != 0 and kind[b] != 0):
+            continue
+        d = np.hypot(*(xy[at[a]] - xy[at[b]]))
+        if abs(d - p["c_talus_pair_forces[1]"][r]) > 1e-9 * d:
+            raise ValueError(f"{lammps_dir}: dump.contacts at step {step} does not match "
+                             "dump.frames")
+        found.append((a, b, p["c_talus_pair_forces[2]"][r], p["c_talus_pair_forces[3]"][r],
+                      xy[at[a]], xy[at[b]]))
+    return found
+
+
+def wall_contacts(walls_block, xy, at):
+    """The wall contacts of dump.walls (fix granthesis/wall's local array) as pair_contacts has
+    them, the partner numbered as the native engine numbers a segment: -1 - its index."""
+    _, rows = walls_block
+    return [(int(a), -int(s), force, overlap, xy[at[int(a)]], np.array([px, py]))
+            for a, s, force, overlap, px, py in rows]
+
+
+def write_contacts(path, found):
+    """A contacts .vtp of pair_contacts' rows, ids from 0 as the native engine's."""
+    ends = np.array([end for row in found for end in (row[4], row[5])]).reshape(-1, 2)
+    with open(path, "w") as f:
+        f.write(polydata(ends, 2, [], [
+            ("normal_force", 1, [row[2] for row in found]),
+            ("overlap", 1, [row[3] for row in found]),
+            ("particle", 1, [row[0] - 1 for row in found]),
+            ("partner", 1, [row[1] - 1 if row[1] > 0 else row[1] for row in found])]))
+
+
 def lammps_run_folder(lammps_dir, native_folder, dt, out):
     """Writes `out`, a talus run folder of the LAMMPS run in `lammps_dir` (its dump.frames and
-    dump.contacts): the native run's scenario, and its kinds and materials by id (LAMMPS ids are
-    the native ids + 1; a grain's kind and material never change). Contacts between two wall
-    particles are left out, as the native engine never forms them."""
+    dump.contacts, and dump.walls where there are wall segments): the native run's scenario, and
+    its kinds and materials by id (LAMMPS ids are the native ids + 1; a grain's kind and
+    material never change)."""
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(os.path.join(out, "snapshots"))
     shutil.copy(os.path.join(native_folder, "scenario.toml"), out)
@@ -142,6 +192,9 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
     frames = list(dump_blocks(os.path.join(lammps_dir, "dump.frames")))
     contacts = {step: (columns, rows) for step, columns, rows in
                 dump_blocks(os.path.join(lammps_dir, "dump.contacts"))}
+    walls_path = os.path.join(lammps_dir, "dump.walls")
+    walls = ({step: (columns, rows) for step, columns, rows in dump_blocks(walls_path)}
+             if os.path.exists(walls_path) else {})
     particles_pvd, contacts_pvd = [], []
     for k, (step, columns, rows) in enumerate(frames):
         c = {name: rows[:, i] for i, name in enumerate(columns)}
@@ -159,28 +212,11 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
                 ("kind", 1, [kind[i] for i in ids]),
                 ("material", 1, [material[i] for i in ids])], []))
         particles_pvd.append((step * dt, name))
-        pair_columns, pairs = contacts[step]
-        p = {n: pairs[:, i] for i, n in enumerate(pair_columns)}
-        keep = []
-        for r in range(len(pairs)):
-            a, b = int(p["c_talus_pair_ids[1]"][r]), int(p["c_talus_pair_ids[2]"][r])
-            if p["c_talus_pair_forces[3]"][r] <= 0.0 or (kind[a] != 0 and kind[b] != 0):
-                continue
-            # the distance pair/local saw must be that of the atoms dumped: rows in step
-            d = np.hypot(*(xy[at[a]] - xy[at[b]]))
-            if abs(d - p["c_talus_pair_forces[1]"][r]) > 1e-9 * d:
-                raise ValueError(f"{lammps_dir}: dump.contacts at step {step} does not match "
-                                 "dump.frames")
-            keep.append((a, b, r))
-        ends = np.array([xy[at[a]] if e == 0 else xy[at[b]] for a, b, _ in keep for e in (0, 1)])
-        rows_kept = [r for _, _, r in keep]
+        found = pair_contacts(lammps_dir, step, contacts[step], xy, at, kind)
+        if step in walls:
+            found += wall_contacts(walls[step], xy, at)
         name = f"snapshots/contacts_{k:06d}.vtp"
-        with open(os.path.join(out, name), "w") as f:
-            f.write(polydata(ends.reshape(-1, 2), 2, [], [
-                ("normal_force", 1, p["c_talus_pair_forces[2]"][rows_kept]),
-                ("overlap", 1, p["c_talus_pair_forces[3]"][rows_kept]),
-                ("particle", 1, [a - 1 for a, _, _ in keep]),
-                ("partner", 1, [b - 1 for _, b, _ in keep])]))
+        write_contacts(os.path.join(out, name), found)
         contacts_pvd.append((step * dt, name))
     with open(os.path.join(out, "particles.pvd"), "w") as f:
         f.write(pvd(particles_pvd))

@@ -6,10 +6,11 @@ native engine's contacts, and the measures are right on shapes with known answer
 
 The 1000 falling disks of inputs/validation/settling_1000 run in native velocity Verlet with
 LAMMPS' damper velocity and in LAMMPS with granthesis, whose trajectories agree to rounding over
-the case (docs/validation.md). At every common snapshot the converted LAMMPS folder must then
-hold the same contacts (pairs by id) with the same normal forces, to the 9 digits the native
-.vtp files print (relative 1e-7: a force is k times an overlap of about 1e-3 radii, which
-rounding moves by far less), and `talus analyze` must read it.
+the case (docs/validation.md), in a box of wall particles and in one of wall segments (fix
+granthesis/wall). At every common snapshot the converted LAMMPS folder must then hold the same
+contacts (pairs by id, and grains with a segment) with the same normal forces, to the 9 digits
+the native .vtp files print (relative 1e-7: a force is k times an overlap of about 1e-3 radii,
+which rounding moves by far less), the same coordination, and `talus analyze` must read it.
 """
 import json
 import math
@@ -75,22 +76,23 @@ def shapes():
           f"triangular lattice: {phi:.6f} +- {error:.1e} against {exact:.6f}")
 
 
-def engines(talus, lmp, source, work):
+def engines(talus, lmp, source, work, walls):
     scenario = os.path.join(source, "inputs", "validation", "settling_1000", "scenario.toml")
     verlet = ["--set", "simulation.integrator=verlet", "--set",
-              "simulation.verlet_velocity=half_step", "--set", "output.snapshot_interval=0.02"]
-    native = os.path.join(work, "native")
+              "simulation.verlet_velocity=half_step", "--set", "output.snapshot_interval=0.02",
+              "--set", f"geometry.walls={walls}"]
+    native = os.path.join(work, f"native-{walls}")
     run([talus, "run", scenario, "--out", native, "--quiet", "--threads", "1"] + verlet)
     with open(os.path.join(native, "run.json")) as f:
         dt = json.load(f)["timestep"]
-    deck = os.path.join(work, "lammps")
+    deck = os.path.join(work, f"lammps-{walls}")
     run([talus, "export", "lammps", scenario, deck, "--quiet"] + verlet)
     add_analysis_dumps(os.path.join(deck, "in.settling_1000"))
     run([lmp, "-in", "in.settling_1000", "-var", "analysis_every", str(round(0.02 / dt)),
          "-log", "log.lammps", "-screen", "none"], cwd=deck)
-    folder = lammps_run_folder(deck, native, dt, os.path.join(work, "lammps-run"))
+    folder = lammps_run_folder(deck, native, dt, os.path.join(work, f"lammps-run-{walls}"))
     ours = {round(t / dt): name for t, name in pvd_entries(os.path.join(native, "contacts.pvd"))}
-    compared, most = 0, 0
+    compared, most, on_walls = 0, 0, 0
     for t, name in pvd_entries(os.path.join(folder, "contacts.pvd")):
         if round(t / dt) not in ours:
             continue
@@ -100,19 +102,26 @@ def engines(talus, lmp, source, work):
         a = {k: v for k, v in a.items() if v > 0}
         b = {k: v for k, v in b.items() if v > 0}
         same = a.keys() == b.keys() and all(abs(a[k] - b[k]) <= 1e-7 * a[k] for k in a)
-        check(same, f"t = {t:.4f} s: {len(a)} native contacts, {len(b)} LAMMPS, "
-              "the same pairs and forces" if same else "different pairs or forces")
+        check(same, f"{walls}, t = {t:.4f} s: {len(a)} native contacts, {len(b)} LAMMPS, "
+              "the same pairs and forces" if same else f"{walls}: different pairs or forces")
         compared += 1
         most = max(most, len(a))
-    check(compared >= 4 and most > 100, f"{compared} snapshots compared, up to {most} contacts")
-    region, window = [0.02, 0.01, 0.18, 0.09], [0.09, 0.11]
+        on_walls = max(on_walls, sum(1 for pair in b if pair[0] < 0))
+    check(compared >= 4 and most > 100, f"{walls}: {compared} snapshots compared, up to {most} "
+          "contacts")
+    if walls == "segments":  # segment contacts (partner < 0) come from fix granthesis/wall
+        check(on_walls > 10, f"segments: up to {on_walls} contacts with the wall segments")
+    # with segments, the grains on the floor and against the sides too: their wall contacts count
+    region = [0.02, 0.01, 0.18, 0.09] if walls == "particles" else [0.0, 0.0, 0.2, 0.09]
+    window = [0.09, 0.11]
     za, zb = coordination(native, region, 4, window), coordination(folder, region, 4, window)
-    check(abs(za[0] - zb[0]) < 1e-12, f"coordination of the bed: {za[0]:.4f} and {zb[0]:.4f}")
+    check(abs(za[0] - zb[0]) < 1e-12,
+          f"{walls}: coordination of the bed: {za[0]:.4f} and {zb[0]:.4f}")
     done = subprocess.run([talus, "analyze", folder, "forces", "--frames", "last"],
                           capture_output=True, text=True)
     check(done.returncode == 0 and os.path.exists(os.path.join(folder, "analysis",
                                                                "forces.json")),
-          "talus analyze reads the LAMMPS run folder")
+          f"{walls}: talus analyze reads the LAMMPS run folder")
 
 
 def main():
@@ -120,7 +129,8 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     shapes()
-    engines(talus, lmp, source, work)
+    for walls in ("particles", "segments"):
+        engines(talus, lmp, source, work, walls)
     sys.exit(1 if failures else 0)
 
 
