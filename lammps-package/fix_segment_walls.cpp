@@ -15,6 +15,7 @@
 #include "force.h"
 #include "host_api.hpp"
 #include "modify.h"
+#include "neighbor.h"
 #include "pair_coefficients.hpp"
 #include "pair_granthesis.h"
 #include "talus/contact_force.hpp"
@@ -220,21 +221,28 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   vector_atom = contacts_.data();
   local_.clear();
   local_atom_.clear();
-  const std::size_t count = placed_.size();
+  // the rows of segments near each atom: again after LAMMPS' own lists (the atoms may have
+  // changed ranks or order), or when the atoms and segments may have moved past them
+  if (update->setupflag || neighbor->ago == 0 ||
+      near_.stale(x, mask, groupbit, atom->nlocal, placed_))
+    near_.build(x, atom->radius, mask, groupbit, atom->nlocal, placed_, neighbor->skin);
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(mask[i] & groupbit)) continue;
     const double r = atom->radius[i];
-    for (std::size_t s = 0; s < count; ++s) {
-      const Placed& w = placed_[s];
-      hits_[s] = segment_hit(w.ax, w.ay, w.bx, w.by, x[i][0], x[i][1], r);
+    const int* row = near_.begin(i);
+    const auto count = static_cast<std::size_t>(near_.end(i) - row);
+    for (std::size_t m = 0; m < count; ++m) {
+      const Placed& w = placed_[static_cast<std::size_t>(row[m])];
+      hits_[m] = segment_hit(w.ax, w.ay, w.bx, w.by, x[i][0], x[i][1], r);
     }
     const auto shares = [&](std::size_t m, double px, double py) {
-      const Placed& o = placed_[m];
+      const Placed& o = placed_[static_cast<std::size_t>(row[m])];
       return (o.ax == px && o.ay == py) || (o.bx == px && o.by == py);
     };
-    for (std::size_t s = 0; s < count; ++s) {
-      const SegmentHit& h = hits_[s];
-      if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, s, shares))) continue;
+    for (std::size_t m = 0; m < count; ++m) {
+      const SegmentHit& h = hits_[m];
+      if (!h.touching || (h.vertex() && duplicate_vertex(hits_, count, m, shares))) continue;
+      const auto s = static_cast<std::size_t>(row[m]);
       contacts_[static_cast<std::size_t>(i)] += 1.0;
       double wx = 0.0, wy = 0.0;
       const ContactGeometry g = geometry(i, s, h.x, h.y, wx, wy);
@@ -255,13 +263,13 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       force_[1] -= c.force_y;
       power += c.force_x * wx + c.force_y * wy;
       energy_ += contact_elastic_energy<N, T>(p, g, spring);
-      const double row[local_columns] = {static_cast<double>(atom->tag[i]),
-                                         static_cast<double>(s + 1),
-                                         c.normal_force,
-                                         g.overlap,
-                                         h.x,
-                                         h.y};
-      local_.insert(local_.end(), row, row + local_columns);
+      const double contact[local_columns] = {static_cast<double>(atom->tag[i]),
+                                             static_cast<double>(s + 1),
+                                             c.normal_force,
+                                             g.overlap,
+                                             h.x,
+                                             h.y};
+      local_.insert(local_.end(), contact, contact + local_columns);
       local_atom_.push_back(i);
     }
   }

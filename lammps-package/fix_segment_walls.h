@@ -15,6 +15,7 @@ FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
 
 #include "fix.h"
 #include "run_clock.hpp"
+#include "segment_neighbours.hpp"
 #include "talus/contact_geometry.hpp"
 #include "talus/segment_contact.hpp"
 
@@ -70,7 +71,8 @@ private:
 
   std::vector<Wall> walls_;
   std::vector<Placed> placed_;
-  std::vector<SegmentHit> hits_; ///< one atom's hits, scratch
+  std::vector<SegmentHit> hits_; ///< one atom's hits on its row's segments, scratch
+  SegmentNeighbours near_;       ///< the segments near each atom
   double start_ = 0.0;           ///< s: the time at which the walls are where the deck puts them
   RunClock clock_;
   PairGranthesis* pair_ = nullptr;

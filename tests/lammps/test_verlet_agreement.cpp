@@ -96,11 +96,19 @@ TEST(VerletAgreement, SpringLawsAgreeToRounding) {
     }
 }
 
+// Whether every disk was turned round by its wall (LAMMPS' run): it moves up.
+void turned_round(LammpsInstance& l, std::size_t disks) {
+  for (std::size_t k = 1; k <= disks; ++k)
+    EXPECT_GT(l.velocity(static_cast<int>(k))[1], 0.0) << "disk " << k;
+}
+
 // Disks against segment walls in both engines, given as the fix's line and as the same walls
 // (and drivers) built natively, with each tangential law for 5000 steps of 1e-7 s: rounding as
-// above, and every disk turned round by its wall.
-void segment_walls_agree(const char* what, const std::vector<Disk>& disks, const std::string& fix,
-                         const std::function<void(World&)>& walls) {
+// above, and `reached` says whether the disks met their walls.
+void segment_walls_agree(
+    const char* what, const std::vector<Disk>& disks, const std::string& fix,
+    const std::function<void(World&)>& walls,
+    const std::function<void(LammpsInstance&, std::size_t)>& reached = turned_round) {
   const Material m = grains();
   const double dt = 1e-7;
   const int steps = 5000;
@@ -119,8 +127,7 @@ void segment_walls_agree(const char* what, const std::vector<Disk>& disks, const
     EXPECT_LT(d.position, 1e-15);
     EXPECT_LT(d.velocity, 1e-12 * 1.0);
     EXPECT_LT(d.spin, 1e-12 * 30.0);
-    for (std::size_t k = 1; k <= disks.size(); ++k)
-      EXPECT_GT(l.velocity(static_cast<int>(k))[1], 0.0) << "disk " << k;
+    reached(l, disks.size());
   }
 }
 
@@ -165,6 +172,24 @@ TEST(VerletAgreement, MovingSegmentsAgreeToRounding) {
                         moved({0.06, 0.0}, {0.09, 0.0}, Translate{{0.0, 0.1}});
                         moved({0.11, 0.0}, {0.15, 0.0}, Rotate{{0.13, 0.0}, 2.0});
                       });
+}
+
+// A segment sweeping at 4 m/s onto a disk at rest from 1.5 mm away, farther than the 1 mm skin:
+// fix granthesis/wall's rows of near segments (built for the disk without this one) must be
+// built again as the segment comes near, though no atom moves and LAMMPS keeps its lists.
+TEST(VerletAgreement, ASegmentSweepingFromBeyondTheSkinIsMet) {
+  const std::vector<Disk> disks{{{-0.01, 0.0}, {0.0, 0.0}, 0.005, 2.0e-4, 0.0}};
+  segment_walls_agree(
+      "sweeping wall", disks,
+      "fix walls all granthesis/wall segment -0.0165 -0.01 -0.0165 0.01 type 1 velocity 4 0",
+      [](World& w) {
+        Driver d;
+        d.motion = Translate{{4.0, 0.0}};
+        d.targets.segments = {
+            static_cast<std::uint32_t>(w.add_wall({-0.0165, -0.01}, {-0.0165, 0.01}))};
+        w.drivers.push_back(d);
+      },
+      [](LammpsInstance& l, std::size_t) { EXPECT_GT(l.velocity(1)[0], 1.0); });
 }
 
 } // namespace
