@@ -330,18 +330,19 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
 }
 
 void PairGranthesis::write_restart_settings(FILE* file) {
-  const int laws[3] = {static_cast<int>(normal_), static_cast<int>(tangential_), history_slots_};
-  std::fwrite(laws, sizeof(int), 3, file);
+  const int settings[3] = {static_cast<int>(normal_), static_cast<int>(tangential_),
+                           history_slots_};
+  std::fwrite(settings, sizeof(int), 3, file);
   std::fwrite(&impact_speed_, sizeof(double), 1, file);
 }
 
 void PairGranthesis::read_settings(FILE* file) {
-  int laws[3] = {0, 0, 0};
-  if (comm->me == 0) read_restart_items(lmp, laws, sizeof(int), 3, file);
-  MPI_Bcast(laws, 3, MPI_INT, 0, world);
-  normal_ = static_cast<NormalLaw>(laws[0]);
-  tangential_ = static_cast<TangentialLaw>(laws[1]);
-  history_slots_ = laws[2]; // the restart file's springs must fit
+  int settings[3] = {0, 0, 0};
+  if (comm->me == 0) read_restart_items(lmp, settings, sizeof(int), 3, file);
+  MPI_Bcast(settings, 3, MPI_INT, 0, world);
+  normal_ = static_cast<NormalLaw>(settings[0]);
+  tangential_ = static_cast<TangentialLaw>(settings[1]);
+  history_slots_ = settings[2]; // the restart file's springs must fit
   if (comm->me == 0) read_restart_items(lmp, &impact_speed_, sizeof(double), 1, file);
   MPI_Bcast(&impact_speed_, 1, MPI_DOUBLE, 0, world);
 }
