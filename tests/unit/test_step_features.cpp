@@ -123,35 +123,42 @@ TEST(StepFeatures, EachSceneGetsTheStepOfWhatItUses) {
   EXPECT_EQ(features(Scene::everything, law_id<MindlinNoSlip>), "one material");
 }
 
+// A scene in the specialised step and in the general step, edited alike and run for 100 steps
+// after each edit, their states then compared.
+struct SideBySide {
+  Simulation special, general;
+  SideBySide(const World& w, const SimulationConfig& c) : special(w, c), general(w, c) {
+    general.use_general_step(true);
+  }
+  template <class Edit> void both(Edit&& edit) {
+    edit(special);
+    edit(general);
+    special.run(100);
+    general.run(100);
+    expect_same_state(special, general, false);
+  }
+};
+
 // The scene changes between runs: a grain is given a spin, a grain changes material. The step
 // is chosen again, and the results stay those of the general step.
 TEST(StepFeatures, TheStepIsChosenAgainWhenTheSceneChanges) {
   World w = scene(Scene::no_spin);
   w.add_material(w.materials[0]); // declared, of no grain yet
   for (const Integrator integrator : {Integrator::gear, Integrator::verlet}) {
-    Simulation special(w, config(integrator, law_id<Frictionless>));
-    Simulation general(w, config(integrator, law_id<Frictionless>));
-    general.use_general_step(true);
-    const auto both = [&](auto&& edit) {
-      edit(special);
-      edit(general);
-      special.run(100);
-      general.run(100);
-      expect_same_state(special, general, false);
-    };
-    both([](Simulation&) {});
-    EXPECT_EQ(special.step_description(), "frictionless, no rotation, one material");
-    both([](Simulation& s) { s.edit_particles().set_material(40, 1); });
-    EXPECT_EQ(special.step_description(), "frictionless, no rotation");
-    both([](Simulation& s) {
-      Particles& p = s.edit_world().particles;
+    SideBySide s(w, config(integrator, law_id<Frictionless>));
+    s.both([](Simulation&) {});
+    EXPECT_EQ(s.special.step_description(), "frictionless, no rotation, one material");
+    s.both([](Simulation& x) { x.edit_particles().set_material(40, 1); });
+    EXPECT_EQ(s.special.step_description(), "frictionless, no rotation");
+    s.both([](Simulation& x) {
+      Particles& p = x.edit_world().particles;
       for (std::size_t i = 0; i < p.size(); ++i)
         if (p.is_free(i)) {
           p.angular_velocity[i] = 3.0;
           break;
         }
     });
-    EXPECT_EQ(special.step_description(), "general");
+    EXPECT_EQ(s.special.step_description(), "general");
   }
 }
 
@@ -160,24 +167,15 @@ TEST(StepFeatures, TheStepIsChosenAgainWhenTheSceneChanges) {
 TEST(StepFeatures, TheStepIsChosenAgainWhenAWallIsAddedOrGravityGoes) {
   const World w = scene(Scene::no_walls_no_drivers);
   for (const Integrator integrator : {Integrator::gear, Integrator::verlet}) {
-    Simulation special(w, config(integrator, law_id<ViscousCoulomb>));
-    Simulation general(w, config(integrator, law_id<ViscousCoulomb>));
-    general.use_general_step(true);
-    const auto both = [&](auto&& edit) {
-      edit(special);
-      edit(general);
-      special.run(100);
-      general.run(100);
-      expect_same_state(special, general, false);
-    };
-    both([](Simulation&) {});
-    EXPECT_EQ(special.step_description(), "history-free, no walls, no drivers, one material");
+    SideBySide s(w, config(integrator, law_id<ViscousCoulomb>));
+    s.both([](Simulation&) {});
+    EXPECT_EQ(s.special.step_description(), "history-free, no walls, no drivers, one material");
     // a floor under the lowest grains, which they reach within the run
-    both([](Simulation& s) { s.edit_world().add_wall({0.0, 0.011}, {0.3, 0.011}); });
-    EXPECT_EQ(special.step_description(), "history-free, no drivers, one material");
-    EXPECT_NE(special.world().walls[0].force.y, 0.0); // the grains did press on it
-    both([](Simulation& s) { s.edit_world().gravity = {0.0, 0.0}; });
-    EXPECT_EQ(special.step_description(), "history-free, no drivers, one material, no gravity");
+    s.both([](Simulation& x) { x.edit_world().add_wall({0.0, 0.011}, {0.3, 0.011}); });
+    EXPECT_EQ(s.special.step_description(), "history-free, no drivers, one material");
+    EXPECT_NE(s.special.world().walls[0].force.y, 0.0); // the grains did press on it
+    s.both([](Simulation& x) { x.edit_world().gravity = {0.0, 0.0}; });
+    EXPECT_EQ(s.special.step_description(), "history-free, no drivers, one material, no gravity");
   }
 }
 
