@@ -173,9 +173,7 @@ double FixFrostHeave::compute_vector(int n) {
 void FixFrostHeave::write_restart(FILE* file) {
   if (comm->me != 0) return;
   const double state[4] = {cycles_, last_time_, static_cast<double>(last_step_), now()};
-  const int size = static_cast<int>(sizeof state);
-  std::fwrite(&size, sizeof(int), 1, file);
-  std::fwrite(state, sizeof(double), 4, file);
+  write_fix_state(file, state, 4);
 }
 
 void FixFrostHeave::restart(char* buffer) {

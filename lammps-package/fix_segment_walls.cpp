@@ -348,9 +348,7 @@ void FixSegmentWalls::write_restart(FILE* file) {
   MPI_Allreduce(&work_, &work, 1, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me != 0) return;
   const double state[4] = {now(), start_, work, static_cast<double>(walls_.size())};
-  const int size = static_cast<int>(sizeof state);
-  std::fwrite(&size, sizeof(int), 1, file);
-  std::fwrite(state, sizeof(double), 4, file);
+  write_fix_state(file, state, 4);
 }
 
 void FixSegmentWalls::restart(char* buffer) {

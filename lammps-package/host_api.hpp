@@ -55,4 +55,12 @@ inline void read_restart_items(LAMMPS_NS::LAMMPS* lmp, void* to, std::size_t siz
 #endif
 }
 
+/// Writes a fix's global state into a restart file, as the host reads it back for the fix's
+/// restart(): the size in bytes, then the values. Call on rank 0 only.
+inline void write_fix_state(FILE* file, const double* values, std::size_t count) {
+  const int size = static_cast<int>(count * sizeof(double));
+  std::fwrite(&size, sizeof(int), 1, file);
+  std::fwrite(values, sizeof(double), count, file);
+}
+
 } // namespace talus::lammps

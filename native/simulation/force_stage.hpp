@@ -71,8 +71,9 @@ public:
   double deepest_overlap() const { return deepest_overlap_; }
   /// How many stages chose the candidates again.
   std::uint64_t candidate_choices() const { return candidate_choices_; }
-  /// Bytes of the contact candidates, and of everything else the stage holds.
+  /// Bytes of the contact candidates.
   std::size_t candidate_bytes() const;
+  /// Bytes of everything else the stage holds: deferred slots, wall forces, the schedule.
   std::size_t footprint_bytes() const;
 
 private:
