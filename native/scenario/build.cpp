@@ -9,11 +9,11 @@
 #include <tuple>
 #include <unistd.h>
 
-#include "analysis/observables.hpp"
 #include "materials/timestep.hpp"
 #include "scenario/geometry.hpp"
 #include "scenario/load.hpp"
 #include "scenario/packing.hpp"
+#include "scenario/sediment.hpp"
 #include "scenario/size_distribution.hpp"
 
 namespace talus {
@@ -235,26 +235,21 @@ double stable_timestep_bound(const Scenario& s, const World& w, const Simulation
   return max_stable_timestep(c.integrator, k_max, m_min);
 }
 
-} // namespace
+// The grains' radii, drawn first: they set the wall particle radius and the timestep.
+struct GrainSizes {
+  std::vector<double> radii; ///< of the counted grains
+  double r_min = 0.0;        ///< of every free grain, counted or listed
+};
 
-BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) {
-  BuiltScenario out;
-  World& w = out.world;
-  w.materials = s.materials;
-  w.gravity = s.simulation.gravity;
-  RandomStream rng(s.simulation.seed, 1);
-
-  check_memory(s.particles.count + s.particles.list.size());
-  check_start_overlaps(s);
-
-  // grain sizes first: they set the wall particle radius and the timestep
-  std::vector<double> radii(s.particles.count);
-  for (double& r : radii) r = draw_radius(s.particles.size, rng);
-  double r_min = std::numeric_limits<double>::max();
-  for (const double r : radii) r_min = std::min(r_min, r);
+GrainSizes draw_grain_sizes(const Scenario& s, RandomStream& rng) {
+  GrainSizes g;
+  g.radii.resize(s.particles.count);
+  for (double& r : g.radii) r = draw_radius(s.particles.size, rng);
+  g.r_min = std::numeric_limits<double>::max();
+  for (const double r : g.radii) g.r_min = std::min(g.r_min, r);
   for (const ExplicitParticle& e : s.particles.list)
-    if (e.kind == "free") r_min = std::min(r_min, e.radius);
-  if (radii.size() + s.particles.list.size() == 0)
+    if (e.kind == "free") g.r_min = std::min(g.r_min, e.radius);
+  if (g.radii.size() + s.particles.list.size() == 0)
     throw ScenarioError("key 'particles.count': a scenario needs grains (count > 0 or a list)");
   // the sizes a grain can have (not only those drawn this time) decide what a gap lets through
   double r_small = std::numeric_limits<double>::max(), r_large = 0.0;
@@ -263,23 +258,17 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     if (e.kind == "free")
       r_small = std::min(r_small, e.radius), r_large = std::max(r_large, e.radius);
   check_wall_gaps(s, r_small, r_large);
-  resolve_damping(s, w.materials);
+  return g;
+}
 
-  // container
-  const ContainerShape shape = build_container(s.geometry);
+// The container's walls into out.world, by group (out.groups): segments, or wall particles a
+// radius apart, overlapping so that no grain can pass between them. A driven group's wall
+// particles are moved by their driver, the others fixed.
+void build_walls(const Scenario& s, const ContainerShape& shape,
+                 const std::vector<DriverSection>& drivers, double r_wall, std::uint16_t wall_mat,
+                 BuiltScenario& out) {
+  World& w = out.world;
   const bool particle_walls = s.geometry.walls == "particles";
-  const double r_wall =
-      s.geometry.wall_particle_radius > 0.0 ? s.geometry.wall_particle_radius : r_min;
-  out.fill = s.packing.region.value_or(shape.fill);
-  if (particle_walls && !s.packing.region) { // wall particles reach r_wall into the container
-    out.fill.lo += Vec2{r_wall, r_wall};
-    out.fill.hi -= Vec2{r_wall, r_wall};
-  }
-  out.bounds = shape.bounds;
-  const std::uint16_t wall_mat =
-      material_index(s, s.geometry.wall_material, "geometry.wall_material");
-  std::vector<DriverSection> drivers = shape.drivers;
-  drivers.insert(drivers.end(), s.drivers.begin(), s.drivers.end());
   const auto driven = [&](const std::string& group) {
     return std::any_of(drivers.begin(), drivers.end(), [&](const DriverSection& d) {
       return d.target == group || d.target == "walls";
@@ -296,7 +285,6 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
         all.segments.push_back(k);
         continue;
       }
-      // wall particles a radius apart: overlapping, so no grain can pass between them
       for (const Vec2 p : wall_particle_positions(seg, r_wall)) {
         const auto k = u32(w.add_particle({.position = p,
                                            .radius = r_wall,
@@ -307,19 +295,20 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
       }
     }
   }
+}
 
-  // segment ends a rounding step apart (polylines made by a script) are one joint
-  join_segment_ends(w.walls, joint_tolerance * r_min);
+void set_periodic_domain(const Scenario& s, Domain& d) {
+  if (s.geometry.periodic == "none") return;
+  d.lo = s.geometry.box->lo;
+  d.hi = s.geometry.box->hi;
+  d.periodic_x = s.geometry.periodic.find('x') != std::string::npos;
+  d.periodic_y = s.geometry.periodic.find('y') != std::string::npos;
+}
 
-  // domain
-  if (s.geometry.periodic != "none") {
-    w.domain.lo = s.geometry.box->lo;
-    w.domain.hi = s.geometry.box->hi;
-    w.domain.periodic_x = s.geometry.periodic.find('x') != std::string::npos;
-    w.domain.periodic_y = s.geometry.periodic.find('y') != std::string::npos;
-  }
-
-  // grains: the explicit list, then the counted ones placed in the fill region
+// The grains: the explicit list, then the counted ones (radii) placed in out.fill.
+void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStream& rng,
+                  BuiltScenario& out) {
+  World& w = out.world;
   check_listed_grains_clear_of_walls(s, w, out.bounds);
   for (const ExplicitParticle& e : s.particles.list)
     w.add_particle({.position = e.position,
@@ -330,27 +319,29 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
                     .velocity = e.velocity,
                     .angular_velocity = e.angular_velocity,
                     .mass = e.mass});
-  if (!radii.empty()) {
-    if (!(out.fill.hi.x > out.fill.lo.x && out.fill.hi.y > out.fill.lo.y))
-      throw ScenarioError("key 'packing.region': no region to place grains in; give a geometry "
-                          "builder or packing.region = [x0, y0, x1, y1]");
-    // explicit grains inside the region keep their room: the lattice starts above them
-    Rect region = out.fill;
-    for (const ExplicitParticle& e : s.particles.list)
-      if (e.position.x > region.lo.x && e.position.x < region.hi.x && e.position.y < region.hi.y)
-        region.lo.y = std::max(region.lo.y, e.position.y + e.radius);
-    const auto placed = s.packing.method == "random" ? random_packing(radii, region, rng)
-                                                     : lattice_packing(radii, region, rng);
-    const std::uint16_t grain_mat = material_index(s, s.particles.material, "particles.material");
-    for (const PlacedGrain& g : placed)
-      w.add_particle({.position = g.position,
-                      .radius = g.radius,
-                      .material = grain_mat,
-                      .shape = s.particles.shape});
-  }
+  if (radii.empty()) return;
+  if (!(out.fill.hi.x > out.fill.lo.x && out.fill.hi.y > out.fill.lo.y))
+    throw ScenarioError("key 'packing.region': no region to place grains in; give a geometry "
+                        "builder or packing.region = [x0, y0, x1, y1]");
+  // explicit grains inside the region keep their room: the lattice starts above them
+  Rect region = out.fill;
+  for (const ExplicitParticle& e : s.particles.list)
+    if (e.position.x > region.lo.x && e.position.x < region.hi.x && e.position.y < region.hi.y)
+      region.lo.y = std::max(region.lo.y, e.position.y + e.radius);
+  const auto placed = s.packing.method == "random" ? random_packing(radii, region, rng)
+                                                   : lattice_packing(radii, region, rng);
+  const std::uint16_t grain_mat = material_index(s, s.particles.material, "particles.material");
+  for (const PlacedGrain& g : placed)
+    w.add_particle({.position = g.position,
+                    .radius = g.radius,
+                    .material = grain_mat,
+                    .shape = s.particles.shape});
+}
 
-  // timestep
-  out.collision_time = shortest_collision_time(s, w, r_min);
+// The simulation's settings, its timestep (the collision time's fraction, or one given within
+// the stability bound) and the stability guard's box: the container and as much again around it.
+void configure(const Scenario& s, double r_min, BuiltScenario& out) {
+  out.collision_time = shortest_collision_time(s, out.world, r_min);
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
   c.verlet_velocity = s.simulation.verlet_velocity;
@@ -364,7 +355,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
   if (s.simulation.timestep) {
-    const double bound = stable_timestep_bound(s, w, c, r_min);
+    const double bound = stable_timestep_bound(s, out.world, c, r_min);
     if (*s.simulation.timestep > bound) {
       std::ostringstream msg;
       msg << "key 'simulation.timestep': " << *s.simulation.timestep
@@ -376,49 +367,15 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     }
     c.timestep = *s.simulation.timestep;
   }
-
-  // the stability guard's box: the container and as much again around it
-  if (out.bounds.hi.x > out.bounds.lo.x && out.bounds.hi.y > out.bounds.lo.y) {
-    const Vec2 size = out.bounds.hi - out.bounds.lo;
-    c.escape_lo = out.bounds.lo - size;
-    c.escape_hi = out.bounds.hi + size;
+  const Rect& b = out.bounds;
+  if (b.hi.x > b.lo.x && b.hi.y > b.lo.y) {
+    const Vec2 size = b.hi - b.lo;
+    c.escape_lo = b.lo - size;
+    c.escape_hi = b.hi + size;
   }
+}
 
-  // sedimentation: let the grains fall and settle with the orifice closed, no drivers
-  if (s.packing.method == "sedimentation" && !radii.empty()) {
-    World settling = w;
-    for (const SegmentSpec& g : shape.gate) settling.add_wall(g.a, g.b, wall_mat);
-    join_segment_ends(settling.walls, joint_tolerance * r_min);
-    Simulation sim(std::move(settling), c);
-    double scale = 0.0;
-    for (std::size_t i = 0; i < sim.world().particles.size(); ++i)
-      if (sim.world().particles.is_free(i))
-        scale += sim.world().particles.mass[i] * norm(w.gravity) * sim.world().particles.radius[i];
-    if (scale == 0.0)
-      throw ScenarioError("key 'packing.method': sedimentation needs gravity (simulation.gravity)");
-    const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(0.005 / c.timestep));
-    out.settled = false;
-    while (sim.time() < s.packing.settle_max_time) {
-      sim.run(chunk);
-      const double ke = energies(sim).kinetic();
-      if (progress) progress(sim.time(), ke);
-      if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {
-        out.settled = true;
-        break;
-      }
-    }
-    out.settle_time = sim.time();
-    // by id: the settling run may have renumbered its particles (simulation.sort_every)
-    const Particles& settled = sim.world().particles;
-    for (std::size_t k = 0; k < settled.size(); ++k) {
-      const std::uint32_t i = settled.id[k];
-      if (!w.particles.is_free(i)) continue;
-      w.particles.position[i] = settled.position[k];
-      w.particles.angle[i] = settled.angle[k];
-    }
-  }
-
-  // drivers
+void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
   for (const DriverSection& d : drivers) {
     const auto group = out.groups.find(d.target);
     if (group == out.groups.end()) {
@@ -435,34 +392,76 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
       driver.motion = Translate{d.velocity};
     else
       driver.motion = Rotate{d.centre, d.angular_velocity};
-    w.drivers.push_back(std::move(driver));
+    out.world.drivers.push_back(std::move(driver));
   }
+}
 
-  // tracked particles
-  const Particles& p = w.particles;
+// The tracked particles: those listed by id, then those the selection picks (each once).
+void select_tracked(const Scenario& s, BuiltScenario& out) {
+  const Particles& p = out.world.particles;
   for (const auto id : s.track.ids) {
     if (id >= p.size())
       throw ScenarioError("key 'track.ids': particle id " + std::to_string(id) +
                           " does not exist (" + std::to_string(p.size()) + " particles)");
     out.tracked.push_back(id);
   }
-  if (s.track.select != "none") {
-    std::vector<std::uint32_t> free;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.is_free(i)) free.push_back(u32(i));
-    const auto key = [&](std::uint32_t i) {
-      if (s.track.select == "largest") return -p.radius[i];
-      if (s.track.select == "smallest") return p.radius[i];
-      return norm2(p.position[i] - s.track.at);
-    };
-    if (s.track.select != "all") // "all": every grain, in id order
-      std::stable_sort(free.begin(), free.end(), [&](auto a, auto b) { return key(a) < key(b); });
-    const std::size_t n =
-        s.track.select == "all" ? free.size() : std::min(s.track.count, free.size());
-    for (std::size_t k = 0; k < n; ++k)
-      if (std::find(out.tracked.begin(), out.tracked.end(), free[k]) == out.tracked.end())
-        out.tracked.push_back(free[k]); // a particle listed in ids too is tracked once
+  if (s.track.select == "none") return;
+  std::vector<std::uint32_t> free;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.is_free(i)) free.push_back(u32(i));
+  const auto key = [&](std::uint32_t i) {
+    if (s.track.select == "largest") return -p.radius[i];
+    if (s.track.select == "smallest") return p.radius[i];
+    return norm2(p.position[i] - s.track.at);
+  };
+  if (s.track.select != "all") // "all": every grain, in id order
+    std::stable_sort(free.begin(), free.end(), [&](auto a, auto b) { return key(a) < key(b); });
+  const std::size_t n =
+      s.track.select == "all" ? free.size() : std::min(s.track.count, free.size());
+  for (std::size_t k = 0; k < n; ++k)
+    if (std::find(out.tracked.begin(), out.tracked.end(), free[k]) == out.tracked.end())
+      out.tracked.push_back(free[k]); // a particle listed in ids too is tracked once
+}
+
+} // namespace
+
+BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) {
+  BuiltScenario out;
+  World& w = out.world;
+  w.materials = s.materials;
+  w.gravity = s.simulation.gravity;
+  RandomStream rng(s.simulation.seed, 1);
+
+  check_memory(s.particles.count + s.particles.list.size());
+  check_start_overlaps(s);
+  const GrainSizes sizes = draw_grain_sizes(s, rng);
+  resolve_damping(s, w.materials);
+
+  const ContainerShape shape = build_container(s.geometry);
+  const bool particle_walls = s.geometry.walls == "particles";
+  const double r_wall =
+      s.geometry.wall_particle_radius > 0.0 ? s.geometry.wall_particle_radius : sizes.r_min;
+  out.fill = s.packing.region.value_or(shape.fill);
+  if (particle_walls && !s.packing.region) { // wall particles reach r_wall into the container
+    out.fill.lo += Vec2{r_wall, r_wall};
+    out.fill.hi -= Vec2{r_wall, r_wall};
   }
+  out.bounds = shape.bounds;
+  const std::uint16_t wall_mat =
+      material_index(s, s.geometry.wall_material, "geometry.wall_material");
+  std::vector<DriverSection> drivers = shape.drivers;
+  drivers.insert(drivers.end(), s.drivers.begin(), s.drivers.end());
+  build_walls(s, shape, drivers, r_wall, wall_mat, out);
+  // segment ends a rounding step apart (polylines made by a script) are one joint
+  join_segment_ends(w.walls, joint_tolerance * sizes.r_min);
+  set_periodic_domain(s, w.domain);
+
+  place_grains(s, sizes.radii, rng, out);
+  configure(s, sizes.r_min, out);
+  if (s.packing.method == "sedimentation" && !sizes.radii.empty())
+    sediment(s, shape.gate, wall_mat, joint_tolerance * sizes.r_min, progress, out);
+  add_drivers(drivers, out);
+  select_tracked(s, out);
   return out;
 }
 

@@ -1,0 +1,46 @@
+#include "scenario/sediment.hpp"
+
+#include <algorithm>
+
+#include "analysis/observables.hpp"
+#include "scenario/toml_reader.hpp"
+
+namespace talus {
+
+void sediment(const Scenario& s, const std::vector<SegmentSpec>& gate, std::uint16_t wall_mat,
+              double joint_distance, const SettleProgress& progress, BuiltScenario& out) {
+  World& w = out.world;
+  const SimulationConfig& c = out.config;
+  World settling = w;
+  for (const SegmentSpec& g : gate) settling.add_wall(g.a, g.b, wall_mat);
+  join_segment_ends(settling.walls, joint_distance);
+  Simulation sim(std::move(settling), c);
+  double scale = 0.0;
+  for (std::size_t i = 0; i < sim.world().particles.size(); ++i)
+    if (sim.world().particles.is_free(i))
+      scale += sim.world().particles.mass[i] * norm(w.gravity) * sim.world().particles.radius[i];
+  if (scale == 0.0)
+    throw ScenarioError("key 'packing.method': sedimentation needs gravity (simulation.gravity)");
+  const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(0.005 / c.timestep));
+  out.settled = false;
+  while (sim.time() < s.packing.settle_max_time) {
+    sim.run(chunk);
+    const double ke = energies(sim).kinetic();
+    if (progress) progress(sim.time(), ke);
+    if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {
+      out.settled = true;
+      break;
+    }
+  }
+  out.settle_time = sim.time();
+  // by id: the settling run may have renumbered its particles (simulation.sort_every)
+  const Particles& settled = sim.world().particles;
+  for (std::size_t k = 0; k < settled.size(); ++k) {
+    const std::uint32_t i = settled.id[k];
+    if (!w.particles.is_free(i)) continue;
+    w.particles.position[i] = settled.position[k];
+    w.particles.angle[i] = settled.angle[k];
+  }
+}
+
+} // namespace talus
