@@ -91,34 +91,36 @@ Rect frame_bounds(const Frame& f) {
   return {lo, hi};
 }
 
-void write_frame_png(const Frame& f, const std::string& path, const PictureOptions& o) {
-  const Rect box = o.bounds.value_or(frame_bounds(f));
-  const Vec2 lo = box.lo, hi = box.hi;
-  if (!(hi.x > lo.x && hi.y > lo.y)) throw std::runtime_error("nothing to draw in " + path);
+namespace {
 
-  const double margin = 0.03 * (hi.x - lo.x);
-  const double bar_px = 70.0;
-  const double scale = (o.width_px - bar_px) / (hi.x - lo.x + 2.0 * margin);
-  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
-  height_px += height_px % 2; // even sizes: what video encoders want
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width_px, height_px);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-  cairo_paint(cr);
-  const auto X = [&](double x) { return (x - lo.x + margin) * scale; };
-  const auto Y = [&](double y) { return height_px - 20.0 - (y - lo.y + margin) * scale; };
+// Metres to pixels: the frame's box with a margin, y up, a strip on the right for the colour
+// bar or legend.
+struct Canvas {
+  cairo_t* cr;
+  Vec2 lo;
+  double margin, scale;
+  int height_px;
+  static constexpr double bar_px = 70.0;
+  double X(double x) const { return (x - lo.x + margin) * scale; }
+  double Y(double y) const { return height_px - 20.0 - (y - lo.y + margin) * scale; }
+};
 
-  const std::size_t n = f.position.size();
+// The colour scale's range: the free particles' values, or the one asked for.
+std::pair<double, double> colour_range(const Frame& f, const PictureOptions& o) {
   double vmin = std::numeric_limits<double>::max(), vmax = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < f.position.size(); ++i)
     if (f.kind[i] == 0)
       vmin = std::min(vmin, field(f, i, o.colour)), vmax = std::max(vmax, field(f, i, o.colour));
   if (vmin > vmax) vmin = vmax = 0.0;
   if (o.range) std::tie(vmin, vmax) = *o.range;
-  const double span = vmax > vmin ? vmax - vmin : 1.0;
+  return {vmin, vmax};
+}
 
-  for (std::size_t i = 0; i < n; ++i) {
-    cairo_arc(cr, X(f.position[i].x), Y(f.position[i].y), f.radius[i] * scale, 0.0,
+void draw_particles(const Canvas& cv, const Frame& f, const PictureOptions& o, double vmin,
+                    double vmax) {
+  const double span = vmax > vmin ? vmax - vmin : 1.0;
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    cairo_arc(cv.cr, cv.X(f.position[i].x), cv.Y(f.position[i].y), f.radius[i] * cv.scale, 0.0,
               2.0 * std::numbers::pi);
     Rgb c{0.35, 0.35, 0.35}; // wall particles
     if (o.colour == SnapshotColour::kind)
@@ -128,37 +130,45 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
     else if (f.kind[i] == 0)
       c = ramp((field(f, i, o.colour) - vmin) / span);
     if (o.chains || !o.tracks.empty())
-      cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.25); // faded under the chains or tracks
+      cairo_set_source_rgba(cv.cr, c.r, c.g, c.b, 0.25); // faded under the chains or tracks
     else
-      cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    cairo_fill(cr);
+      cairo_set_source_rgb(cv.cr, c.r, c.g, c.b);
+    cairo_fill(cv.cr);
   }
-  if (o.chains) { // thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force
-    double f_max = 0.0;
-    for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
-    if (o.chain_scale) f_max = *o.chain_scale;
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    for (const auto& ch : f.chains) {
-      if (f_max <= 0.0 || ch.force <= 0.0) continue;
-      const double u = std::min(1.0, ch.force / f_max);
-      cairo_set_source_rgb(cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
-      cairo_set_line_width(cr, 0.5 + 5.5 * u);
-      cairo_move_to(cr, X(ch.from.x), Y(ch.from.y));
-      cairo_line_to(cr, X(ch.to.x), Y(ch.to.y));
-      cairo_stroke(cr);
-    }
-  }
-  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-  cairo_set_line_width(cr, 3.0);
-  for (const auto& [a, b] : f.walls) {
-    cairo_move_to(cr, X(a.x), Y(a.y));
-    cairo_line_to(cr, X(b.x), Y(b.y));
-    cairo_stroke(cr);
-  }
+}
 
-  // trajectories: a line each in a strong colour, a dot where the particle is now
+// Thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force.
+void draw_chains(const Canvas& cv, const Frame& f, const PictureOptions& o) {
+  double f_max = 0.0;
+  for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
+  if (o.chain_scale) f_max = *o.chain_scale;
+  cairo_set_line_cap(cv.cr, CAIRO_LINE_CAP_ROUND);
+  for (const auto& ch : f.chains) {
+    if (f_max <= 0.0 || ch.force <= 0.0) continue;
+    const double u = std::min(1.0, ch.force / f_max);
+    cairo_set_source_rgb(cv.cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
+    cairo_set_line_width(cv.cr, 0.5 + 5.5 * u);
+    cairo_move_to(cv.cr, cv.X(ch.from.x), cv.Y(ch.from.y));
+    cairo_line_to(cv.cr, cv.X(ch.to.x), cv.Y(ch.to.y));
+    cairo_stroke(cv.cr);
+  }
+}
+
+void draw_walls(const Canvas& cv, const Frame& f) {
+  cairo_set_source_rgb(cv.cr, 0.0, 0.0, 0.0);
+  cairo_set_line_width(cv.cr, 3.0);
+  for (const auto& [a, b] : f.walls) {
+    cairo_move_to(cv.cr, cv.X(a.x), cv.Y(a.y));
+    cairo_line_to(cv.cr, cv.X(b.x), cv.Y(b.y));
+    cairo_stroke(cv.cr);
+  }
+}
+
+// Trajectories: a line each in a strong colour, a dot where the particle is now.
+void draw_tracks(const Canvas& cv, const PictureOptions& o) {
   static constexpr Rgb track_colours[6] = {{0.85, 0.1, 0.1}, {0.1, 0.3, 0.9}, {0.0, 0.6, 0.2},
                                            {0.9, 0.5, 0.0},  {0.6, 0.1, 0.7}, {0.0, 0.6, 0.7}};
+  cairo_t* cr = cv.cr;
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (std::size_t k = 0; k < o.tracks.size(); ++k) {
@@ -167,59 +177,93 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
     const Rgb c = track_colours[k % 6];
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_set_line_width(cr, 2.5);
-    cairo_move_to(cr, X(points.front().x), Y(points.front().y));
-    for (const Vec2& q : points) cairo_line_to(cr, X(q.x), Y(q.y));
+    cairo_move_to(cr, cv.X(points.front().x), cv.Y(points.front().y));
+    for (const Vec2& q : points) cairo_line_to(cr, cv.X(q.x), cv.Y(q.y));
     cairo_stroke(cr);
-    cairo_arc(cr, X(points.back().x), Y(points.back().y), 5.0, 0.0, 2.0 * std::numbers::pi);
+    cairo_arc(cr, cv.X(points.back().x), cv.Y(points.back().y), 5.0, 0.0, 2.0 * std::numbers::pi);
     cairo_fill(cr);
   }
+}
+
+// The colour bar of a continuous colouring, with its range and unit, from (bx, by), bh high.
+void draw_colour_bar(cairo_t* cr, SnapshotColour colour, double vmin, double vmax, double bx,
+                     double by, double bh) {
+  for (int k = 0; k < 100; ++k) {
+    const Rgb c = ramp(1.0 - k / 99.0);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
+    cairo_fill(cr);
+  }
+  cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+  const double unit = colour == SnapshotColour::size ? 1e3 : 1.0;
+  const char* label = colour == SnapshotColour::speed  ? "|v| m/s"
+                      : colour == SnapshotColour::size ? "R mm"
+                                                       : "|F| N";
+  const std::string top = fmt::format("{:.3g}", vmax * unit),
+                    bottom = fmt::format("{:.3g}", vmin * unit);
+  cairo_move_to(cr, bx - 5.0, by - 8.0);
+  cairo_show_text(cr, top.c_str());
+  cairo_move_to(cr, bx - 5.0, by + bh + 16.0);
+  cairo_show_text(cr, bottom.c_str());
+  cairo_move_to(cr, bx - 10.0, by + bh + 32.0);
+  cairo_show_text(cr, label);
+}
+
+// A legend of the categories (kinds or materials) present, from (bx, by).
+void draw_legend(cairo_t* cr, const Frame& f, SnapshotColour colour, double bx, double by) {
+  std::vector<std::size_t> present;
+  for (std::size_t i = 0; i < f.position.size(); ++i) {
+    const std::size_t k = colour == SnapshotColour::kind ? f.kind[i] : f.material[i];
+    if (std::find(present.begin(), present.end(), k) == present.end()) present.push_back(k);
+  }
+  std::sort(present.begin(), present.end());
+  static constexpr const char* kinds[3] = {"free", "fixed", "moved"};
+  for (std::size_t m = 0; m < present.size() && m < 20; ++m) {
+    const Rgb c = category(present[m]);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_rectangle(cr, bx - 10.0, by + 20.0 * static_cast<double>(m), 14.0, 14.0);
+    cairo_fill(cr);
+    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+    const std::string name = colour == SnapshotColour::kind && present[m] < 3
+                                 ? kinds[present[m]]
+                                 : fmt::format("{}", present[m]);
+    cairo_move_to(cr, bx + 8.0, by + 20.0 * static_cast<double>(m) + 12.0);
+    cairo_show_text(cr, name.c_str());
+  }
+}
+
+} // namespace
+
+void write_frame_png(const Frame& f, const std::string& path, const PictureOptions& o) {
+  const Rect box = o.bounds.value_or(frame_bounds(f));
+  const Vec2 lo = box.lo, hi = box.hi;
+  if (!(hi.x > lo.x && hi.y > lo.y)) throw std::runtime_error("nothing to draw in " + path);
+
+  const double margin = 0.03 * (hi.x - lo.x);
+  const double scale = (o.width_px - Canvas::bar_px) / (hi.x - lo.x + 2.0 * margin);
+  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
+  height_px += height_px % 2; // even sizes: what video encoders want
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width_px, height_px);
+  cairo_t* cr = cairo_create(surface);
+  const Canvas cv{cr, lo, margin, scale, height_px};
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_paint(cr);
+
+  const auto [vmin, vmax] = colour_range(f, o);
+  draw_particles(cv, f, o, vmin, vmax);
+  if (o.chains) draw_chains(cv, f, o);
+  draw_walls(cv, f);
+  draw_tracks(cv, o);
 
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 12.0);
-  const double bx = o.width_px - bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
-  if (continuous(o.colour)) { // colour bar with its range and unit
-    for (int k = 0; k < 100; ++k) {
-      const Rgb c = ramp(1.0 - k / 99.0);
-      cairo_set_source_rgb(cr, c.r, c.g, c.b);
-      cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
-      cairo_fill(cr);
-    }
-    cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-    const double unit = o.colour == SnapshotColour::size ? 1e3 : 1.0;
-    const char* label = o.colour == SnapshotColour::speed  ? "|v| m/s"
-                        : o.colour == SnapshotColour::size ? "R mm"
-                                                           : "|F| N";
-    const std::string top = fmt::format("{:.3g}", vmax * unit),
-                      bottom = fmt::format("{:.3g}", vmin * unit);
-    cairo_move_to(cr, bx - 5.0, by - 8.0);
-    cairo_show_text(cr, top.c_str());
-    cairo_move_to(cr, bx - 5.0, by + bh + 16.0);
-    cairo_show_text(cr, bottom.c_str());
-    cairo_move_to(cr, bx - 10.0, by + bh + 32.0);
-    cairo_show_text(cr, label);
-  } else { // a legend of the categories present
-    std::vector<std::size_t> present;
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = o.colour == SnapshotColour::kind ? f.kind[i] : f.material[i];
-      if (std::find(present.begin(), present.end(), k) == present.end()) present.push_back(k);
-    }
-    std::sort(present.begin(), present.end());
-    static constexpr const char* kinds[3] = {"free", "fixed", "moved"};
-    for (std::size_t m = 0; m < present.size() && m < 20; ++m) {
-      const Rgb c = category(present[m]);
-      cairo_set_source_rgb(cr, c.r, c.g, c.b);
-      cairo_rectangle(cr, bx - 10.0, by + 20.0 * static_cast<double>(m), 14.0, 14.0);
-      cairo_fill(cr);
-      cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-      const std::string name = o.colour == SnapshotColour::kind && present[m] < 3
-                                   ? kinds[present[m]]
-                                   : fmt::format("{}", present[m]);
-      cairo_move_to(cr, bx + 8.0, by + 20.0 * static_cast<double>(m) + 12.0);
-      cairo_show_text(cr, name.c_str());
-    }
-  }
+  const double bx = o.width_px - Canvas::bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
+  if (continuous(o.colour))
+    draw_colour_bar(cr, o.colour, vmin, vmax, bx, by, bh);
+  else
+    draw_legend(cr, f, o.colour, bx, by);
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
-  const std::string stamp = fmt::format("t = {:.4f} s   N = {}", f.time, n);
+  const std::string stamp = fmt::format("t = {:.4f} s   N = {}", f.time, f.position.size());
   cairo_move_to(cr, 10.0, 16.0);
   cairo_show_text(cr, stamp.c_str());
 
