@@ -86,14 +86,12 @@ void write_discharge(const fs::path& out, const Discharge& q) {
   write_file_atomically((out / "discharge.json").string(), json + "}\n");
 }
 
-Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
-  const Scenario& sc = run.scenario();
-  const auto& frames = run.frames(o.from);
-  const double d = 2.0 * run.mean_radius();
-  Rect seen = empty_rect; // where the grains went, over all frames
-  for (const Frame& f : frames) take_in(seen, f);
-  // the band: given, or just above the orifice (2 orifice widths high), or the middle fifth of
-  // the bed at the start
+namespace {
+
+// The band of the velocity profile, [x0, x1) x [y0, y1): given, or just above the orifice (2
+// orifice widths high), or the middle fifth of the bed at the start across where the grains went.
+Rect profile_band(const Scenario& sc, const std::vector<Frame>& frames, const Rect& seen,
+                  const AnalysisOptions& o) {
   double y0 = 0.0, y1 = 0.0, x0 = seen.lo.x, x1 = seen.hi.x;
   if (o.band) {
     std::tie(y0, y1) = *o.band;
@@ -106,48 +104,27 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
     y0 = start.lo.y + 0.4 * (start.hi.y - start.lo.y);
     y1 = start.lo.y + 0.6 * (start.hi.y - start.lo.y);
   }
-  const std::size_t bins =
-      o.bins ? o.bins : std::clamp<std::size_t>(static_cast<std::size_t>((x1 - x0) / d), 5, 60);
-  const BandProfile p = band_profile(frames, y0, y1, x0, x1, bins);
-  const fs::path out = run.out();
-  std::string csv = "x,vx,vy,speed,samples\n";
-  for (std::size_t b = 0; b < p.x.size(); ++b)
-    csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{}\n", p.x[b], p.vx[b], p.vy[b], p.speed[b],
-                       p.count[b]);
-  write_file_atomically((out / "profiles.csv").string(), csv);
+  return {{x0, y0}, {x1, y1}};
+}
 
-  // centre line against the edges of the occupied bins: the thesis' funnel flow (fig. 4.7)
+// v_y on the centre line and in the outermost occupied bins (their mean): the thesis' funnel
+// flow (fig. 4.7). NaN when no bin holds a grain.
+std::pair<double, double> centre_and_edges(const BandProfile& p, double x0, double x1) {
+  const std::size_t bins = p.x.size();
   std::size_t first = bins, last = 0;
   for (std::size_t b = 0; b < bins; ++b)
     if (p.count[b] > 0) first = std::min(first, b), last = std::max(last, b);
-  double centre = std::nan(""), edges = std::nan("");
-  if (first <= last) {
-    const double mid = 0.5 * (x0 + x1);
-    std::size_t c = first;
-    for (std::size_t b = first; b <= last; ++b)
-      if (p.count[b] > 0 && std::abs(p.x[b] - mid) < std::abs(p.x[c] - mid)) c = b;
-    centre = p.vy[c];
-    edges = 0.5 * (p.vy[first] + p.vy[last]);
-  }
+  if (first > last) return {std::nan(""), std::nan("")};
+  const double mid = 0.5 * (x0 + x1);
+  std::size_t c = first;
+  for (std::size_t b = first; b <= last; ++b)
+    if (p.count[b] > 0 && std::abs(p.x[b] - mid) < std::abs(p.x[c] - mid)) c = b;
+  return {p.vy[c], 0.5 * (p.vy[first] + p.vy[last])};
+}
 
-  Section s{"Velocity profiles and speed map", {}, {}, {}};
-  s.summary = fmt::format("Mean velocity of the grains in the band {:.4g} m <= y < {:.4g} m, in {} "
-                          "bins across x, over {} snapshots from t = {:.3g} s; the mean speed on a "
-                          "grid (false colour).",
-                          y0, y1, bins, frames.size(), frames.front().time);
-  s.numbers = {{"v_y on the centre line", fmt::format("{:.4g} m/s", centre)},
-               {"v_y in the outermost occupied bins", fmt::format("{:.4g} m/s", edges)}};
-  std::string json = fmt::format(
-      "{{\"band\": [{}, {}], \"bins\": {}, \"snapshots\": {}, \"from\": {}, \"centre_vy\": {}, "
-      "\"edge_vy\": {}",
-      json_number(y0), json_number(y1), bins, frames.size(), json_number(frames.front().time),
-      json_number(centre), json_number(edges));
-  fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots; v_y centre {:.4g} m/s, "
-             "edges {:.4g} m/s\n",
-             y0, y1, bins, frames.size(), centre, edges);
-
-  // the speed map over where the grains went, cells of two mean diameters by default
-  const double cell = o.cell > 0.0 ? o.cell : 2.0 * d;
+// The mean speed on a grid of `cell` over where the grains went: speed_map.csv and .json.
+void write_speed_map(const fs::path& out, const std::vector<Frame>& frames, const Rect& seen,
+                     double cell) {
   const SpeedMap m = speed_map(frames, seen, cell);
   std::string map = "column,row,x,y,mean_speed,samples\n";
   for (std::size_t r = 0; r < m.ny; ++r)
@@ -164,6 +141,46 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
                   m.nx, m.ny, json_number(cell), json_number(m.region.lo.x),
                   json_number(m.region.lo.y), json_number(m.region.hi.x),
                   json_number(m.region.hi.y), frames.size()));
+}
+
+} // namespace
+
+Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
+  const Scenario& sc = run.scenario();
+  const auto& frames = run.frames(o.from);
+  const double d = 2.0 * run.mean_radius();
+  Rect seen = empty_rect; // where the grains went, over all frames
+  for (const Frame& f : frames) take_in(seen, f);
+  const Rect band = profile_band(sc, frames, seen, o);
+  const double y0 = band.lo.y, y1 = band.hi.y, x0 = band.lo.x, x1 = band.hi.x;
+  const std::size_t bins =
+      o.bins ? o.bins : std::clamp<std::size_t>(static_cast<std::size_t>((x1 - x0) / d), 5, 60);
+  const BandProfile p = band_profile(frames, y0, y1, x0, x1, bins);
+  const fs::path out = run.out();
+  std::string csv = "x,vx,vy,speed,samples\n";
+  for (std::size_t b = 0; b < p.x.size(); ++b)
+    csv += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{}\n", p.x[b], p.vx[b], p.vy[b], p.speed[b],
+                       p.count[b]);
+  write_file_atomically((out / "profiles.csv").string(), csv);
+  const auto [centre, edges] = centre_and_edges(p, x0, x1);
+
+  Section s{"Velocity profiles and speed map", {}, {}, {}};
+  s.summary = fmt::format("Mean velocity of the grains in the band {:.4g} m <= y < {:.4g} m, in {} "
+                          "bins across x, over {} snapshots from t = {:.3g} s; the mean speed on a "
+                          "grid (false colour).",
+                          y0, y1, bins, frames.size(), frames.front().time);
+  s.numbers = {{"v_y on the centre line", fmt::format("{:.4g} m/s", centre)},
+               {"v_y in the outermost occupied bins", fmt::format("{:.4g} m/s", edges)}};
+  std::string json = fmt::format(
+      "{{\"band\": [{}, {}], \"bins\": {}, \"snapshots\": {}, \"from\": {}, \"centre_vy\": {}, "
+      "\"edge_vy\": {}",
+      json_number(y0), json_number(y1), bins, frames.size(), json_number(frames.front().time),
+      json_number(centre), json_number(edges));
+  fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots; v_y centre {:.4g} m/s, "
+             "edges {:.4g} m/s\n",
+             y0, y1, bins, frames.size(), centre, edges);
+  // cells of two mean diameters by default
+  write_speed_map(out, frames, seen, o.cell > 0.0 ? o.cell : 2.0 * d);
 
   if (has_orifice(sc)) {
     const Discharge q = run_discharge(run, o);
