@@ -77,14 +77,7 @@ std::string shortest_floats(const std::string& text) {
   return out;
 }
 
-} // namespace
-
-std::string to_toml(const Scenario& s) {
-  toml::table root;
-  root.insert("name", s.name);
-  root.insert("description", s.description);
-
-  const SimulationSection& sim = s.simulation;
+toml::table simulation_table(const SimulationSection& sim) {
   toml::table t;
   t.insert("duration", sim.duration);
   if (sim.timestep)
@@ -103,18 +96,21 @@ std::string to_toml(const Scenario& s) {
   t.insert("skin", sim.skin);
   t.insert("sort_every", static_cast<std::int64_t>(sim.sort_every));
   t.insert("impact_speed", sim.impact_speed);
-  root.insert("simulation", t);
+  return t;
+}
 
-  toml::array materials;
-  for (const Material& m : s.materials) {
+toml::array materials_array(const std::vector<Material>& materials) {
+  toml::array out;
+  for (const Material& m : materials) {
     toml::table row{{"name", m.name}};
     for (const MaterialKey& k : material_keys) row.insert(k.name, m.*k.field);
     row.insert("rigid", m.rigid);
-    materials.push_back(std::move(row));
+    out.push_back(std::move(row));
   }
-  root.insert("materials", materials);
+  return out;
+}
 
-  const ParticlesSection& p = s.particles;
+toml::table particles_table(const ParticlesSection& p) {
   toml::table size{{"distribution", p.size.distribution},
                    {"mean_radius", p.size.mean_radius},
                    {"spread", p.size.spread},
@@ -135,15 +131,18 @@ std::string to_toml(const Scenario& s) {
                         {"material", p.material},
                         {"size", size}};
   if (!explicit_list.empty()) particles.insert("list", explicit_list);
-  root.insert("particles", particles);
+  return particles;
+}
 
-  toml::table packing{{"method", s.packing.method},
-                      {"settle_energy", s.packing.settle_energy},
-                      {"settle_max_time", s.packing.settle_max_time}};
-  if (s.packing.region) packing.insert("region", rect(*s.packing.region));
-  root.insert("packing", packing);
+toml::table packing_table(const PackingSection& p) {
+  toml::table packing{{"method", p.method},
+                      {"settle_energy", p.settle_energy},
+                      {"settle_max_time", p.settle_max_time}};
+  if (p.region) packing.insert("region", rect(*p.region));
+  return packing;
+}
 
-  const GeometrySection& g = s.geometry;
+toml::table geometry_table(const GeometrySection& g) {
   toml::table geometry{{"builder", g.builder},
                        {"width", g.width},
                        {"height", g.height},
@@ -163,60 +162,85 @@ std::string to_toml(const Scenario& s) {
   for (const SegmentSpec& seg : g.segments)
     segments.push_back(toml::table{{"a", vec(seg.a)}, {"b", vec(seg.b)}});
   if (!segments.empty()) geometry.insert("segments", segments);
-  root.insert("geometry", geometry);
+  return geometry;
+}
 
-  toml::array drivers;
-  for (const DriverSection& d : s.drivers)
-    drivers.push_back(toml::table{{"type", d.type},
-                                  {"target", d.target},
-                                  {"amplitude", d.amplitude},
-                                  {"frequency", d.frequency},
-                                  {"phase", d.phase},
-                                  {"direction", vec(d.direction)},
-                                  {"velocity", vec(d.velocity)},
-                                  {"centre", vec(d.centre)},
-                                  {"angular_velocity", d.angular_velocity}});
-  if (!drivers.empty()) root.insert("drivers", drivers);
+toml::array drivers_array(const std::vector<DriverSection>& drivers) {
+  toml::array out;
+  for (const DriverSection& d : drivers)
+    out.push_back(toml::table{{"type", d.type},
+                              {"target", d.target},
+                              {"amplitude", d.amplitude},
+                              {"frequency", d.frequency},
+                              {"phase", d.phase},
+                              {"direction", vec(d.direction)},
+                              {"velocity", vec(d.velocity)},
+                              {"centre", vec(d.centre)},
+                              {"angular_velocity", d.angular_velocity}});
+  return out;
+}
 
+toml::table track_table(const TrackSection& t) {
   toml::array ids;
-  for (const auto id : s.track.ids) ids.push_back(static_cast<std::int64_t>(id));
-  root.insert("track", toml::table{{"ids", ids},
-                                   {"select", s.track.select},
-                                   {"at", vec(s.track.at)},
-                                   {"count", static_cast<std::int64_t>(s.track.count)}});
+  for (const auto id : t.ids) ids.push_back(static_cast<std::int64_t>(id));
+  return toml::table{{"ids", ids},
+                     {"select", t.select},
+                     {"at", vec(t.at)},
+                     {"count", static_cast<std::int64_t>(t.count)}};
+}
 
-  const OutputSection& o = s.output;
+toml::table output_table(const OutputSection& o) {
   toml::array pictures;
   for (const auto& name : o.pictures) pictures.push_back(name);
-  root.insert("output", toml::table{{"thermo_interval", o.thermo_interval},
-                                    {"snapshot_interval", o.snapshot_interval},
-                                    {"checkpoint_interval", o.checkpoint_interval},
-                                    {"track_interval", o.track_interval},
-                                    {"thesis_out", o.thesis_out},
-                                    {"contacts", o.contacts},
-                                    {"energy_ledger", o.energy_ledger},
-                                    {"picture", o.picture},
-                                    {"pictures", pictures},
-                                    {"movie", o.movie},
-                                    {"movie_color", o.movie_color}});
-  const FrostSection& f = s.frost;
-  root.insert("frost", toml::table{{"model", f.model},
-                                   {"heave_factor", f.heave_factor},
-                                   {"kinetic_threshold", f.kinetic_threshold},
-                                   {"min_interval", f.min_interval},
-                                   {"cycles", static_cast<std::int64_t>(f.cycles)},
-                                   {"permafrost_depth", f.permafrost_depth},
-                                   {"heave_strain", f.heave_strain},
-                                   {"conductivity_ratio", f.conductivity_ratio},
-                                   {"stone_water", f.stone_water},
-                                   {"ice_content", f.ice_content},
-                                   {"crust_length", f.crust_length},
-                                   {"column_width", f.column_width},
-                                   {"stone_radius", f.stone_radius},
-                                   {"freeze_time", f.freeze_time},
-                                   {"thaw_time", f.thaw_time},
-                                   {"frost_pull", f.frost_pull},
-                                   {"thawed_material", f.thawed_material}});
+  return toml::table{{"thermo_interval", o.thermo_interval},
+                     {"snapshot_interval", o.snapshot_interval},
+                     {"checkpoint_interval", o.checkpoint_interval},
+                     {"track_interval", o.track_interval},
+                     {"thesis_out", o.thesis_out},
+                     {"contacts", o.contacts},
+                     {"energy_ledger", o.energy_ledger},
+                     {"picture", o.picture},
+                     {"pictures", pictures},
+                     {"movie", o.movie},
+                     {"movie_color", o.movie_color}};
+}
+
+toml::table frost_table(const FrostSection& f) {
+  return toml::table{{"model", f.model},
+                     {"heave_factor", f.heave_factor},
+                     {"kinetic_threshold", f.kinetic_threshold},
+                     {"min_interval", f.min_interval},
+                     {"cycles", static_cast<std::int64_t>(f.cycles)},
+                     {"permafrost_depth", f.permafrost_depth},
+                     {"heave_strain", f.heave_strain},
+                     {"conductivity_ratio", f.conductivity_ratio},
+                     {"stone_water", f.stone_water},
+                     {"ice_content", f.ice_content},
+                     {"crust_length", f.crust_length},
+                     {"column_width", f.column_width},
+                     {"stone_radius", f.stone_radius},
+                     {"freeze_time", f.freeze_time},
+                     {"thaw_time", f.thaw_time},
+                     {"frost_pull", f.frost_pull},
+                     {"thawed_material", f.thawed_material}};
+}
+
+} // namespace
+
+std::string to_toml(const Scenario& s) {
+  toml::table root;
+  root.insert("name", s.name);
+  root.insert("description", s.description);
+  root.insert("simulation", simulation_table(s.simulation));
+  root.insert("materials", materials_array(s.materials));
+  root.insert("particles", particles_table(s.particles));
+  root.insert("packing", packing_table(s.packing));
+  root.insert("geometry", geometry_table(s.geometry));
+  const toml::array drivers = drivers_array(s.drivers);
+  if (!drivers.empty()) root.insert("drivers", drivers);
+  root.insert("track", track_table(s.track));
+  root.insert("output", output_table(s.output));
+  root.insert("frost", frost_table(s.frost));
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";
