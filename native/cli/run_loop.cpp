@@ -19,6 +19,7 @@
 #include "analysis/energy_ledger.hpp"
 #include "analysis/observables.hpp"
 #include "cli/pictures.hpp"
+#include "cli/run_progress.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/thesis_format.hpp"
@@ -47,7 +48,9 @@ std::uint64_t every(double interval, double dt) {
 class Run {
 public:
   Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, const RunOptions& o)
-      : s_(s), sim_(std::move(sim)), book_(std::move(book)), dir_(std::move(dir)), o_(o) {
+      : s_(s), sim_(std::move(sim)), book_(std::move(book)), dir_(std::move(dir)), o_(o),
+        progress_(o.quiet, s.simulation.duration, s.output.thermo_interval,
+                  sim_.config().timestep) {
     const double dt = sim_.config().timestep;
     total_ = static_cast<std::uint64_t>(std::ceil(s.simulation.duration / dt - 1e-9));
     stop_ = o.stop_at >= 0.0
@@ -57,7 +60,6 @@ public:
     snapshot_every_ = every(s.output.snapshot_interval, dt);
     track_every_ = std::max<std::uint64_t>(1, every(s.output.track_interval, dt));
     checkpoint_every_ = every(s.output.checkpoint_interval, dt);
-    tty_ = !o.quiet && ::isatty(STDERR_FILENO);
     checkpointed_ = !book_.file_bytes.empty(); // resumed: from a checkpoint
     checkpointed_snapshots_ = book_.snapshots;
     if (s.frost.model == "front") {
@@ -125,10 +127,10 @@ public:
     std::signal(SIGTERM, on_signal);
     stop_requested = 0;
     const auto start = std::chrono::steady_clock::now();
-    const double wall_before = book_.wall_seconds;
+    session_wall_before_ = book_.wall_seconds;
     const std::uint64_t first_step = sim_.step_count();
     const auto wall_now = [&] {
-      return wall_before +
+      return session_wall_before_ +
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     // a run killed after its last checkpoint, while drawing its pictures, has its end recorded
@@ -145,55 +147,28 @@ public:
       if (!book_.tracked.empty() && k % track_every_ == 0) record_track();
       if (k % thermo_every_ == 0) {
         record_thermo();
-        progress(wall_now() - wall_before, k - first_step);
-        if (s_.frost.model == "uniform" && freeze()) {
-          if (s_.frost.cycles > 0 && book_.freezes >= s_.frost.cycles) {
-            ended = "cycles";
-            break;
-          }
-        }
-        if (front_ && front_->phase() == FrostFront::Phase::idle && at_rest()) {
-          if (s_.frost.cycles > 0 && book_.freezes >= s_.frost.cycles) {
-            log_frost("end");
-            ended = "cycles";
-            break;
-          }
-          front_->start_freeze(sim_);
-          ++book_.freezes;
-          log_frost("freeze");
+        progress_.report(sim_.time(), k, total_, stop_, wall_now() - session_wall_before_,
+                         k - first_step, last_kinetic_);
+        if (frost_cycles_done()) {
+          ended = "cycles";
+          break;
         }
       }
-      if (front_ && front_->phase() != FrostFront::Phase::idle && k % front_every_ == 0 &&
-          front_->advance(sim_)) {
-        if (front_->phase() == FrostFront::Phase::thawing) {
-          log_frost("thaw");
-        } else {
-          book_.last_freeze = sim_.time(); // the next cycle waits min_interval after the thaw
-          log_frost("thawed");
-        }
-      }
+      if (front_ && front_->phase() != FrostFront::Phase::idle && k % front_every_ == 0)
+        advance_front();
       if (snapshot_every_ && k % snapshot_every_ == 0) {
         write_snapshot();
         if (out_.is_open()) out_ << thesis_out_block(sim_);
       }
       if (checkpoint_every_ && k % checkpoint_every_ == 0) checkpoint(wall_now());
-      if (stop_requested) {
-        checkpoint(wall_now());
-        finish_progress();
-        fmt::print(stderr,
-                   "talus: interrupted at t = {:.6g} s; checkpoint written. Continue with: "
-                   "talus resume {}\n",
-                   sim_.time(), dir_.string());
-        write_run_json(wall_now(), sim_.step_count() - first_step, "signal");
-        return exit_interrupted;
-      }
+      if (stop_requested) return stop_on_signal(wall_now(), first_step);
     }
     if (!finished_before) {
       if (sim_.step_count() < total_ && ended == "duration") ended = "stop_at";
       if (ended != "stop_at") record_end(ended);
       checkpoint(wall_now());
     }
-    finish_progress();
+    progress_.finish();
     if (ended != "stop_at" && s_.output.picture) {
       write_snapshot_png(sim_, (dir_ / "final.png").string(), 1200, SnapshotColour::speed);
     }
@@ -201,12 +176,52 @@ public:
     write_run_json(wall_now(), sim_.step_count() - first_step, ended);
     if (!o_.quiet)
       fmt::print("{} at t = {} s after {} steps; run folder {}\n",
-                 ended == "stop_at" ? "stopped (--stop-at)" : "finished", time_text(sim_.time()),
-                 sim_.step_count(), dir_.string());
+                 ended == "stop_at" ? "stopped (--stop-at)" : "finished",
+                 progress_.time_text(sim_.time()), sim_.step_count(), dir_.string());
     return ended == "stop_at" ? exit_stopped : exit_completed;
   }
 
 private:
+  // The frost models at a thermo row: the uniform rule freezes when the grains are at rest; the
+  // front model starts a freeze then. True when the run has had its frost.cycles.
+  bool frost_cycles_done() {
+    const auto done = [&] { return s_.frost.cycles > 0 && book_.freezes >= s_.frost.cycles; };
+    if (s_.frost.model == "uniform" && freeze() && done()) return true;
+    if (front_ && front_->phase() == FrostFront::Phase::idle && at_rest()) {
+      if (done()) {
+        log_frost("end");
+        return true;
+      }
+      front_->start_freeze(sim_);
+      ++book_.freezes;
+      log_frost("freeze");
+    }
+    return false;
+  }
+
+  // The front model's freeze or thaw front moves on; it logs when a phase ends.
+  void advance_front() {
+    if (!front_->advance(sim_)) return;
+    if (front_->phase() == FrostFront::Phase::thawing) {
+      log_frost("thaw");
+    } else {
+      book_.last_freeze = sim_.time(); // the next cycle waits min_interval after the thaw
+      log_frost("thawed");
+    }
+  }
+
+  // SIGINT or SIGTERM: a checkpoint, then the command that continues the run.
+  int stop_on_signal(double wall, std::uint64_t first_step) {
+    checkpoint(wall);
+    progress_.finish();
+    fmt::print(stderr,
+               "talus: interrupted at t = {:.6g} s; checkpoint written. Continue with: "
+               "talus resume {}\n",
+               sim_.time(), dir_.string());
+    write_run_json(wall, sim_.step_count() - first_step, "signal");
+    return exit_interrupted;
+  }
+
   // The end's state is always recorded, though an interval may not divide the duration; the
   // checkpoint that follows says the run ended, so a resume never records it twice.
   void record_end(const std::string& why) {
@@ -380,7 +395,7 @@ private:
 
   void log_frost(const char* event) {
     frost_ << fmt::format("{},{:.9g},{}\n", book_.freezes, sim_.time(), event);
-    if (!o_.quiet && !tty_)
+    if (!o_.quiet && !progress_.on_terminal())
       fmt::print("frost: {} {} at t = {:.6g} s\n", event, book_.freezes, sim_.time());
   }
 
@@ -453,46 +468,10 @@ private:
                              dir_.string());
   }
 
-  void progress(double wall, std::uint64_t steps_done) {
-    if (o_.quiet) return;
-    const double fraction = static_cast<double>(sim_.step_count()) / static_cast<double>(total_);
-    const double rate = wall > 0 ? static_cast<double>(steps_done) / wall : 0.0;
-    const double eta = rate > 0 ? static_cast<double>(stop_ - sim_.step_count()) / rate : 0.0;
-    if (tty_) {
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last_print_ < std::chrono::milliseconds(250)) return;
-      last_print_ = now;
-      const int filled = static_cast<int>(fraction * 30.0);
-      fmt::print(
-          stderr, "\r  t = {:.4f} / {:.4f} s [{}{}] {:5.1f}%  {:.3g} steps/s  ETA {:.0f} s   ",
-          sim_.time(), s_.simulation.duration, std::string(static_cast<std::size_t>(filled), '#'),
-          std::string(static_cast<std::size_t>(30 - filled), '.'), 100.0 * fraction, rate, eta);
-      printed_ = true;
-    } else if (fraction >= next_report_) {
-      next_report_ = std::floor(fraction * 10.0 + 1.0) / 10.0;
-      fmt::print("t = {} / {} s ({:.0f}%), {:.3g} steps/s, E_kin = {:.4e} J, ETA {:.0f} s\n",
-                 time_text(sim_.time()), time_text(s_.simulation.duration), 100.0 * fraction, rate,
-                 last_kinetic_, eta);
-      std::fflush(stdout);
-    }
-  }
-
-  // A time as the thermo interval resolves it: 0.61 s, not the 0.60999 s of a step's rounding.
-  std::string time_text(double t) const {
-    const double interval = std::max(s_.output.thermo_interval, sim_.config().timestep);
-    const int decimals =
-        std::clamp(static_cast<int>(std::ceil(-std::log10(interval) - 1e-9)), 0, 9);
-    return fmt::format("{:.{}f}", t, decimals);
-  }
-
-  void finish_progress() {
-    if (printed_) fmt::print(stderr, "\n");
-  }
-
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {
     const std::size_t n = sim_.world().particles.size();
-    const double session_wall = wall - book_.wall_seconds;
-    (void)session_wall;
+    // the rate of this session: its steps over its own wall time (wall counts every session's)
+    const double session_wall = wall - session_wall_before_;
     const std::string json = fmt::format(
         "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
         "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
@@ -504,9 +483,8 @@ private:
         TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),
         sim_.config().timestep, book_.collision_time, to_string(sim_.config().integrator),
         sim_.threads(), sim_.config().threads, sim_.step_description(), book_.settle_time, wall,
-        wall > 0
-            ? static_cast<double>(steps_done) * static_cast<double>(n) / std::max(wall - 0.0, 1e-9)
-            : 0.0,
+        session_wall > 0 ? static_cast<double>(steps_done) * static_cast<double>(n) / session_wall
+                         : 0.0,
         book_.freezes, ended);
     write_file_atomically((dir_ / "run.json").string(), json);
   }
@@ -524,13 +502,12 @@ private:
   std::optional<ContactEventLog> contact_log_;
   std::optional<EnergyLedger> ledger_;
   std::uint64_t front_every_ = 1;
-  bool tty_ = false, printed_ = false;
   std::uint64_t renumberings_seen_ = 0;
-  double next_report_ = 0.1;
   double last_kinetic_ = 0.0;
   bool checkpointed_ = false;                ///< a checkpoint of this run exists
   std::uint64_t checkpointed_snapshots_ = 0; ///< the snapshots the last checkpoint counts
-  std::chrono::steady_clock::time_point last_print_{};
+  RunProgress progress_;
+  double session_wall_before_ = 0.0; ///< wall seconds of the sessions before this one
 };
 
 SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {

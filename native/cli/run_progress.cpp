@@ -1,0 +1,50 @@
+#include "cli/run_progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+namespace talus::cli {
+
+RunProgress::RunProgress(bool quiet, double duration, double thermo_interval, double timestep)
+    : quiet_(quiet), tty_(!quiet && ::isatty(STDERR_FILENO)), duration_(duration),
+      resolution_(std::max(thermo_interval, timestep)) {}
+
+void RunProgress::report(double time, std::uint64_t step, std::uint64_t total, std::uint64_t stop,
+                         double wall, std::uint64_t steps_done, double kinetic) {
+  if (quiet_) return;
+  const double fraction = static_cast<double>(step) / static_cast<double>(total);
+  const double rate = wall > 0 ? static_cast<double>(steps_done) / wall : 0.0;
+  const double eta = rate > 0 ? static_cast<double>(stop - step) / rate : 0.0;
+  if (tty_) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_print_ < std::chrono::milliseconds(250)) return;
+    last_print_ = now;
+    const int filled = static_cast<int>(fraction * 30.0);
+    fmt::print(stderr, "\r  t = {:.4f} / {:.4f} s [{}{}] {:5.1f}%  {:.3g} steps/s  ETA {:.0f} s   ",
+               time, duration_, std::string(static_cast<std::size_t>(filled), '#'),
+               std::string(static_cast<std::size_t>(30 - filled), '.'), 100.0 * fraction, rate,
+               eta);
+    printed_ = true;
+  } else if (fraction >= next_report_) {
+    next_report_ = std::floor(fraction * 10.0 + 1.0) / 10.0;
+    fmt::print("t = {} / {} s ({:.0f}%), {:.3g} steps/s, E_kin = {:.4e} J, ETA {:.0f} s\n",
+               time_text(time), time_text(duration_), 100.0 * fraction, rate, kinetic, eta);
+    std::fflush(stdout);
+  }
+}
+
+void RunProgress::finish() {
+  if (printed_) fmt::print(stderr, "\n");
+}
+
+std::string RunProgress::time_text(double t) const {
+  const int decimals =
+      std::clamp(static_cast<int>(std::ceil(-std::log10(resolution_) - 1e-9)), 0, 9);
+  return fmt::format("{:.{}f}", t, decimals);
+}
+
+} // namespace talus::cli
