@@ -10,8 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
-#include <unistd.h>
 
 #include <fmt/core.h>
 
@@ -20,10 +18,10 @@
 #include "analysis/observables.hpp"
 #include "cli/pictures.hpp"
 #include "cli/run_progress.hpp"
+#include "cli/run_records.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/thesis_format.hpp"
-#include "io/vtk.hpp"
 #include "render/snapshot_png.hpp"
 #include "scenario/contact_pairs.hpp"
 #include "scenario/frost_setup.hpp"
@@ -88,15 +86,8 @@ public:
     if (contact_log_) events_.open(dir_ / "contact_events.csv", mode);
     if (!thermo_) throw WriteError("cannot write " + (dir_ / "thermo.csv").string());
     if (!fresh) return;
-    std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
-                       "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
-                       "packing_fraction";
-    if (ledger_) {
-      head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
-      ledger_->start(sim_);
-    }
-    for (const auto& [name, _] : book_.groups) head += ",force_" + name + "_x,force_" + name + "_y";
-    thermo_ << head << "\n";
+    if (ledger_) ledger_->start(sim_);
+    thermo_ << thermo_header(book_, ledger_.has_value());
     if (track_.is_open()) track_ << "time,id,x,y,angle,vx,vy,omega\n";
     if (frost_.is_open()) frost_ << "cycle,time,event\n";
     if (events_.is_open()) events_ << contact_events_header();
@@ -265,12 +256,7 @@ private:
 
   void record_thermo() {
     const Energies e = energies(sim_);
-    const Vec2 p = linear_momentum(sim_);
-    std::string row = fmt::format(
-        "{:.9g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},{},{:.6f}",
-        sim_.time(), sim_.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
-        e.total(), p.x, p.y, angular_momentum(sim_), coordination_number(sim_), contact_count(sim_),
-        packing());
+    std::string row = thermo_columns(sim_, s_, book_, e);
     if (ledger_) {
       const LedgerRow l = ledger_->row(e);
       // energy from nowhere: an instability the overlap guard has not seen (yet)
@@ -279,35 +265,8 @@ private:
       row += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
                          l.wall_work, l.imbalance);
     }
-    for (const auto& [name, g] : book_.groups) {
-      Vec2 f = force_on_particles(sim_, g.particles);
-      for (const auto sidx : g.segments) f += sim_.world().walls[sidx].force;
-      row += fmt::format(",{:.9e},{:.9e}", f.x, f.y);
-    }
-    thermo_ << row << "\n";
+    thermo_ << row << group_force_columns(sim_, book_) << "\n";
     last_kinetic_ = e.kinetic();
-  }
-
-  // The packing fraction of the container: in the drum, of the whole drum (how full it is; the
-  // fill region is a square inside it); elsewhere of the fill region, up to a lid.
-  double packing() const {
-    if (s_.geometry.builder == "drum") {
-      const double r = s_.geometry.radius;
-      return disc_area_fraction(sim_, Vec2{r, r}, r);
-    }
-    return packing_fraction(sim_, book_.fill.lo, packing_top());
-  }
-
-  // The packing region's top corner: the fill region's, or below a pressing lid (the grain
-  // press' "lid" group), so the packing fraction is of the packing, not of the empty box above.
-  Vec2 packing_top() const {
-    Vec2 hi = book_.fill.hi;
-    if (const auto lid = book_.groups.find("lid"); lid != book_.groups.end())
-      for (const auto s : lid->second.segments) {
-        const Segment& w = sim_.world().walls[s];
-        hi.y = std::min({hi.y, w.a.y, w.b.y});
-      }
-    return hi;
   }
 
   // Steps to the next one after which the loop looks at the state (a record, a snapshot, a
@@ -341,46 +300,16 @@ private:
       for (std::uint32_t& i : g.particles) i = to[i];
   }
 
-  void record_track() {
-    const Particles& p = sim_.world().particles;
-    for (const auto i : book_.tracked)
-      // every number as the shortest text that reads back to the engine's double: the tracks
-      // compare with another engine's to rounding
-      track_ << fmt::format("{},{},{},{},{},{},{},{}\n", sim_.time(), p.id[i], p.position[i].x,
-                            p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
-                            p.angular_velocity[i]);
-  }
+  void record_track() { track_ << track_rows(sim_, book_.tracked); }
 
   void write_snapshot() {
-    const std::uint64_t n = book_.snapshots++;
-    const std::string name = fmt::format("particles_{:06d}.vtp", n);
-    write_file_atomically((dir_ / "snapshots" / name).string(), vtp_particles(sim_));
-    if (!sim_.world().walls.empty())
-      write_file_atomically((dir_ / "snapshots" / fmt::format("walls_{:06d}.vtp", n)).string(),
-                            vtp_walls(sim_));
-    write_file_atomically((dir_ / "snapshots" / fmt::format("contacts_{:06d}.vtp", n)).string(),
-                          vtp_contacts(sim_));
-    if (s_.output.contacts)
-      write_file_atomically((dir_ / "snapshots" / fmt::format("contacts_{:06d}.csv", n)).string(),
-                            contacts_csv(sim_));
+    write_snapshot_files(dir_, sim_, book_.snapshots++, s_.output.contacts);
     write_collections();
   }
 
   void write_collections() {
-    // times of snapshot k: k * interval (snapshot 0 at t = 0), but for the end's, off the grid
-    std::vector<std::pair<double, std::string>> particles, walls, contacts;
-    const double dt = sim_.config().timestep;
-    for (std::uint64_t k = 0; k < book_.snapshots; ++k) {
-      const bool end = end_snapshot_step_ && k + 1 == book_.snapshots;
-      const double t = static_cast<double>(end ? end_snapshot_step_ : k * snapshot_every_) * dt;
-      particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
-      walls.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
-      contacts.emplace_back(t, fmt::format("snapshots/contacts_{:06d}.vtp", k));
-    }
-    write_file_atomically((dir_ / "particles.pvd").string(), pvd_collection(particles));
-    if (!sim_.world().walls.empty())
-      write_file_atomically((dir_ / "walls.pvd").string(), pvd_collection(walls));
-    write_file_atomically((dir_ / "contacts.pvd").string(), pvd_collection(contacts));
+    write_collections_of(dir_, book_.snapshots, snapshot_every_, end_snapshot_step_,
+                         sim_.config().timestep, !sim_.world().walls.empty());
   }
 
   // The grains are at rest and the last freeze (or thaw) is at least min_interval ago.
@@ -448,13 +377,7 @@ private:
                                " (disk full or a file size limit?) before the run's first "
                                "checkpoint; make room, then start it again with: talus run " +
                                (dir_ / "scenario.toml").string() + " --out " + dir_.string());
-    for (const auto& [file, bytes] : book_.file_bytes) fs::resize_file(dir_ / file, bytes, ignored);
-    for (const auto& entry : fs::directory_iterator(dir_ / "snapshots", ignored)) {
-      unsigned long k = 0;
-      const std::string f = entry.path().filename().string();
-      if (std::sscanf(f.c_str(), "%*[a-z]_%lu", &k) == 1 && k >= checkpointed_snapshots_)
-        fs::remove(entry.path(), ignored);
-    }
+    cut_back_outputs(dir_, book_.file_bytes, checkpointed_snapshots_, ignored);
     book_.snapshots = checkpointed_snapshots_;
     end_snapshot_step_ = 0; // an end snapshot, if written, was after the checkpoint
     try { // the collections and run.json need a little room too; the checkpoint is what counts
@@ -469,24 +392,9 @@ private:
   }
 
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {
-    const std::size_t n = sim_.world().particles.size();
-    // the rate of this session: its steps over its own wall time (wall counts every session's)
-    const double session_wall = wall - session_wall_before_;
-    const std::string json = fmt::format(
-        "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
-        "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
-        "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
-        "  \"threads_asked\": {},\n  \"step\": \"{}\",\n"
-        "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.6f},\n"
-        "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
-        "\"{}\"\n}}\n",
-        TALUS_VERSION, s_.name, s_.simulation.seed, n, sim_.step_count(), sim_.time(),
-        sim_.config().timestep, book_.collision_time, to_string(sim_.config().integrator),
-        sim_.threads(), sim_.config().threads, sim_.step_description(), book_.settle_time, wall,
-        session_wall > 0 ? static_cast<double>(steps_done) * static_cast<double>(n) / session_wall
-                         : 0.0,
-        book_.freezes, ended);
-    write_file_atomically((dir_ / "run.json").string(), json);
+    write_file_atomically(
+        (dir_ / "run.json").string(),
+        run_json(s_, sim_, book_, wall, wall - session_wall_before_, steps_done, ended));
   }
 
   const Scenario& s_;
@@ -515,26 +423,6 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
   return c;
 }
 
-// The engine uses fewer threads than asked where a thread would have too few particles to
-// repay its cost: say so rather than leave the user to wonder.
-void report_threads(const Simulation& sim, const RunOptions& o) {
-  const int asked = sim.config().threads;
-  if (o.quiet || asked <= 0 || sim.threads() >= asked) return;
-  fmt::print("  {} of the {} threads asked: {} particles, and a thread needs about {} to pay for "
-             "itself\n",
-             sim.threads(), asked, sim.world().particles.size(),
-             sim.config().min_particles_per_thread);
-}
-
-// The step specialised to the scene: what it leaves out (simulation/step_features.hpp).
-void report_step(const Simulation& sim, const RunOptions& o) {
-  if (o.quiet) return;
-  if (sim.step_description() == "general")
-    fmt::print("  step: the general one (the scene uses every feature it has)\n");
-  else
-    fmt::print("  step specialised to the scene: {}\n", sim.step_description());
-}
-
 } // namespace
 
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
@@ -549,8 +437,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   write_file_atomically((folder.path() / "scenario.toml").string(),
                         to_toml(s) + describe_contact_pairs(built.world, built.config));
   Simulation sim(std::move(built.world), with_threads(built.config, o));
-  report_threads(sim, o);
-  report_step(sim, o);
+  report_opening(sim, o.quiet);
   Run run(s, std::move(sim), std::move(book), folder.path(), o);
   return run.loop(true);
 }
@@ -585,18 +472,13 @@ int resume_run(const std::string& dir, const RunOptions& o) {
                           (d / "scenario.toml").string() + " --out " + dir);
   if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
   RunBook book = RunBook::decode(c->run_data);
-  // cut the outputs back to what they held at the checkpoint
-  for (const auto& [name, bytes] : book.file_bytes)
-    if (fs::exists(d / name)) fs::resize_file(d / name, bytes);
-  for (const auto& entry : fs::directory_iterator(d / "snapshots")) {
-    unsigned long k = 0;
-    const std::string f = entry.path().filename().string();
-    if (std::sscanf(f.c_str(), "%*[a-z]_%lu", &k) == 1 && k >= book.snapshots)
-      fs::remove(entry.path());
-  }
+  std::error_code cut;
+  cut_back_outputs(d, book.file_bytes, book.snapshots, cut);
+  if (cut)
+    throw WriteError("cannot cut the outputs of '" + dir +
+                     "' back to its checkpoint: " + cut.message());
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
-  report_threads(sim, o);
-  report_step(sim, o);
+  report_opening(sim, o.quiet);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
   Run run(s, std::move(sim), std::move(book), d, o);

@@ -7,7 +7,26 @@
 
 #include <fmt/core.h>
 
+#include "simulation/simulation.hpp"
+
 namespace talus::cli {
+
+void report_opening(const Simulation& sim, bool quiet) {
+  if (quiet) return;
+  // the engine uses fewer threads than asked where a thread would have too few particles to
+  // repay its cost: say so rather than leave the user to wonder
+  const int asked = sim.config().threads;
+  if (asked > 0 && sim.threads() < asked)
+    fmt::print("  {} of the {} threads asked: {} particles, and a thread needs about {} to pay "
+               "for itself\n",
+               sim.threads(), asked, sim.world().particles.size(),
+               sim.config().min_particles_per_thread);
+  // the step specialised to the scene: what it leaves out (simulation/step_features.hpp)
+  if (sim.step_description() == "general")
+    fmt::print("  step: the general one (the scene uses every feature it has)\n");
+  else
+    fmt::print("  step specialised to the scene: {}\n", sim.step_description());
+}
 
 RunProgress::RunProgress(bool quiet, double duration, double thermo_interval, double timestep)
     : quiet_(quiet), tty_(!quiet && ::isatty(STDERR_FILENO)), duration_(duration),

@@ -5,7 +5,15 @@
 #include <cstdint>
 #include <string>
 
+namespace talus {
+class Simulation;
+}
+
 namespace talus::cli {
+
+/// The run's opening lines (unless `quiet`): the step specialised to the scene (what it leaves
+/// out), and the threads taken when fewer than asked.
+void report_opening(const Simulation& sim, bool quiet);
 
 class RunProgress {
 public:

@@ -1,0 +1,158 @@
+#include "cli/run_records.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+#include <fmt/core.h>
+
+#include "io/checkpoint.hpp"
+#include "io/contact_csv.hpp"
+#include "io/vtk.hpp"
+#include "scenario/load.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+// The packing region's top corner: the fill region's, or below a pressing lid (the grain
+// press' "lid" group), so the packing fraction is of the packing, not of the empty box above.
+Vec2 packing_top(const Simulation& sim, const RunBook& book) {
+  Vec2 hi = book.fill.hi;
+  if (const auto lid = book.groups.find("lid"); lid != book.groups.end())
+    for (const auto s : lid->second.segments) {
+      const Segment& w = sim.world().walls[s];
+      hi.y = std::min({hi.y, w.a.y, w.b.y});
+    }
+  return hi;
+}
+
+// The packing fraction of the container: in the drum, of the whole drum (how full it is; the
+// fill region is a square inside it); elsewhere of the fill region, up to a lid.
+double packing(const Simulation& sim, const Scenario& s, const RunBook& book) {
+  if (s.geometry.builder == "drum") {
+    const double r = s.geometry.radius;
+    return disc_area_fraction(sim, Vec2{r, r}, r);
+  }
+  return packing_fraction(sim, book.fill.lo, packing_top(sim, book));
+}
+
+} // namespace
+
+std::string thermo_header(const RunBook& book, bool ledger) {
+  std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
+                     "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
+                     "packing_fraction";
+  if (ledger) head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
+  for (const auto& [name, _] : book.groups) head += ",force_" + name + "_x,force_" + name + "_y";
+  return head + "\n";
+}
+
+std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBook& book,
+                           const Energies& e) {
+  const Vec2 p = linear_momentum(sim);
+  return fmt::format(
+      "{:.9g},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},{},{:.6f}",
+      sim.time(), sim.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
+      e.total(), p.x, p.y, angular_momentum(sim), coordination_number(sim), contact_count(sim),
+      packing(sim, s, book));
+}
+
+std::string group_force_columns(const Simulation& sim, const RunBook& book) {
+  std::string out;
+  for (const auto& [name, g] : book.groups) {
+    Vec2 f = force_on_particles(sim, g.particles);
+    for (const auto sidx : g.segments) f += sim.world().walls[sidx].force;
+    out += fmt::format(",{:.9e},{:.9e}", f.x, f.y);
+  }
+  return out;
+}
+
+std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& tracked) {
+  const Particles& p = sim.world().particles;
+  std::string out;
+  for (const auto i : tracked)
+    // every number as the shortest text that reads back to the engine's double: the tracks
+    // compare with another engine's to rounding
+    out += fmt::format("{},{},{},{},{},{},{},{}\n", sim.time(), p.id[i], p.position[i].x,
+                       p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
+                       p.angular_velocity[i]);
+  return out;
+}
+
+void write_snapshot_files(const fs::path& dir, const Simulation& sim, std::uint64_t n,
+                          bool with_contacts_csv) {
+  const fs::path snapshots = dir / "snapshots";
+  write_file_atomically((snapshots / fmt::format("particles_{:06d}.vtp", n)).string(),
+                        vtp_particles(sim));
+  if (!sim.world().walls.empty())
+    write_file_atomically((snapshots / fmt::format("walls_{:06d}.vtp", n)).string(),
+                          vtp_walls(sim));
+  write_file_atomically((snapshots / fmt::format("contacts_{:06d}.vtp", n)).string(),
+                        vtp_contacts(sim));
+  if (with_contacts_csv)
+    write_file_atomically((snapshots / fmt::format("contacts_{:06d}.csv", n)).string(),
+                          contacts_csv(sim));
+}
+
+void write_collections_of(const fs::path& dir, std::uint64_t snapshots, std::uint64_t every,
+                          std::uint64_t end_step, double dt, bool walls) {
+  // times of snapshot k: k * interval (snapshot 0 at t = 0), but for the end's, off the grid
+  std::vector<std::pair<double, std::string>> particles, wall_files, contacts;
+  for (std::uint64_t k = 0; k < snapshots; ++k) {
+    const bool end = end_step && k + 1 == snapshots;
+    const double t = static_cast<double>(end ? end_step : k * every) * dt;
+    particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
+    wall_files.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
+    contacts.emplace_back(t, fmt::format("snapshots/contacts_{:06d}.vtp", k));
+  }
+  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(particles));
+  if (walls) write_file_atomically((dir / "walls.pvd").string(), pvd_collection(wall_files));
+  write_file_atomically((dir / "contacts.pvd").string(), pvd_collection(contacts));
+}
+
+std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& book, double wall,
+                     double session_wall, std::uint64_t steps_done, const std::string& ended) {
+  const std::size_t n = sim.world().particles.size();
+  const double rate = session_wall > 0
+                          ? static_cast<double>(steps_done) * static_cast<double>(n) / session_wall
+                          : 0.0;
+  return fmt::format(
+      "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"seed\": {},\n"
+      "  \"particles\": {},\n  \"steps\": {},\n  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n"
+      "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
+      "  \"threads_asked\": {},\n  \"step\": \"{}\",\n"
+      "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.6f},\n"
+      "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
+      "\"{}\"\n}}\n",
+      TALUS_VERSION, s.name, s.simulation.seed, n, sim.step_count(), sim.time(),
+      sim.config().timestep, book.collision_time, to_string(sim.config().integrator), sim.threads(),
+      sim.config().threads, sim.step_description(), book.settle_time, wall, rate, book.freezes,
+      ended);
+}
+
+void cut_back_outputs(const fs::path& dir, const std::map<std::string, std::uint64_t>& file_bytes,
+                      std::uint64_t snapshots, std::error_code& ec) {
+  const auto keep = [&](std::error_code e) {
+    if (e && !ec) ec = e;
+  };
+  for (const auto& [name, bytes] : file_bytes) {
+    std::error_code e;
+    if (fs::exists(dir / name, e)) fs::resize_file(dir / name, bytes, e);
+    keep(e);
+  }
+  std::error_code e;
+  for (const auto& entry : fs::directory_iterator(dir / "snapshots", e)) {
+    unsigned long k = 0;
+    const std::string f = entry.path().filename().string();
+    std::error_code r;
+    if (std::sscanf(f.c_str(), "%*[a-z]_%lu", &k) == 1 && k >= snapshots)
+      fs::remove(entry.path(), r);
+    keep(r);
+  }
+  keep(e);
+}
+
+} // namespace talus::cli

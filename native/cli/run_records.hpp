@@ -1,0 +1,47 @@
+#pragma once
+// What a run writes into its folder, row by row and file by file: thermo.csv's columns,
+// track.csv's rows, the VTK snapshots and their collections, run.json. The run loop
+// (run_loop.cpp) decides when.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "analysis/observables.hpp"
+#include "cli/run_loop.hpp"
+
+namespace talus::cli {
+
+/// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger).
+std::string thermo_header(const RunBook& book, bool ledger);
+/// The columns of a thermo row before the ledger's: time, step, energies e, momenta,
+/// coordination, contacts, packing fraction.
+std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBook& book,
+                           const Energies& e);
+/// The columns after the ledger's: the force on each wall group, x and y.
+std::string group_force_columns(const Simulation& sim, const RunBook& book);
+/// track.csv's rows of the tracked particles now.
+std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& tracked);
+/// Snapshot n's files in dir/snapshots: particles, walls (if any), contacts, and with
+/// `with_contacts_csv` the contacts as CSV (output.contacts).
+void write_snapshot_files(const std::filesystem::path& dir, const Simulation& sim, std::uint64_t n,
+                          bool with_contacts_csv);
+/// The ParaView collections of `snapshots` snapshots, taken every `every` steps of `dt`; the last
+/// one at step `end_step` when that is not 0 (the end's, off the grid).
+void write_collections_of(const std::filesystem::path& dir, std::uint64_t snapshots,
+                          std::uint64_t every, std::uint64_t end_step, double dt, bool walls);
+/// run.json: `wall` seconds over every session, of which the last took `session_wall` for
+/// `steps_done` steps; `ended`: why the run ended (docs/file-formats.md).
+std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& book, double wall,
+                     double session_wall, std::uint64_t steps_done, const std::string& ended);
+
+/// Cuts the outputs in dir back to what a checkpoint counts: each file in `file_bytes` to its size
+/// there, and the snapshots from number `snapshots` on removed. Errors go to `ec`; it goes on past
+/// them.
+void cut_back_outputs(const std::filesystem::path& dir,
+                      const std::map<std::string, std::uint64_t>& file_bytes,
+                      std::uint64_t snapshots, std::error_code& ec);
+
+} // namespace talus::cli
