@@ -35,7 +35,6 @@ the differences per case go to --out; a line per comparison is printed as it goe
 status is 1 if any comparison fails its bound.
 """
 import argparse
-import html
 import json
 import os
 import shutil
@@ -46,9 +45,10 @@ import tomllib
 
 import numpy as np
 
+from crosscheck_report import difference_chart, force_chart, statistics_chart, summary
 from measures import block_mean, measure
-from run_folder import (add_analysis_dumps, dump_blocks, first_frame, frost_heaves,
-                        lammps_run_folder)
+from run_folder import add_analysis_dumps, first_frame, frost_heaves, lammps_run_folder
+from trajectories import differences, read_dump, read_lammps_thermo, read_track
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
@@ -67,78 +67,6 @@ def run(command, cwd=None):
         sys.exit(f"{' '.join(command)} failed ({done.returncode}):\n{done.stdout[-3000:]}"
                  f"\n{done.stderr[-3000:]}")
     return time.monotonic() - start
-
-
-def read_track(path):
-    """{time: {id: (x, y, vx, vy, omega)}} from a native track.csv (ids as LAMMPS': +1)."""
-    with open(path) as f:
-        names = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    column = {n: k for k, n in enumerate(names)}
-    time = data[:, column["time"]]
-    ids = (data[:, column["id"]].astype(int) + 1).tolist()
-    state = data[:, [column[n] for n in ("x", "y", "vx", "vy", "omega")]].tolist()
-    # the rows come in frames of one time each
-    cuts = [0, *(np.flatnonzero(np.diff(time)) + 1).tolist(), len(time)]
-    frames = {}
-    for start, end in zip(cuts, cuts[1:]):
-        frames.setdefault(float(time[start]), {}).update(
-            zip(ids[start:end], map(tuple, state[start:end])))
-    return frames
-
-
-def read_dump(path, dt):
-    """The same from a LAMMPS dump of `id type radius mass x y vx vy omegaz`, keyed by time."""
-    frames = {}
-    for step, columns, rows in dump_blocks(path):
-        at = [columns.index(c) for c in ("x", "y", "vx", "vy", "omegaz")]
-        ids = rows[:, columns.index("id")].astype(int).tolist()
-        frames[step * dt] = dict(zip(ids, map(tuple, rows[:, at].tolist())))
-    return frames
-
-
-def read_lammps_thermo(path):
-    """The thermo table of a LAMMPS log (the last run's), as a dict of arrays by column."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.split()[:2] == ["Step", "Time"])
-    names = lines[start].split()
-    rows = []
-    for line in lines[start + 1:]:
-        words = line.split()
-        if len(words) != len(names):
-            break
-        try:
-            rows.append([float(w) for w in words])
-        except ValueError:
-            break
-    table = np.array(rows)
-    return {n: table[:, k] for k, n in enumerate(names)}
-
-
-def align(a, b, dt):
-    """The frames of a and b at common times (to within a hundredth of a step)."""
-    keys_b = {round(t / dt): t for t in b}
-    pairs = []
-    for t in sorted(a):
-        s = round(t / dt)
-        if s in keys_b:
-            pairs.append((s * dt, a[t], b[keys_b[s]]))
-    return pairs
-
-
-def differences(a, b, dt, radius):
-    """Times, the largest and the RMS position difference (mean radii) of trajectories a and b."""
-    times, largest, rms = [], [], []
-    for t, fa, fb in align(a, b, dt):
-        ids = sorted(set(fa) & set(fb))
-        if not ids:
-            continue
-        d = np.array([np.hypot(fa[i][0] - fb[i][0], fa[i][1] - fb[i][1]) for i in ids]) / radius
-        times.append(t)
-        largest.append(d.max())
-        rms.append(np.sqrt(np.mean(d * d)))
-    return np.array(times), np.array(largest), np.array(rms)
 
 
 class Case:
@@ -323,11 +251,11 @@ class Case:
         if "measures" in self.tolerances:
             self.measures()
         if self.stats:
-            self.statistics_chart()
+            statistics_chart(self.out, self.stats)
         for engine, wall in (("native Verlet", wall_h), ("native Gear", wall_g),
                              ("LAMMPS granthesis", wall_l1)):
             self.speeds[engine] = wall / max(1, steps * n)
-        self.chart(curves)
+        difference_chart(self.name, self.out, curves)
         return all(r[3] for r in self.rows)
 
     def rounding_until(self, t, largest):
@@ -513,87 +441,7 @@ class Case:
                      if "window" in spec else "") + count
             self.z_rows(spec["name"], values, spec, where)
         if any(spec.get("analysis") == "forces" for spec in self.tolerances["measures"]):
-            self.force_chart(runs[0])
-
-    def force_chart(self, folders):
-        """P(f/<f>) of the engines on one chart (talus analyze's forces.csv of each)."""
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5, 4))
-        for label, folder in folders.items():
-            data = np.genfromtxt(os.path.join(folder, "analysis", "forces.csv"), delimiter=",",
-                                 names=True)
-            data = data[data["count"] > 0]
-            ax.semilogy(data["f_over_mean"], data["probability_density"], "o-", ms=3,
-                        label=label)
-        ax.set_xlabel("f / <f>")
-        ax.set_ylabel("P(f / <f>)")
-        ax.set_title(f"{self.name}: normal contact forces", fontsize=9)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(self.out, "force_distribution.png"), dpi=110)
-        plt.close(fig)
-
-    def statistics_chart(self):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, len(self.stats), figsize=(3.5 * len(self.stats), 3.5),
-                                 squeeze=False)
-        for ax, (quantity, values) in zip(axes[0], self.stats):
-            labels = list(values)
-            ax.errorbar(range(len(labels)), [values[k][0] for k in labels],
-                        yerr=[values[k][1] for k in labels], fmt="o", capsize=6)
-            ax.set_xticks(range(len(labels)),
-                          [k.replace("native ", "native\n") for k in labels], fontsize=8)
-            ax.set_xlim(-0.5, len(labels) - 0.5)
-            ax.set_title(quantity, fontsize=9, wrap=True)
-        fig.tight_layout()
-        fig.savefig(os.path.join(self.out, "statistics.png"), dpi=110)
-        plt.close(fig)
-
-    def chart(self, curves):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(7, 4))
-        for label, (t, largest) in curves.items():
-            ax.semilogy(t, np.maximum(largest, 1e-18), label=label)
-        ax.set_xlabel("time (s)")
-        ax.set_ylabel("largest position difference (mean radii)")
-        ax.set_title(self.name)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(self.out, "position_difference.png"), dpi=110)
-        plt.close(fig)
-
-
-def summary(cases, out):
-    rows = []
-    for c in cases:
-        for what, value, bound, passed, note in c.rows:
-            rows.append(f"<tr><td>{html.escape(c.name)}</td><td>{html.escape(what)}</td>"
-                        f"<td>{value:.3e}</td><td>{'reported' if bound != bound else f'{bound:g}'}</td><td>{html.escape(note)}</td>"
-                        f"<td class={'ok' if passed else 'fail'}>{'pass' if passed else 'FAIL'}"
-                        f"</td></tr>")
-        speeds = ", ".join(f"{k}: {v * 1e9:.0f} ns" for k, v in c.speeds.items())
-        rows.append(f"<tr><td colspan=6>{html.escape(c.name)}: wall time per particle-step "
-                    f"(whole runs, start-up included): {html.escape(speeds)}<br>"
-                    f"<img src='{html.escape(c.name)}/position_difference.png'>"
-                    + (f"<img src='{html.escape(c.name)}/statistics.png'>" if c.stats else "")
-                    + (f"<img src='{html.escape(c.name)}/force_distribution.png'>"
-                       if os.path.exists(os.path.join(c.out, "force_distribution.png")) else "")
-                    + "</td></tr>")
-    page = ("<!doctype html><meta charset=utf-8><title>talus cross-check</title><style>"
-            "body{font-family:sans-serif}td,th{padding:3px 8px;border-bottom:1px solid #ccc}"
-            ".ok{color:green}.fail{color:red;font-weight:bold}</style>"
-            "<h1>talus against LAMMPS: the cross-check</h1>"
-            "<p>Position differences in mean radii; bounds from each case's tolerances.toml."
-            "</p><table><tr><th>case</th><th>comparison</th><th>largest</th><th>bound</th>"
-            "<th></th><th></th></tr>" + "".join(rows) + "</table>")
-    with open(os.path.join(out, "index.html"), "w") as f:
-        f.write(page)
+            force_chart(self.name, self.out, runs[0])
 
 
 def main():

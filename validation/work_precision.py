@@ -45,7 +45,8 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from crosscheck import ENV, read_dump, read_track  # noqa: E402  (the same readers)
+from crosscheck import ENV  # noqa: E402  (the same environment for mpirun as root)
+from trajectories import read_dump, read_track  # noqa: E402  (the same readers)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FACTORS = [5, 10, 20, 50, 100, 200, 500, 1000]
