@@ -31,8 +31,6 @@ whose error does not fall with the timestep, a reference off its closed form, or
 law's error off the estimate `talus run` prints.
 """
 import argparse
-import functools
-import html
 import json
 import math
 import os
@@ -46,20 +44,16 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from crosscheck import ENV  # noqa: E402  (the same environment for mpirun as root)
+from impact_reference import (DENSITY, HERTZ_A, LINEAR_E, LINEAR_K, OFFSET,  # noqa: E402
+                              POISSON, RADIUS, SPEED, YOUNG, collision_time, contact_ode,
+                              linear_damping_ratio)
 from trajectories import read_dump, read_track  # noqa: E402  (the same readers)
+from work_precision_report import by_engine, page, summarise  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FACTORS = [5, 10, 20, 50, 100, 200, 500, 1000]
 QUICK_FACTORS = [5, 20, 100, 500]
 SETTLING_FACTORS = [5, 10, 20, 50, 100, 200]
-TARGETS = [1e-2, 1e-3, 1e-4]
-COLOURS = {"native gear": "tab:blue", "native verlet": "tab:orange", "LAMMPS verlet": "tab:green"}
-
-RADIUS, DENSITY, YOUNG, POISSON, SPEED = 0.001, 2650.0, 1.0e8, 0.3, 0.5
-MASS = DENSITY * math.pi * RADIUS**2  # a disk, 1 m thick (docs/model.md)
-HERTZ_A = 2.0e-6                      # s: the viscoelastic Hertz damping
-LINEAR_K, LINEAR_E = 1.0e4, 0.5       # N/m, the asked restitution
-OFFSET = 0.8 * RADIUS                 # the oblique impact's offset across the approach
 
 
 def impact_scenario(law, oblique, delay=0.0):
@@ -113,73 +107,6 @@ checkpoint_interval = 0.0
 track_interval = 0.006
 picture = false
 """
-
-
-# ---- the reference: the normal contact's ODE ----------------------------------------------------
-
-def normal_force(law, xi, rate, m_eff, r_eff):
-    """The never-attractive normal force of src/talus/normal_laws.hpp, written out again."""
-    if law == "hertz":
-        e_star = YOUNG / (2.0 * (1.0 - POISSON**2))
-        rho = 4.0 / 3.0 * e_star * math.sqrt(r_eff)
-        f = rho * math.sqrt(max(xi, 0.0)) * (xi + 1.5 * HERTZ_A * rate)
-    else:
-        zeta = linear_damping_ratio(LINEAR_E)
-        f = LINEAR_K * xi + 2.0 * zeta * math.sqrt(LINEAR_K * m_eff) * rate
-    return max(f, 0.0)
-
-
-@functools.lru_cache(maxsize=None)
-def linear_damping_ratio(e):
-    """zeta of the never-attractive dashpot that reaches restitution e (closed_forms.hpp's
-    inverse), found by bisection on the ODE itself so that nothing is taken from the engine."""
-    lo, hi = 0.0, 1.0
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        got = contact_ode("linear_zeta", mid)[0]
-        lo, hi = (mid, hi) if got > e else (lo, mid)
-    return 0.5 * (lo + hi)
-
-
-def contact_ode(law, zeta=None, steps=200000):
-    """(restitution, peak force, duration) of the head-on impact, by RK4 on xi'' = -F / m_eff
-    from xi = 0, xi' = 2 SPEED, the exit placed by linear interpolation of xi between steps."""
-    m_eff, r_eff, v = 0.5 * MASS, 0.5 * RADIUS, 2.0 * SPEED
-    if law == "linear_zeta":  # the bisection's inner solve: a linear law of this zeta
-        force = lambda xi, rate: max(  # noqa: E731
-            LINEAR_K * xi + 2.0 * zeta * math.sqrt(LINEAR_K * m_eff) * rate, 0.0)
-        t_c = math.pi * math.sqrt(m_eff / LINEAR_K)
-        steps = 20000
-    else:
-        force = lambda xi, rate: normal_force(law, xi, rate, m_eff, r_eff)  # noqa: E731
-        t_c = collision_time(law)
-    h = 2.0 * t_c / steps
-    xi, rate, t, peak = 0.0, v, 0.0, 0.0
-    deriv = lambda x, u: (u, -force(x, u) / m_eff)  # noqa: E731
-    while True:
-        k1 = deriv(xi, rate)
-        k2 = deriv(xi + 0.5 * h * k1[0], rate + 0.5 * h * k1[1])
-        k3 = deriv(xi + 0.5 * h * k2[0], rate + 0.5 * h * k2[1])
-        k4 = deriv(xi + h * k3[0], rate + h * k3[1])
-        nxi = xi + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
-        nrate = rate + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
-        if nxi <= 0.0 and t > 0.0:
-            f = xi / (xi - nxi)
-            exit_rate = rate + f * (nrate - rate)
-            return -exit_rate / v, peak, t + f * h
-        xi, rate, t = nxi, nrate, t + h
-        peak = max(peak, force(xi, rate))
-
-
-def collision_time(law):
-    """The elastic collision time at 2 SPEED, the scale of the timesteps (as the engine's
-    automatic timestep: collision time / factor)."""
-    m_eff, r_eff = 0.5 * MASS, 0.5 * RADIUS
-    if law == "hertz":
-        rho = 4.0 / 3.0 * YOUNG / (2.0 * (1.0 - POISSON**2)) * math.sqrt(r_eff)
-        c = 2.0 * 1.25**0.4 * math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9)
-        return c * (m_eff / rho) ** 0.4 * (2.0 * SPEED) ** -0.2
-    return math.pi * math.sqrt(m_eff / LINEAR_K)
 
 
 # ---- running the engines -------------------------------------------------------------------------
@@ -417,131 +344,6 @@ def settling_state(folder):
 
 
 # ---- what the measurements say ------------------------------------------------------------------
-
-def fitted_order(rows, metric):
-    """The slope of log error against log dt over the runs whose error is above rounding."""
-    pts = [(math.log(1.0 / r["factor"]), math.log(r[metric])) for r in rows if r[metric] > 1e-13]
-    if len(pts) < 3:
-        return float("nan")
-    x, y = np.array(pts).T
-    return float(np.polyfit(x, y, 1)[0])
-
-
-def needed(rows, metric, target):
-    """(t_c / dt, cost per simulated s) at which the error falls to `target`, interpolated in
-    log-log between the last run above it and the first below; None when no run reaches it."""
-    rows = sorted(rows, key=lambda r: r["factor"])
-    for a, b in zip(rows, rows[1:]):
-        if a[metric] > target >= b[metric] > 0.0:
-            f = (math.log(target) - math.log(a[metric])) / (math.log(b[metric]) -
-                                                              math.log(a[metric]))
-            factor = math.exp(math.log(a["factor"]) + f * (math.log(b["factor"]) -
-                                                          math.log(a["factor"])))
-            cost = math.exp(math.log(a["cost_per_second"]) + f * (
-                math.log(b["cost_per_second"]) - math.log(a["cost_per_second"])))
-            return factor, cost
-    if rows and rows[0][metric] <= target:
-        return rows[0]["factor"], rows[0]["cost_per_second"]
-    return None
-
-
-def by_engine(problem):
-    out = {}
-    for r in problem.rows:
-        out.setdefault(r["engine"], []).append(r)
-    return out
-
-
-def chart(problem, out):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(problem.metrics), figsize=(5 * len(problem.metrics), 4.2),
-                             squeeze=False)
-    for ax, metric in zip(axes[0], problem.metrics):
-        engines = by_engine(problem)
-        for engine, colour in COLOURS.items():
-            if engine not in engines:
-                continue
-            rows = sorted(engines[engine], key=lambda r: r["factor"])
-            pts = [(r["cost_per_second"], max(r[metric], 1e-16), r["factor"]) for r in rows
-                   if not math.isnan(r[metric])]
-            if not pts:
-                continue
-            ax.loglog([p[0] for p in pts], [p[1] for p in pts], "o-", ms=4, label=engine,
-                      color=colour)
-            for c, e, f in pts:
-                ax.annotate(f"{f:g}", (c, e), fontsize=6, xytext=(2, 2),
-                            textcoords="offset points")
-        ax.set_xlabel("cost [CPU s per simulated s]")
-        ax.set_ylabel(f"relative error in {metric.replace('_', ' ')} [-]")
-        ax.legend(fontsize=7, title="labels: t_c / dt", title_fontsize=7)
-    fig.suptitle(problem.name)
-    fig.tight_layout()
-    path = os.path.join(out, f"{problem.name}.png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
-
-
-def page(problems, out):
-    import base64
-    parts = ["<!doctype html><meta charset='utf-8'><title>talus work-precision</title>",
-             "<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse}"
-             "td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}</style>",
-             "<h1>Work-precision</h1><p>validation/work_precision.py: relative error against "
-             "cost for each integrator; t_c is the collision time.</p>"]
-    for p in problems:
-        with open(chart(p, out), "rb") as f:
-            img = base64.b64encode(f.read()).decode()
-        parts.append(f"<h2>{html.escape(p.name)}</h2><img src='data:image/png;base64,{img}'>")
-        head = "".join(f"<th>{html.escape(m)} error</th>" for m in p.metrics)
-        parts.append(f"<table><tr><th>engine</th><th>t_c / dt</th>{head}<th>CPU s per "
-                     "simulated s</th><th>s per particle-step</th></tr>")
-        for r in sorted(p.rows, key=lambda r: (r["engine"], r["factor"])):
-            cells = "".join(f"<td>{r[m]:.2e}</td>" for m in p.metrics)
-            parts.append(f"<tr><td>{r['engine']}</td><td>{r['factor']:g}</td>{cells}"
-                         f"<td>{r['cost_per_second']:.3g}</td>"
-                         f"<td>{r['cost_per_particle_step']:.3g}</td></tr>")
-        parts.append("</table>")
-        parts.append(needed_table(p))
-    with open(os.path.join(out, "index.html"), "w") as f:
-        f.write("\n".join(parts))
-
-
-def needed_table(p):
-    metric = p.metrics[0]
-    rows = ["<p>The timestep each engine needs for a " + html.escape(metric.replace("_", " ")) +
-            " error of ...</p><table><tr><th>engine</th>" +
-            "".join(f"<th>{t:g}: t_c / dt (cost)</th>" for t in TARGETS) + "</tr>"]
-    for engine, rs in by_engine(p).items():
-        cells = []
-        for t in TARGETS:
-            n = needed(rs, metric, t)
-            cells.append(f"<td>{n[0]:.0f} ({n[1]:.3g})</td>" if n else "<td>not reached</td>")
-        rows.append(f"<tr><td>{engine}</td>{''.join(cells)}</tr>")
-    if p.name == "settling_1000":
-        for engine, rs in by_engine(p).items():
-            rows.append(f"<tr><td>{engine}: fitted order, position / energy</td><td>"
-                        f"{fitted_order(rs, 'position'):.2f} / {fitted_order(rs, 'energy'):.2f}"
-                        "</td></tr>")
-    return "".join(rows) + "</table>"
-
-
-def summarise(problems):
-    for p in problems:
-        metric = p.metrics[0]
-        for engine, rs in by_engine(p).items():
-            found = []
-            for t in TARGETS:
-                n = needed(rs, metric, t)
-                found.append(f"{t:g}: t_c/{n[0]:.0f} at {n[1]:.3g} CPU s/s" if n else
-                             f"{t:g}: not reached")
-            print(f"{p.name} {engine}: {metric} error " + "; ".join(found))
-            if p.name == "settling_1000":
-                print(f"{p.name} {engine}: fitted order {fitted_order(rs, 'position'):.2f} "
-                      f"(position), {fitted_order(rs, 'energy'):.2f} (energy)")
-
 
 def check(problems):
     """What must hold, or the measurement is wrong: the linear reference reaches the asked
