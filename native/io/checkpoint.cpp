@@ -81,21 +81,11 @@ private:
 };
 
 void write_particles(Writer& w, const Particles& p) {
-  w.vec(p.position), w.vec(p.velocity), w.vec(p.force), w.vec(p.angle);
-  w.vec(p.angular_velocity), w.vec(p.torque), w.vec(p.radius), w.vec(p.mass), w.vec(p.inertia);
-  w.vec(p.inv_mass), w.vec(p.inv_inertia), w.vec(p.material), w.vec(p.kind), w.vec(p.id);
-  w.vec(p.gear.r2), w.vec(p.gear.r3), w.vec(p.gear.r4);
-  w.vec(p.gear.phi2), w.vec(p.gear.phi3), w.vec(p.gear.phi4);
-  w.vec(p.force_previous), w.vec(p.torque_previous);
+  p.for_each_field([&](const auto& v) { w.vec(v); });
 }
 
 void read_particles(Reader& r, Particles& p) {
-  r.vec(p.position), r.vec(p.velocity), r.vec(p.force), r.vec(p.angle);
-  r.vec(p.angular_velocity), r.vec(p.torque), r.vec(p.radius), r.vec(p.mass), r.vec(p.inertia);
-  r.vec(p.inv_mass), r.vec(p.inv_inertia), r.vec(p.material), r.vec(p.kind), r.vec(p.id);
-  r.vec(p.gear.r2), r.vec(p.gear.r3), r.vec(p.gear.r4);
-  r.vec(p.gear.phi2), r.vec(p.gear.phi3), r.vec(p.gear.phi4);
-  r.vec(p.force_previous), r.vec(p.torque_previous);
+  p.for_each_field([&](auto& v) { r.vec(v); });
   const std::size_t n = p.position.size();
   for (const std::size_t m : {p.velocity.size(), p.radius.size(), p.mass.size(), p.kind.size(),
                               p.material.size(), p.id.size(), p.inv_mass.size()})

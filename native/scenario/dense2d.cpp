@@ -98,12 +98,7 @@ SimulationState tile_dense2d(const SimulationState& base, std::size_t copies, do
   SimulationState s{w0, {}, base.time, base.steps};
   World& w = s.world;
   Particles& p = w.particles;
-  repeat(p.position, copies), repeat(p.velocity, copies), repeat(p.force, copies);
-  repeat(p.angle, copies), repeat(p.angular_velocity, copies), repeat(p.torque, copies);
-  repeat(p.radius, copies), repeat(p.mass, copies), repeat(p.inertia, copies);
-  repeat(p.inv_mass, copies), repeat(p.inv_inertia, copies), repeat(p.material, copies);
-  repeat(p.kind, copies), repeat(p.id, copies);
-  repeat(p.force_previous, copies), repeat(p.torque_previous, copies);
+  p.for_each_field([&](auto& v) { repeat(v, copies); }); // Gear's are empty: stay so
   for (std::size_t k = 0; k < p.size(); ++k) { // copy c of base particle i: index and id c n + i
     p.position[k].x += width * static_cast<double>(k / n);
     p.id[k] = static_cast<std::uint32_t>(k);

@@ -300,15 +300,10 @@ template <class T> std::size_t bytes(const std::vector<T>& v) {
 
 Footprint Simulation::footprint() const {
   const Particles& p = world_.particles;
-  const GearDerivatives& g = p.gear;
   const NeighbourList& l = list_;
   Footprint f;
-  f.particles = bytes(p.position) + bytes(p.velocity) + bytes(p.force) + bytes(p.angle) +
-                bytes(p.angular_velocity) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
-                bytes(p.inertia) + bytes(p.inv_mass) + bytes(p.inv_inertia) + bytes(p.material) +
-                bytes(p.kind) + bytes(p.id);
-  f.integrator = bytes(g.r2) + bytes(g.r3) + bytes(g.r4) + bytes(g.phi2) + bytes(g.phi3) +
-                 bytes(g.phi4) + bytes(p.force_previous) + bytes(p.torque_previous);
+  p.for_each_state_field([&](const auto& v) { f.particles += bytes(v); });
+  p.for_each_integrator_field([&](const auto& v) { f.integrator += bytes(v); });
   f.list = bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) + bytes(l.block_first_slot) +
            bytes(l.deferred_offset) + bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) +
            bytes(l.wall_offset) + bytes(l.wall_segment) + bytes(l.reference) +

@@ -107,12 +107,7 @@ void permute_field(std::vector<T>& v, const std::vector<std::uint32_t>& order, i
 } // namespace
 
 void Particles::permute(const std::vector<std::uint32_t>& order, int threads) {
-  const auto field = [&](auto& v) { permute_field(v, order, threads); };
-  field(position), field(velocity), field(force), field(angle), field(angular_velocity);
-  field(torque), field(radius), field(mass), field(inertia), field(inv_mass), field(inv_inertia);
-  field(material), field(kind), field(id), field(force_previous), field(torque_previous);
-  field(gear.r2), field(gear.r3), field(gear.r4), field(gear.phi2), field(gear.phi3);
-  field(gear.phi4);
+  for_each_field([&](auto& v) { permute_field(v, order, threads); });
 }
 
 } // namespace talus

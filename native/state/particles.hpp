@@ -83,6 +83,36 @@ struct Particles {
   /// the integrators' history included). `order` must be a permutation of 0 .. size()-1.
   /// `threads` share the copying (the result is the same for any count).
   void permute(const std::vector<std::uint32_t>& order, int threads = 1);
+
+  /// Calls f(vector) for every per-particle field of the particles' state (position to id),
+  /// in a fixed order: the checkpoint's. Every code that handles each field (checkpoints,
+  /// renumbering, copying, memory) goes through these, so a new field is never left out.
+  template <class F> void for_each_state_field(F&& f) { fields_of_state(*this, f); }
+  template <class F> void for_each_state_field(F&& f) const { fields_of_state(*this, f); }
+  /// The same for the integrators' history (Gear's derivatives, Verlet's previous force and
+  /// torque; the fields of the integrator not in use are empty).
+  template <class F> void for_each_integrator_field(F&& f) { fields_of_integrator(*this, f); }
+  template <class F> void for_each_integrator_field(F&& f) const { fields_of_integrator(*this, f); }
+  /// Both: the state's fields, then the integrators'.
+  template <class F> void for_each_field(F&& f) {
+    for_each_state_field(f);
+    for_each_integrator_field(f);
+  }
+  template <class F> void for_each_field(F&& f) const {
+    for_each_state_field(f);
+    for_each_integrator_field(f);
+  }
+
+private:
+  template <class P, class F> static void fields_of_state(P& p, F& f) {
+    f(p.position), f(p.velocity), f(p.force), f(p.angle), f(p.angular_velocity), f(p.torque);
+    f(p.radius), f(p.mass), f(p.inertia), f(p.inv_mass), f(p.inv_inertia), f(p.material);
+    f(p.kind), f(p.id);
+  }
+  template <class P, class F> static void fields_of_integrator(P& p, F& f) {
+    f(p.gear.r2), f(p.gear.r3), f(p.gear.r4), f(p.gear.phi2), f(p.gear.phi3), f(p.gear.phi4);
+    f(p.force_previous), f(p.torque_previous);
+  }
 };
 
 } // namespace talus
