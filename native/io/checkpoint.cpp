@@ -86,10 +86,22 @@ void write_particles(Writer& w, const Particles& p) {
 
 void read_particles(Reader& r, Particles& p) {
   p.for_each_field([&](auto& v) { r.vec(v); });
+  // every field read is checked: one of another length would be read out of its bounds later
   const std::size_t n = p.position.size();
-  for (const std::size_t m : {p.velocity.size(), p.radius.size(), p.mass.size(), p.kind.size(),
-                              p.material.size(), p.id.size(), p.inv_mass.size()})
-    if (m != n) r.fail("particle arrays of different lengths");
+  p.for_each_state_field([&](const auto& v) {
+    if (v.size() != n) r.fail("particle arrays of different lengths");
+  });
+  // an integrator's history is empty (the other integrator's) or one entry per particle
+  p.for_each_integrator_field([&](const auto& v) {
+    if (!v.empty() && v.size() != n)
+      r.fail("integrator arrays of another length than the particles'");
+  });
+  const GearDerivatives& g = p.gear;
+  for (const std::size_t m :
+       {g.r3.size(), g.r4.size(), g.phi2.size(), g.phi3.size(), g.phi4.size()})
+    if (m != g.r2.size()) r.fail("Gear's derivatives of different lengths");
+  if (p.force_previous.size() != p.torque_previous.size())
+    r.fail("Verlet's previous force and torque of different lengths");
 }
 
 void write_material(Writer& w, const Material& m) {

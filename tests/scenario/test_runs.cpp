@@ -158,6 +158,29 @@ TEST(Resume, TruncatedCheckpointIsDetected) {
   fs::remove_all(dir);
 }
 
+// A checkpoint whose checksum holds but whose arrays disagree in length (written by a defective
+// build, say) is refused when read, whichever per-particle field is off: read on, the short
+// array would be indexed beyond its end.
+TEST(Resume, ArraysOfDifferentLengthsAreRefused) {
+  const Scenario s = builtin("collisions", {"simulation.duration=0.002"});
+  const fs::path dir = fresh_dir("lengths");
+  ASSERT_EQ(run(s, dir), cli::exit_completed);
+  const Checkpoint good = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "c");
+  std::size_t fields = 0;
+  good.state.world.particles.for_each_field([&](const auto& v) { fields += !v.empty(); });
+  for (std::size_t k = 0; k < fields; ++k) {
+    Checkpoint bad = good;
+    std::size_t seen = 0;
+    bad.state.world.particles.for_each_field([&](auto& v) {
+      if (!v.empty() && seen++ == k) v.pop_back();
+    });
+    EXPECT_THROW(decode_checkpoint(encode_checkpoint(bad), "bad"), CheckpointError)
+        << "field " << k << " one short";
+  }
+  EXPECT_GE(fields, 20u); // the state's 14 fields and Gear's six derivatives
+  fs::remove_all(dir);
+}
+
 // track.select = "all" follows every grain at full precision (the last track point is the final
 // state, bit for bit), and the end of a run is a snapshot even where the interval does not
 // divide the duration (unless one falls within half an interval of it).
