@@ -33,6 +33,19 @@ void attach(Driver& d, const Particles& p, const Segments& walls) {
   }
 }
 
+std::string attached_driver_problem(const Driver& d, const Particles& p, const Segments& walls) {
+  for (const auto i : d.targets.particles)
+    if (i >= p.size() || p.kind[i] != Kind::moved)
+      return "driver: particle " + std::to_string(i) + " out of range or not of kind 'moved'";
+  for (const auto s : d.targets.segments)
+    if (s >= walls.size()) return "driver: segment " + std::to_string(s) + " out of range";
+  if (d.particle_origin.size() != d.targets.particles.size() ||
+      d.angle_origin.size() != d.targets.particles.size() ||
+      d.segment_origin.size() != 2 * d.targets.segments.size())
+    return "driver: not one origin per target";
+  return "";
+}
+
 namespace {
 struct Pose {
   Vec2 offset;        // translation (Vibrate, Translate)

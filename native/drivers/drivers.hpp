@@ -2,6 +2,7 @@
 // Prescribed motion of wall particles (kind `moved`) and segment walls. A driver remembers where
 // its targets were when the run started and sets their position and velocity at any time t.
 #include <cstdint>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -49,6 +50,10 @@ struct Driver {
 
 /// Checks the targets and records their reference positions (time origin t = 0).
 void attach(Driver& d, const Particles& p, const Segments& walls);
+/// For a driver read back from a checkpoint (attached when it was saved): what does not fit the
+/// particles and walls, in words, or "" (its targets in range, a particle target of kind moved,
+/// an origin for each).
+std::string attached_driver_problem(const Driver& d, const Particles& p, const Segments& walls);
 /// Sets positions and velocities of the targets at time t.
 void apply(const Driver& d, double t, Particles& p, Segments& walls);
 

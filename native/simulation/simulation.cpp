@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "neighbours/cell_grid.hpp"
+#include "neighbours/list_check.hpp"
 #include "neighbours/skin.hpp"
 #include "talus/error.hpp"
 
@@ -56,11 +57,18 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   const auto useful = static_cast<int>(std::min<std::size_t>(
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
   threads_ = std::max(1, useful);
+  if (restoring) { // a saved state is indexed without checks from here on: it must fit
+    const std::string list =
+        neighbour_list_problem(list_, world_.particles.size(), world_.walls.size());
+    require(list.empty(), "restored state: the neighbour list does not fit the particles: " + list);
+    for (const Driver& d : world_.drivers) {
+      const std::string driver = attached_driver_problem(d, world_.particles, world_.walls);
+      require(driver.empty(), "restored state: " + driver);
+    }
+  }
   list_moved();
   choose_features();
   if (restoring) {
-    require(list_.row_offset.size() == world_.particles.size() + 1,
-            "restored state: the neighbour list does not match the particles");
     index_force_blocks(list_); // derived from the rows, not stored
     return;
   }

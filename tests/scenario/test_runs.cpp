@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 
 #include "cli/run_loop.hpp"
 #include "io/checkpoint.hpp"
@@ -179,6 +180,45 @@ TEST(Resume, ArraysOfDifferentLengthsAreRefused) {
   }
   EXPECT_GE(fields, 20u); // the state's 14 fields and Gear's six derivatives
   fs::remove_all(dir);
+}
+
+// A saved state whose checksum holds but whose neighbour list or drivers do not fit its
+// particles and walls (a defective writer) is refused by Simulation::restore, before a step
+// indexes it: the force stage and the drivers read those arrays without checks. One scene with
+// segment walls turned by a driver (the drum), one with driven wall particles (the shaken silo).
+TEST(Resume, AListOrDriverThatDoesNotFitIsRefused) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> scenes{
+      {"drum", {"particles.count=40", "packing.settle_max_time=0.05", "simulation.duration=0.001"}},
+      {"silo_shake",
+       {"particles.count=40", "packing.settle_max_time=0.05", "simulation.duration=0.001",
+        "geometry.walls=particles"}}};
+  for (const auto& [name, sets] : scenes) {
+    const fs::path dir = fresh_dir("misfit_" + name);
+    ASSERT_EQ(run(builtin(name, sets), dir), cli::exit_completed);
+    const Checkpoint good = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "c");
+    EXPECT_NO_THROW(Simulation::restore(good.state, good.config)) << name;
+    const std::size_t n = good.state.world.particles.size();
+    const std::vector<std::pair<std::string, std::function<void(SimulationState&)>>> damage{
+        {"a neighbour beyond the particles",
+         [&](SimulationState& s) { s.neighbours.neighbour.at(0) = static_cast<std::uint32_t>(n); }},
+        {"row offsets past the entries",
+         [](SimulationState& s) { ++s.neighbours.row_offset.back(); }},
+        {"an image short", [](SimulationState& s) { s.neighbours.image.pop_back(); }},
+        {"a spring short", [](SimulationState& s) { s.neighbours.history.pop_back(); }},
+        {"a driver's origin short", [](SimulationState& s) {
+           Driver& d = s.world.drivers.at(0);
+           if (!d.segment_origin.empty())
+             d.segment_origin.pop_back();
+           else
+             d.particle_origin.pop_back();
+         }}};
+    for (const auto& [what, change] : damage) {
+      SimulationState bad = good.state;
+      change(bad);
+      EXPECT_THROW(Simulation::restore(bad, good.config), InvalidArgument) << name << ": " << what;
+    }
+    fs::remove_all(dir);
+  }
 }
 
 // track.select = "all" follows every grain at full precision (the last track point is the final
