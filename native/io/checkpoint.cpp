@@ -59,6 +59,13 @@ public:
     if (n) std::memcpy(v.data(), b_.data() + at_, n * sizeof(T));
     at_ += n * sizeof(T);
   }
+  /// A count of records that take at least `min_bytes` each: refused when they could not fit in
+  /// what is left (so that a damaged count never asks for more memory than the file holds).
+  std::size_t count(std::size_t min_bytes) {
+    const auto n = pod<std::uint64_t>();
+    if (n > (end_ - at_) / min_bytes) fail("a count of records runs past the end");
+    return static_cast<std::size_t>(n);
+  }
   std::string str() {
     const auto n = pod<std::uint64_t>();
     need(n);
@@ -172,8 +179,11 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.pod(c.config);
   w.str(c.run_data);
 
+  return seal_checkpoint(w.bytes());
+}
+
+std::string seal_checkpoint(const std::string& payload) {
   std::string out(magic, sizeof(magic));
-  const std::string& payload = w.bytes();
   const std::uint32_t version = checkpoint_version;
   const std::uint64_t size = payload.size(), sum = fnv1a(payload.data(), payload.size());
   out.append(reinterpret_cast<const char*>(&version), sizeof(version));
@@ -206,12 +216,12 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   World& world = c.state.world;
   read_particles(r, world.particles);
   r.vec(world.walls);
-  world.materials.resize(r.pod<std::uint64_t>());
+  world.materials.resize(r.count(sizeof(std::uint64_t))); // each at least its name's length
   for (Material& m : world.materials) m = read_material(r);
   world.domain = r.pod<Domain>();
   world.gravity = r.pod<Vec2>();
   world.disk_thickness = r.pod<double>();
-  world.drivers.resize(r.pod<std::uint64_t>());
+  world.drivers.resize(r.count(sizeof(std::uint32_t))); // each at least its type
   for (Driver& d : world.drivers) d = read_driver(r);
   NeighbourList& l = c.state.neighbours;
   r.vec(l.row_offset), r.vec(l.neighbour), r.vec(l.image), r.vec(l.history);

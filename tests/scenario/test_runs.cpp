@@ -182,6 +182,24 @@ TEST(Resume, ArraysOfDifferentLengthsAreRefused) {
   fs::remove_all(dir);
 }
 
+// A count of records (materials, drivers) that could not fit in what is left of the file is
+// refused before anything is allocated for it: a damaged count once asked for 2^60 materials and
+// ended the program with std::length_error (found by fuzz_checkpoint).
+TEST(Resume, ACountBeyondTheFileIsRefused) {
+  std::size_t fields = 0;
+  Particles{}.for_each_field([&](const auto&) { ++fields; });
+  std::string payload((fields + 1) * sizeof(std::uint64_t), '\0'); // no particles, no walls
+  const std::uint64_t materials = std::uint64_t{1} << 60;
+  payload.append(reinterpret_cast<const char*>(&materials), sizeof(materials));
+  try {
+    decode_checkpoint(seal_checkpoint(payload), "counted");
+    ADD_FAILURE() << "no error";
+  } catch (const CheckpointError& e) {
+    EXPECT_NE(std::string(e.what()).find("a count of records runs past the end"), std::string::npos)
+        << e.what();
+  }
+}
+
 // A saved state whose checksum holds but whose neighbour list or drivers do not fit its
 // particles and walls (a defective writer) is refused by Simulation::restore, before a step
 // indexes it: the force stage and the drivers read those arrays without checks. One scene with
