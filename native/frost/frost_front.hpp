@@ -69,6 +69,8 @@ public:
 
   Phase phase() const { return phase_; }
   std::size_t columns() const { return surface_.size(); }
+  /// The column x lies in (x_min and beyond it: the first; x_max and beyond: the last).
+  std::size_t column_of(double x) const;
   /// The freezing front's depth below each column's surface, m.
   const std::vector<double>& front_depth() const { return front_; }
   /// Heave so far this cycle, per column, m.
@@ -82,7 +84,6 @@ public:
   void load(const std::vector<double>& numbers, std::size_t particles);
 
 private:
-  std::size_t column_of(double x) const;
   bool is_stone(const Particles& p, std::size_t i) const;
   /// A per-column quantity at x: linear between the columns' centres, flat beyond the outer ones.
   double heave_at(const std::vector<double>& per_column, double x) const;

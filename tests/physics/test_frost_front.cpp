@@ -128,10 +128,7 @@ Outcome cycles(World w, FrostFrontParameters q, int n, double control_time = 0.0
   FrostFront front(q);
   const double t0 = sim.time();
   if (!frost) settle(sim, control_time);
-  // the stone's column, as the model bins them (column_width from x_min)
-  const auto column = stone < p.size() ? static_cast<std::size_t>(std::max(
-                                             0.0, (p.position[stone].x - q.x_min) / q.column_width))
-                                       : 0;
+  const std::size_t column = stone < p.size() ? front.column_of(p.position[stone].x) : 0;
   double lead_sum = 0.0;
   std::size_t lead_samples = 0;
   for (int c = 0; c < n && frost; ++c) {
