@@ -77,6 +77,30 @@ void check_memory(std::size_t particles) {
                         " particles need about " + std::to_string(need / 1e9) + " GB; " + what);
 }
 
+// Double precision resolves a coordinate x to about |x| 2^-52. Beyond some distance from the
+// origin that is no longer fine next to a grain (contact forces follow overlaps of a small share
+// of a radius), and far enough out grains a diameter apart land on the same number. A scene
+// reaching that far is refused here, rather than run on positions that cannot tell grains apart.
+void check_position_resolution(const Scenario& s, const Rect& bounds, const Rect& fill,
+                               double r_min) {
+  double reach = 0.0;
+  for (const Rect& r : {bounds, fill})
+    for (const double c : {r.lo.x, r.lo.y, r.hi.x, r.hi.y}) reach = std::max(reach, std::abs(c));
+  for (const ExplicitParticle& e : s.particles.list)
+    reach = std::max({reach, std::abs(e.position.x), std::abs(e.position.y)});
+  const double resolution = reach * std::numeric_limits<double>::epsilon();
+  if (resolution > 1e-6 * r_min) {
+    std::ostringstream msg;
+    msg << "key 'geometry': the scene reaches " << reach << " m from the origin, " << reach / r_min
+        << " radii of the smallest grain (" << r_min << " m); positions there are resolved only to "
+        << resolution
+        << " m, more than a millionth of that radius. Keep the container, packing.region and "
+           "particles.list within "
+        << 1e-6 / std::numeric_limits<double>::epsilon() << " radii of the origin";
+    throw ScenarioError(msg.str());
+  }
+}
+
 // Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius (walls:
 // check_listed_grains_clear_of_walls).
 void check_start_overlaps(const Scenario& s) {
@@ -447,6 +471,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
     out.fill.hi -= Vec2{r_wall, r_wall};
   }
   out.bounds = shape.bounds;
+  check_position_resolution(s, out.bounds, out.fill, sizes.r_min);
   const std::uint16_t wall_mat =
       material_index(s, s.geometry.wall_material, "geometry.wall_material");
   std::vector<DriverSection> drivers = shape.drivers;

@@ -15,10 +15,18 @@ std::vector<PlacedGrain> lattice_packing(const std::vector<double>& radii, const
   const double r_max = *std::max_element(radii.begin(), radii.end());
   const double pitch = 2.04 * r_max;
   const double width = region.hi.x - region.lo.x, height = region.hi.y - region.lo.y;
-  const auto per_row = static_cast<std::size_t>(std::floor((width - 2.0 * r_max) / pitch) + 1.0);
-  const auto rows = static_cast<std::size_t>(std::floor((height - 2.0 * r_max) / pitch) + 1.0);
+  // lattice sites along a length; a count beyond any real packing (a box light-years wide) is
+  // cut to one, since converting a larger number to an integer is undefined
+  const auto sites = [&](double length) {
+    return static_cast<std::size_t>(
+        std::clamp(std::floor((length - 2.0 * r_max) / pitch) + 1.0, 0.0, 1.0e15));
+  };
+  const std::size_t per_row = sites(width), rows = sites(height);
   const bool fits = width >= 2.0 * r_max && height >= 2.0 * r_max;
-  const std::size_t capacity = fits ? per_row * rows : 0;
+  const std::size_t capacity =
+      fits ? static_cast<std::size_t>(
+                 std::min(static_cast<double>(per_row) * static_cast<double>(rows), 1.0e18))
+           : 0;
   if (radii.size() > capacity)
     throw ScenarioError("key 'particles.count': " + std::to_string(radii.size()) +
                         " grains do not fit the packing region on a lattice (room for " +

@@ -109,6 +109,27 @@ TEST(ScenarioBuild, TooManyGrainsForTheRegionIsAClearError) {
   EXPECT_THROW(build_scenario(s), ScenarioError);
 }
 
+// A container so far from the origin that double precision cannot resolve a grain's overlaps
+// there is refused with the reason. The 5.5e47 m box is fuzz_scenario's: its lattice's site count
+// was converted to an integer it does not fit (undefined; the sanitizer build reported it). A
+// wide but resolvable box still builds.
+TEST(ScenarioBuild, AContainerBeyondPositionResolutionIsRefused) {
+  const auto box = [](const std::string& width) {
+    return load_scenario("[particles]\ncount = 3\n[geometry]\nbuilder = \"box\"\nwidth = " + width +
+                             "\nheight = 0.1\n[packing]\nsettle_max_time = 0.001\n",
+                         "t");
+  };
+  try {
+    build_scenario(box("5.5e47"));
+    ADD_FAILURE() << "accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than a millionth of that radius"), std::string::npos)
+        << e.what();
+  }
+  const BuiltScenario b = build_scenario(box("1000.0"));
+  EXPECT_EQ(b.world.particles.count(Kind::free), 3U);
+}
+
 TEST(ScenarioBuild, ParticleWallsHaveNoGapsAGrainCanPass) {
   const Scenario s = load_scenario("[particles]\ncount = 10\nsize = { mean_radius = 0.002, spread "
                                    "= 0.0005 }\n[geometry]\nbuilder = \"silo\"\nwidth = 0.05\n"
