@@ -4,6 +4,7 @@
 
 #include "analysis/observables.hpp"
 #include "scenario/toml_reader.hpp"
+#include "talus/error.hpp"
 
 namespace talus {
 
@@ -23,14 +24,20 @@ void sediment(const Scenario& s, const std::vector<SegmentSpec>& gate, std::uint
     throw ScenarioError("key 'packing.method': sedimentation needs gravity (simulation.gravity)");
   const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(0.005 / c.timestep));
   out.settled = false;
-  while (sim.time() < s.packing.settle_max_time) {
-    sim.run(chunk);
-    const double ke = energies(sim).kinetic();
-    if (progress) progress(sim.time(), ke);
-    if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {
-      out.settled = true;
-      break;
+  try {
+    while (sim.time() < s.packing.settle_max_time) {
+      sim.run(chunk);
+      const double ke = energies(sim).kinetic();
+      if (progress) progress(sim.time(), ke);
+      if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {
+        out.settled = true;
+        break;
+      }
     }
+  } catch (const InstabilityError& e) { // its time and step are the settling's, not the run's
+    throw InstabilityError(std::string("while settling the packing (packing.method = "
+                                       "\"sedimentation\"), before the run: ") +
+                           e.what());
   }
   out.settle_time = sim.time();
   // by id: the settling run may have renumbered its particles (simulation.sort_every)

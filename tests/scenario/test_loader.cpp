@@ -4,6 +4,7 @@
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"
 #include "support/builtin_scenario.hpp"
+#include "talus/error.hpp"
 
 namespace talus {
 namespace {
@@ -128,6 +129,22 @@ TEST(ScenarioBuild, AContainerBeyondPositionResolutionIsRefused) {
   }
   const BuiltScenario b = build_scenario(box("1000.0"));
   EXPECT_EQ(b.world.particles.count(Kind::free), 3U);
+}
+
+// Settling under a thousand g (fuzz_scenario's drum) goes unstable before the run begins; the
+// diagnosis says so, since its step and time are the settling's.
+TEST(ScenarioBuild, ASettlingThatGoesUnstableSaysSo) {
+  const Scenario s = testing::builtin("drum", {"simulation.gravity=[0.0, -9581.0]"});
+  try {
+    build_scenario(s);
+    ADD_FAILURE() << "settled";
+  } catch (const InstabilityError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.find("while settling the packing (packing.method = \"sedimentation\"), before "
+                        "the run: unstable at step"),
+              0u)
+        << what;
+  }
 }
 
 TEST(ScenarioBuild, ParticleWallsHaveNoGapsAGrainCanPass) {
