@@ -1,6 +1,8 @@
 #include "io/checkpoint.hpp"
 
+#include <array>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
@@ -14,8 +16,14 @@ namespace {
 
 constexpr char magic[8] = {'T', 'A', 'L', 'U', 'S', 'C', 'K', 'P'};
 
-std::uint64_t fnv1a(const char* data, std::size_t n) {
-  std::uint64_t h = 1469598103934665603ULL;
+// FNV-1a's 64-bit offset basis. Format 7 was written with a basis one digit short (still a
+// working checksum), so a file of that version is checked with the basis it was written with.
+constexpr std::uint64_t fnv_offset_basis = 14695981039346656037ULL;
+constexpr std::uint64_t format7_offset_basis = 1469598103934665603ULL;
+constexpr std::uint32_t oldest_readable_version = 7; // the payload is the same since
+
+std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t basis = fnv_offset_basis) {
+  std::uint64_t h = basis;
   for (std::size_t k = 0; k < n; ++k)
     h = (h ^ static_cast<unsigned char>(data[k])) * 1099511628211ULL;
   return h;
@@ -73,6 +81,16 @@ public:
     at_ += n;
     return s;
   }
+  /// One member of a struct stored member by member: a bool is a byte that must be 0 or 1.
+  template <class T> void member(T& v) {
+    if constexpr (std::is_same_v<T, bool>) {
+      const auto b = pod<std::uint8_t>();
+      if (b > 1) fail("a flag is neither 0 nor 1");
+      v = b == 1;
+    } else {
+      v = pod<T>();
+    }
+  }
   bool done() const { return at_ == end_; }
   [[noreturn]] void fail(const std::string& what) const {
     throw CheckpointError(source_ + ": corrupt checkpoint: " + what);
@@ -86,6 +104,50 @@ private:
   std::size_t at_, end_;
   std::string source_;
 };
+
+// The structs with padding are stored member by member: a padding byte's value is unspecified,
+// and written whole they would put it in the file (the same state, different files). Format 7
+// stored them whole; a member added to one of them must be added here, in a new format version.
+template <class T, class U>
+concept either = std::is_same_v<std::remove_const_t<T>, U>;
+template <either<Domain> D, class F> void for_each_member(D& d, F&& f) {
+  f(d.lo), f(d.hi), f(d.periodic_x), f(d.periodic_y);
+}
+template <either<Segment> S, class F> void for_each_member(S& s, F&& f) {
+  f(s.a), f(s.b), f(s.material), f(s.velocity), f(s.angular_velocity), f(s.pivot), f(s.force);
+}
+template <either<SimulationConfig> C, class F> void for_each_member(C& c, F&& f) {
+  f(c.timestep), f(c.integrator), f(c.normal_law), f(c.tangential_law), f(c.verlet_velocity);
+  f(c.skin), f(c.impact_speed), f(c.threads), f(c.min_particles_per_thread);
+  f(c.max_overlap_fraction), f(c.escape_lo), f(c.escape_hi), f(c.sort_interval), f(c.lever_arm);
+}
+static_assert(sizeof(Domain) == 40 && sizeof(Segment) == 96 && sizeof(SimulationConfig) == 104,
+              "a member was added or changed: add it to the lists above and raise the version");
+
+template <class T> void write_members(Writer& w, const T& v) {
+  for_each_member(v, [&](const auto& m) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(m)>, bool>)
+      w.pod<std::uint8_t>(m ? 1 : 0);
+    else
+      w.pod(m);
+  });
+}
+template <class T> T read_members(Reader& r) {
+  T v;
+  for_each_member(v, [&](auto& m) { r.member(m); });
+  return v;
+}
+
+// Format 7's whole struct, its periodic flags checked before it is copied out: a bool holding
+// another byte than 0 or 1 is undefined behaviour to read.
+Domain read_domain7(Reader& r) {
+  const auto raw = r.pod<std::array<unsigned char, sizeof(Domain)>>();
+  for (const std::size_t at : {offsetof(Domain, periodic_x), offsetof(Domain, periodic_y)})
+    if (raw[at] > 1) r.fail("a flag is neither 0 nor 1");
+  Domain d;
+  std::memcpy(&d, raw.data(), sizeof(Domain));
+  return d;
+}
 
 void write_particles(Writer& w, const Particles& p) {
   p.for_each_field([&](const auto& v) { w.vec(v); });
@@ -164,10 +226,12 @@ std::string encode_checkpoint(const Checkpoint& c) {
   Writer w;
   const World& world = c.state.world;
   write_particles(w, world.particles);
-  w.vec(world.walls);
+  w.pod<std::uint64_t>(world.walls.size());
+  for (const Segment& wall : world.walls) write_members(w, wall);
   w.pod<std::uint64_t>(world.materials.size());
   for (const Material& m : world.materials) write_material(w, m);
-  w.pod(world.domain), w.pod(world.gravity), w.pod(world.disk_thickness);
+  write_members(w, world.domain);
+  w.pod(world.gravity), w.pod(world.disk_thickness);
   w.pod<std::uint64_t>(world.drivers.size());
   for (const Driver& d : world.drivers) write_driver(w, d);
   const NeighbourList& l = c.state.neighbours;
@@ -176,7 +240,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.vec(l.wall_history), w.vec(l.reference), w.vec(l.segment_reference);
   w.pod(l.skin), w.pod(l.builds);
   w.pod(c.state.time), w.pod(c.state.steps);
-  w.pod(c.config);
+  write_members(w, c.config);
   w.str(c.run_data);
 
   return seal_checkpoint(w.bytes());
@@ -202,23 +266,30 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   std::uint64_t size = 0, sum = 0;
   std::memcpy(&version, bytes.data() + sizeof(magic), sizeof(version));
   std::memcpy(&size, bytes.data() + sizeof(magic) + sizeof(version), sizeof(size));
-  if (version != checkpoint_version)
+  if (version < oldest_readable_version || version > checkpoint_version)
     throw CheckpointError(source + ": checkpoint format version " + std::to_string(version) +
-                          "; this talus reads version " + std::to_string(checkpoint_version));
+                          "; this talus reads versions " + std::to_string(oldest_readable_version) +
+                          " to " + std::to_string(checkpoint_version));
   if (size != bytes.size() - head - sizeof(sum))
     throw CheckpointError(source + ": corrupt checkpoint: truncated or padded (size mismatch)");
   std::memcpy(&sum, bytes.data() + head + size, sizeof(sum));
-  if (sum != fnv1a(bytes.data() + head, size))
+  const std::uint64_t basis = version == 7 ? format7_offset_basis : fnv_offset_basis;
+  if (sum != fnv1a(bytes.data() + head, size, basis))
     throw CheckpointError(source + ": corrupt checkpoint: checksum mismatch");
 
   Reader r(bytes, head, head + size, source);
   Checkpoint c;
   World& world = c.state.world;
   read_particles(r, world.particles);
-  r.vec(world.walls);
+  if (version == 7) {
+    r.vec(world.walls);
+  } else {
+    world.walls.resize(r.count(sizeof(Vec2))); // each at least its first end
+    for (Segment& wall : world.walls) wall = read_members<Segment>(r);
+  }
   world.materials.resize(r.count(sizeof(std::uint64_t))); // each at least its name's length
   for (Material& m : world.materials) m = read_material(r);
-  world.domain = r.pod<Domain>();
+  world.domain = version == 7 ? read_domain7(r) : read_members<Domain>(r);
   world.gravity = r.pod<Vec2>();
   world.disk_thickness = r.pod<double>();
   world.drivers.resize(r.count(sizeof(std::uint32_t))); // each at least its type
@@ -231,7 +302,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   l.builds = r.pod<std::uint64_t>();
   c.state.time = r.pod<double>();
   c.state.steps = r.pod<std::uint64_t>();
-  c.config = r.pod<SimulationConfig>();
+  c.config = version == 7 ? r.pod<SimulationConfig>() : read_members<SimulationConfig>(r);
   c.run_data = r.str();
   if (!r.done()) r.fail("unexpected bytes at the end");
   return c;

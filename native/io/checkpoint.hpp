@@ -8,13 +8,13 @@
 
 namespace talus {
 
-/// A checkpoint that cannot be used: missing, truncated, corrupted or of another version.
 /// A file could not be written (a full disk, a file size limit, no permission).
 class WriteError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
 };
 
+/// A checkpoint that cannot be used: missing, truncated, corrupted or of another version.
 class CheckpointError : public std::runtime_error {
 public:
   using std::runtime_error::runtime_error;
@@ -26,7 +26,9 @@ struct Checkpoint {
   std::string run_data; ///< opaque to the engine: the command line's own bookkeeping
 };
 
-inline constexpr std::uint32_t checkpoint_version = 7; // 7: the lever arm in the config
+/// The format written. 7: the lever arm in the config; 8: FNV-1a's own offset basis in the
+/// checksum (7 had one a digit short). Versions 7 and 8 are read.
+inline constexpr std::uint32_t checkpoint_version = 8;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

@@ -17,7 +17,31 @@ namespace talus {
 
 namespace {
 
+// The settings chosen by name in a scenario arrive here as ids; one from a restored checkpoint
+// was only checksummed, and an id outside its list would quietly select another law or scheme.
+void validate_choices(const SimulationConfig& c) {
+  const auto within = [](auto id, std::size_t count) {
+    return static_cast<std::size_t>(id) < count;
+  };
+  require(within(c.normal_law, NormalLaws::size),
+          "simulation.normal_law: id " + std::to_string(static_cast<int>(c.normal_law)) +
+              " is not a law; allowed: " + law_names<NormalLaw>());
+  require(within(c.tangential_law, TangentialLaws::size),
+          "simulation.tangential_law: id " + std::to_string(static_cast<int>(c.tangential_law)) +
+              " is not a law; allowed: " + law_names<TangentialLaw>());
+  require(c.integrator == Integrator::gear || c.integrator == Integrator::verlet,
+          "simulation.integrator: id " + std::to_string(static_cast<int>(c.integrator)) +
+              " is not an integrator; allowed: gear, verlet");
+  require(within(c.verlet_velocity, 2), "simulation.verlet_velocity: id " +
+                                            std::to_string(static_cast<int>(c.verlet_velocity)) +
+                                            " is not a choice; allowed: predicted, half_step");
+  require(within(c.lever_arm, 2), "simulation.lever_arm: id " +
+                                      std::to_string(static_cast<int>(c.lever_arm)) +
+                                      " is not a choice; allowed: contact_point, radius");
+}
+
 void validate_setup(const World& w, const SimulationConfig& c) {
+  validate_choices(c);
   require(std::isfinite(c.timestep) && c.timestep > 0.0,
           "simulation.timestep = " + std::to_string(c.timestep) + " s; allowed: > 0");
   require(c.skin >= 0.0, "simulation.skin must be >= 0 m (0: automatic)");
@@ -29,9 +53,14 @@ void validate_setup(const World& w, const SimulationConfig& c) {
       require(problem.empty(), problem);
     }
   });
-  for (std::size_t i = 0; i < w.particles.size(); ++i)
+  for (std::size_t i = 0; i < w.particles.size(); ++i) {
     require(w.particles.material[i] < w.materials.size(),
             "particle " + std::to_string(i) + ": material index out of range");
+    require(static_cast<int>(w.particles.kind[i]) <= static_cast<int>(Kind::moved),
+            "particle " + std::to_string(i) + ": kind " +
+                std::to_string(static_cast<int>(w.particles.kind[i])) +
+                " is not one; allowed: 0 (free), 1 (fixed), 2 (moved)");
+  }
   for (const Segment& s : w.walls)
     require(s.material < w.materials.size(), "wall: material index out of range");
 }
