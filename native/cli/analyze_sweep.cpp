@@ -136,6 +136,35 @@ std::string fit_text(const BeverlooFit& f) {
                      f.A, f.A_error, f.k, f.k_error, n, f.rms, f.points);
 }
 
+// Beverloo's law fitted to one group of runs (the same values but the orifice's, axis a), with
+// n free and n = 3/2; printed, and returned for beverloo.json.
+json fit_group(const SweepPlan& plan, const Group& g, std::size_t a,
+               const std::vector<double>& rate, double diameter) {
+  std::vector<double> D, W;
+  std::size_t without = 0;
+  for (const std::size_t i : g.runs) {
+    const double width = std::stod(plan.runs[i].values[a]);
+    if (!std::isfinite(rate[i])) {
+      ++without;
+      continue;
+    }
+    D.push_back(width), W.push_back(rate[i]);
+  }
+  const BeverlooFit free = fit_beverloo(D, W, diameter), fixed = fit_beverloo(D, W, diameter, 1.5);
+  std::string label;
+  for (std::size_t k = 0, j = 0; k < plan.axes.size(); ++k)
+    if (k != a) label += (label.empty() ? "" : ", ") + plan.axes[k].key + "=" + g.values[j++];
+  fmt::print("  Beverloo{}{}: {}\n  n = 3/2: {}\n", label.empty() ? "" : " at ", label,
+             fit_text(free), fit_text(fixed));
+  if (without > 0)
+    fmt::print("  ({} runs without a rate left out: clogged, or too few grains)\n", without);
+  return {{"values", g.values},
+          {"label", label},
+          {"runs_without_rate", without},
+          {"free", fit_json(free)},
+          {"fixed", fit_json(fixed)}};
+}
+
 } // namespace
 
 void analyze_sweep_discharge(const fs::path& dir, const AnalysisOptions& o) {
@@ -178,32 +207,7 @@ void analyze_sweep_discharge(const fs::path& dir, const AnalysisOptions& o) {
   const auto a = static_cast<std::size_t>(axis - plan.axes.begin());
   json fits = json::array();
   std::string points = header(plan) + "run,seed,end,D,D_over_d,rate,rate_error\n";
-  for (const Group& g : groups_of(plan, a)) {
-    std::vector<double> D, W;
-    std::size_t without = 0;
-    for (const std::size_t i : g.runs) {
-      const double width = std::stod(plan.runs[i].values[a]);
-      if (!std::isfinite(rate[i])) {
-        ++without;
-        continue;
-      }
-      D.push_back(width), W.push_back(rate[i]);
-    }
-    const BeverlooFit free = fit_beverloo(D, W, diameter),
-                      fixed = fit_beverloo(D, W, diameter, 1.5);
-    std::string label;
-    for (std::size_t k = 0, j = 0; k < plan.axes.size(); ++k)
-      if (k != a) label += (label.empty() ? "" : ", ") + plan.axes[k].key + "=" + g.values[j++];
-    fits.push_back({{"values", g.values},
-                    {"label", label},
-                    {"runs_without_rate", without},
-                    {"free", fit_json(free)},
-                    {"fixed", fit_json(fixed)}});
-    fmt::print("  Beverloo{}{}: {}\n  n = 3/2: {}\n", label.empty() ? "" : " at ", label,
-               fit_text(free), fit_text(fixed));
-    if (without > 0)
-      fmt::print("  ({} runs without a rate left out: clogged, or too few grains)\n", without);
-  }
+  for (const Group& g : groups_of(plan, a)) fits.push_back(fit_group(plan, g, a, rate, diameter));
   for (std::size_t i = 0; i < plan.runs.size(); ++i) { // a run without a rate: its end only
     if (end[i].empty()) continue;
     for (std::size_t k = 0; k < plan.axes.size(); ++k) points += plan.runs[i].values[k] + ",";

@@ -64,6 +64,17 @@ void report_wall_forces(Simulation& sim) {
              sides >= 0.0 ? "friction holding the grains up" : "friction pulling the grains down");
 }
 
+// particles.csv: every particle's final state, one row each
+std::string final_state_csv(const Particles& p) {
+  std::string csv = "id,x,y,angle,vx,vy,omega,radius,mass,kind\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    csv +=
+        fmt::format("{},{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{}\n", p.id[i],
+                    p.position[i].x, p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
+                    p.angular_velocity[i], p.radius[i], p.mass[i], static_cast<int>(p.kind[i]));
+  return csv;
+}
+
 void run_demo(const DemoOptions& o) {
   PourBoxSpec spec;
   spec.count = o.count;
@@ -129,14 +140,8 @@ void run_demo(const DemoOptions& o) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::string final_state = "id,x,y,angle,vx,vy,omega,radius,mass,kind\n";
-  for (std::size_t i = 0; i < p.size(); ++i)
-    final_state +=
-        fmt::format("{},{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{}\n", p.id[i],
-                    p.position[i].x, p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
-                    p.angular_velocity[i], p.radius[i], p.mass[i], static_cast<int>(p.kind[i]));
   write_atomically(dir / "thermo.csv", thermo);
-  write_atomically(dir / "particles.csv", final_state);
+  write_atomically(dir / "particles.csv", final_state_csv(p));
   write_snapshot_png(sim, (dir / "final.png").string(), 1200, SnapshotColour::size);
   const double rate = static_cast<double>(done) * static_cast<double>(p.size()) / seconds;
   fmt::print("{} after {} steps (t = {:.3f} s): {:.2f} s wall, {:.3e} particle-steps/s, "
