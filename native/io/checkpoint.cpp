@@ -20,7 +20,7 @@ constexpr char magic[8] = {'T', 'A', 'L', 'U', 'S', 'C', 'K', 'P'};
 // working checksum), so a file of that version is checked with the basis it was written with.
 constexpr std::uint64_t fnv_offset_basis = 14695981039346656037ULL;
 constexpr std::uint64_t format7_offset_basis = 1469598103934665603ULL;
-constexpr std::uint32_t oldest_readable_version = 7; // the payload is the same since
+constexpr std::uint32_t oldest_readable_version = 7; // with its basis and layout (below)
 
 std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t basis = fnv_offset_basis) {
   std::uint64_t h = basis;
