@@ -47,6 +47,8 @@ void validate_setup(const World& w, const SimulationConfig& c) {
   require(c.skin >= 0.0, "simulation.skin must be >= 0 m (0: automatic)");
   require(c.threads >= 0, "simulation.threads must be >= 0 (0: all cores)");
   require(c.max_overlap_fraction > 0.0, "simulation.max_overlap_fraction must be > 0");
+  require(std::isfinite(c.impact_speed) && c.impact_speed > 0.0,
+          "simulation.impact_speed = " + std::to_string(c.impact_speed) + " m/s; allowed: > 0");
   with_normal_law(c.normal_law, [&]<class N>() {
     for (const Material& m : w.materials) {
       const std::string problem = N::material_error(m);

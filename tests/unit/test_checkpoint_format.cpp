@@ -2,6 +2,7 @@
 // still hold: ids of laws and schemes, particle kinds and flags outside their lists.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <functional>
@@ -183,6 +184,25 @@ TEST(CheckpointFormat, IdsOutsideTheirListsAreRefusedOnRestore) {
   EXPECT_NE(e.find("particle 1: kind 3 is not one; allowed: 0 (free), 1 (fixed), 2 (moved)"),
             std::string::npos)
       << e;
+}
+
+// Settings a scenario's loader bounds are bounded again on restore (and for a Simulation made
+// through the API): a checkpoint's, or a program's, are not read through the loader.
+TEST(CheckpointFormat, SettingsOutOfRangeAreRefusedOnRestore) {
+  const Checkpoint c = small_checkpoint();
+  const std::vector<std::pair<std::string, std::function<void(SimulationConfig&)>>> settings{
+      {"simulation.timestep = nan s; allowed: > 0",
+       [](SimulationConfig& s) { s.timestep = std::nan(""); }},
+      {"simulation.impact_speed = -1.000000 m/s; allowed: > 0",
+       [](SimulationConfig& s) { s.impact_speed = -1.0; }},
+      {"simulation.impact_speed = inf m/s; allowed: > 0",
+       [](SimulationConfig& s) { s.impact_speed = HUGE_VAL; }}};
+  for (const auto& [message, change] : settings) {
+    SimulationConfig bad = c.config;
+    change(bad);
+    const std::string e = error_of([&] { Simulation::restore(c.state, bad); });
+    EXPECT_NE(e.find(message), std::string::npos) << e;
+  }
 }
 
 } // namespace
