@@ -5,11 +5,10 @@
 #include <limits>
 #include <set>
 #include <sstream>
-#include <sys/resource.h>
 #include <tuple>
-#include <unistd.h>
 
 #include "materials/timestep.hpp"
+#include "scenario/build_checks.hpp"
 #include "scenario/geometry.hpp"
 #include "scenario/load.hpp"
 #include "scenario/packing.hpp"
@@ -49,150 +48,6 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
                   (static_cast<double>(k) / static_cast<double>(std::max<std::size_t>(n, 1))) *
                       (seg.b - seg.a));
   return out;
-}
-
-// Refuses what the machine, or this process' limits (ulimit -v, -d), cannot hold, before
-// allocating it: a generous bound per particle on the neighbour list, contact history and the
-// run's buffers (docs/performance.md, "Memory").
-void check_memory(std::size_t particles) {
-  const double need = 700.0 * static_cast<double>(particles);
-  const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
-  const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
-  double room = pages > 0 && page > 0 ? 0.8 * pages * page : HUGE_VAL;
-  std::string what = "this machine has " + std::to_string(room / 0.8 / 1e9) + " GB";
-  for (const auto& [resource, name] :
-       {std::pair{RLIMIT_AS, "ulimit -v"}, {RLIMIT_DATA, "ulimit -d"}}) {
-    rlimit limit{};
-    if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
-    // the process itself (code, libraries, threads' stacks) takes some of a limit
-    const double usable = 0.8 * static_cast<double>(limit.rlim_cur) - 200e6;
-    if (usable < room) {
-      room = usable;
-      what = "this process may use " + std::to_string(static_cast<double>(limit.rlim_cur) / 1e9) +
-             " GB (" + name + ")";
-    }
-  }
-  if (need > room)
-    throw ScenarioError("key 'particles.count': " + std::to_string(particles) +
-                        " particles need about " + std::to_string(need / 1e9) + " GB; " + what);
-}
-
-// Double precision resolves a coordinate x to about |x| 2^-52. Beyond some distance from the
-// origin that is no longer fine next to a grain (contact forces follow overlaps of a small share
-// of a radius), and far enough out grains a diameter apart land on the same number. A scene
-// reaching that far is refused here, rather than run on positions that cannot tell grains apart.
-void check_position_resolution(const Scenario& s, const Rect& bounds, const Rect& fill,
-                               double r_min) {
-  double reach = 0.0;
-  for (const Rect& r : {bounds, fill})
-    for (const double c : {r.lo.x, r.lo.y, r.hi.x, r.hi.y}) reach = std::max(reach, std::abs(c));
-  for (const ExplicitParticle& e : s.particles.list)
-    reach = std::max({reach, std::abs(e.position.x), std::abs(e.position.y)});
-  const double resolution = reach * std::numeric_limits<double>::epsilon();
-  if (resolution > 1e-6 * r_min) {
-    std::ostringstream msg;
-    msg << "key 'geometry': the scene reaches " << reach << " m from the origin, " << reach / r_min
-        << " radii of the smallest grain (" << r_min << " m); positions there are resolved only to "
-        << resolution
-        << " m, more than a millionth of that radius. Keep the container, packing.region and "
-           "particles.list within "
-        << 1e-6 / std::numeric_limits<double>::epsilon() << " radii of the origin";
-    throw ScenarioError(msg.str());
-  }
-}
-
-// Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius (walls:
-// check_listed_grains_clear_of_walls).
-void check_start_overlaps(const Scenario& s) {
-  const auto& list = s.particles.list;
-  for (std::size_t a = 0; a < list.size(); ++a) {
-    for (std::size_t b = a + 1; b < list.size(); ++b) {
-      const double overlap =
-          list[a].radius + list[b].radius - norm(list[a].position - list[b].position);
-      if (overlap > 0.01 * std::min(list[a].radius, list[b].radius) &&
-          (list[a].kind == "free" || list[b].kind == "free"))
-        throw ScenarioError("key 'particles.list': grains " + std::to_string(a) + " and " +
-                            std::to_string(b) + " overlap by " + std::to_string(overlap) +
-                            " m at the start; allowed: at most 1% of the smaller radius");
-    }
-  }
-}
-
-// Walls given by hand (extra segments, listed wall particles) must not leave an accidental gap
-// a grain can slip through: an opening wider than the smallest grain's diameter but narrower
-// than the largest's is refused. Wider openings (a silo's top, an orifice) are taken as meant;
-// builders' walls have no gaps at all.
-void check_wall_gaps(const Scenario& s, double r_min, double r_max) {
-  const auto gap_error = [&](const std::string& what, double gap) {
-    throw ScenarioError(
-        what + " leave a gap of " + std::to_string(gap) + " m, which a grain of diameter " +
-        std::to_string(2.0 * r_min) +
-        " m can pass; join them, or leave an opening wider than the largest grain (" +
-        std::to_string(2.0 * r_max) + " m)");
-  };
-  const auto& seg = s.geometry.segments;
-  for (std::size_t a = 0; a < seg.size(); ++a)
-    for (std::size_t b = a + 1; b < seg.size(); ++b)
-      for (const Vec2 p : {seg[a].a, seg[a].b})
-        for (const Vec2 q : {seg[b].a, seg[b].b}) {
-          const double gap = norm(p - q);
-          if (gap > 1e-12 && gap >= 2.0 * r_min && gap < 2.0 * r_max)
-            gap_error("key 'geometry.segments': segments " + std::to_string(a) + " and " +
-                          std::to_string(b),
-                      gap);
-        }
-  const auto& list = s.particles.list;
-  for (std::size_t a = 0; a < list.size(); ++a) {
-    if (list[a].kind != "fixed") continue;
-    for (std::size_t b = a + 1; b < list.size(); ++b) {
-      if (list[b].kind != "fixed") continue;
-      const double gap =
-          norm(list[a].position - list[b].position) - list[a].radius - list[b].radius;
-      if (gap >= 2.0 * r_min && gap < 2.0 * r_max)
-        gap_error("key 'particles.list': wall particles " + std::to_string(a) + " and " +
-                      std::to_string(b),
-                  gap);
-    }
-  }
-}
-
-// Listed grains must start inside the container and clear of its walls: segments and wall
-// particles (the builder's or listed ones) overlapping a grain by more than 1% of the smaller
-// radius are refused, as grains overlapping each other are.
-void check_listed_grains_clear_of_walls(const Scenario& s, const World& w, const Rect& bounds) {
-  const Particles& p = w.particles;
-  const bool has_bounds = bounds.hi.x > bounds.lo.x && bounds.hi.y > bounds.lo.y;
-  for (std::size_t k = 0; k < s.particles.list.size(); ++k) {
-    const ExplicitParticle& e = s.particles.list[k];
-    if (e.kind != "free") continue;
-    const std::string grain = "key 'particles.list': grain " + std::to_string(k) + " at (" +
-                              std::to_string(e.position.x) + ", " + std::to_string(e.position.y) +
-                              ") m";
-    if (has_bounds && (e.position.x < bounds.lo.x || e.position.x > bounds.hi.x ||
-                       e.position.y < bounds.lo.y || e.position.y > bounds.hi.y))
-      throw ScenarioError(grain + " is outside the container (x in [" +
-                          std::to_string(bounds.lo.x) + ", " + std::to_string(bounds.hi.x) +
-                          "], y in [" + std::to_string(bounds.lo.y) + ", " +
-                          std::to_string(bounds.hi.y) + "] m)");
-    for (std::size_t j = 0; j < w.walls.size(); ++j) {
-      const Segment& seg = w.walls[j];
-      const double overlap = e.radius - norm(e.position - closest_point(seg, e.position));
-      if (overlap > 0.01 * e.radius)
-        throw ScenarioError(grain + " overlaps wall segment " + std::to_string(j) + " by " +
-                            std::to_string(overlap) +
-                            " m at the start; allowed: at most 1% of "
-                            "its radius");
-    }
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.kind[i] == Kind::free) continue;
-      const double overlap = e.radius + p.radius[i] - norm(e.position - p.position[i]);
-      if (overlap > 0.01 * std::min(e.radius, p.radius[i]))
-        throw ScenarioError(grain + " overlaps wall particle " + std::to_string(i) + " by " +
-                            std::to_string(overlap) +
-                            " m at the start; allowed: at most 1% of the smaller radius (move "
-                            "the grain, or set geometry.wall_particle_radius)");
-    }
-  }
 }
 
 } // namespace
