@@ -288,6 +288,39 @@ TEST(RunOutputs, EveryGrainTrackedExactlyAndTheEndIsASnapshot) {
   EXPECT_NEAR(entries[2].first, 0.15, 1e-3);
 }
 
+// A snapshot's ids, kinds and materials are whole numbers; one that is not, or does not fit its
+// type (a damaged or edited file), is refused naming the file, the array and the entry: converting
+// it would be undefined. (A word that is no number, "nan" say, ends the array's numbers there:
+// "arrays of different lengths".)
+TEST(RunOutputs, ASnapshotWithAnIdThatIsNotOneIsRefused) {
+  const fs::path dir = fresh_dir("snapshot_ids");
+  ASSERT_EQ(run(builtin("collisions", {"simulation.duration=0.002"}), dir), cli::exit_completed);
+  const std::string file = (dir / "snapshots/particles_000000.vtp").string();
+  const std::string good = read_file(file);
+  EXPECT_NO_THROW(read_vtp_frame(file, "", 0.0));
+  const std::vector<std::pair<std::string, std::string>> damage{{"Name=\"id\"", "-1"},
+                                                                {"Name=\"id\"", "1e30"},
+
+                                                                {"Name=\"kind\"", "2.5"},
+                                                                {"Name=\"material\"", "70000"}};
+  for (const auto& [array, value] : damage) {
+    std::string bad = good;
+    const std::size_t first = bad.find('\n', bad.find(array)) + 1; // the array's first number
+    bad.replace(first, bad.find('\n', first) - first, value);
+    write_file_atomically(file, bad);
+    try {
+      read_vtp_frame(file, "", 0.0);
+      ADD_FAILURE() << array << " " << value << " accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(file + ": DataArray '"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("at entry 0; allowed: whole numbers 0 to"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(RunFolder, NothingIsWrittenWhenTheScenarioIsBad) {
   const fs::path dir = fresh_dir("bad");
   EXPECT_THROW(
