@@ -153,8 +153,11 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   for (const Frame& f : frames) take_in(seen, f);
   const Rect band = profile_band(sc, frames, seen, o);
   const double y0 = band.lo.y, y1 = band.hi.y, x0 = band.lo.x, x1 = band.hi.x;
+  const double across = (x1 - x0) / d; // no grain left in the frames: not a number
   const std::size_t bins =
-      o.bins ? o.bins : std::clamp<std::size_t>(static_cast<std::size_t>((x1 - x0) / d), 5, 60);
+      o.bins
+          ? o.bins
+          : static_cast<std::size_t>(std::isfinite(across) ? std::clamp(across, 5.0, 60.0) : 5.0);
   const BandProfile p = band_profile(frames, y0, y1, x0, x1, bins);
   const fs::path out = run.out();
   std::string csv = "x,vx,vy,speed,samples\n";

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis/observables.hpp"
+#include "io/whole_number.hpp"
 
 namespace talus {
 
@@ -52,9 +53,10 @@ std::vector<ContactEvent> read_contact_events(const std::string& path) {
     if (!ok || !(row >> std::ws).eof())
       throw std::runtime_error(path + ":" + std::to_string(number) + ": malformed row");
     ContactEvent e;
-    e.particle = static_cast<std::uint64_t>(v[0]);
-    e.partner = static_cast<std::int64_t>(v[1]);
-    e.wall = static_cast<std::int64_t>(v[2]);
+    const std::string at = path + ":" + std::to_string(number) + ": ";
+    e.particle = whole_number<std::uint64_t>(v[0], at + "the particle");
+    e.partner = whole_number<std::int64_t>(v[1], at + "the partner");
+    e.wall = whole_number<std::int64_t>(v[2], at + "the wall");
     e.start = v[3];
     e.end = v[4]; // v[5] is the duration, end - start
     e.peak_normal_force = v[6];

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/whole_number.hpp"
+
 namespace talus {
 
 std::map<std::uint32_t, std::vector<TrackPoint>> read_tracks(const std::string& path) {
@@ -22,7 +24,9 @@ std::map<std::uint32_t, std::vector<TrackPoint>> read_tracks(const std::string& 
     bool ok = static_cast<bool>(row >> v[0]);
     for (int k = 1; k < 8 && ok; ++k) ok = static_cast<bool>(row >> comma >> v[k]) && comma == ',';
     if (!ok) throw std::runtime_error(path + ":" + std::to_string(number) + ": malformed row");
-    tracks[static_cast<std::uint32_t>(v[1])].push_back({v[0], {v[2], v[3]}, {v[5], v[6]}});
+    const auto id =
+        whole_number<std::uint32_t>(v[1], path + ":" + std::to_string(number) + ": the id");
+    tracks[id].push_back({v[0], {v[2], v[3]}, {v[5], v[6]}});
   }
   return tracks;
 }

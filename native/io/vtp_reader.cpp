@@ -1,12 +1,11 @@
 #include "io/vtp_reader.hpp"
 
-#include <cmath>
 #include <filesystem>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "io/checkpoint.hpp"
+#include "io/whole_number.hpp"
 
 namespace talus {
 
@@ -39,19 +38,12 @@ std::vector<double> data_array(const std::string& xml, const std::string& name,
   throw std::runtime_error(file + ": no DataArray '" + name + "' (not a talus snapshot?)");
 }
 
-// Entry k of a DataArray of whole numbers (ids, kinds, materials) as T. A talus snapshot writes
-// only whole numbers that fit T there; anything else (a damaged or edited file) is refused, since
-// converting it would be undefined.
+// Entry k of a DataArray of whole numbers (ids, kinds, materials) as T.
 template <class T>
-T whole_number(const std::vector<double>& values, std::size_t k, const char* name,
-               const std::string& file) {
-  const double v = values[k];
-  const auto most = static_cast<double>(std::numeric_limits<T>::max());
-  if (!(v >= 0.0 && v <= most && v == std::floor(v)))
-    throw std::runtime_error(file + ": DataArray '" + name + "' holds " + std::to_string(v) +
-                             " at entry " + std::to_string(k) + "; allowed: whole numbers 0 to " +
-                             std::to_string(std::numeric_limits<T>::max()));
-  return static_cast<T>(v);
+T entry_of(const std::vector<double>& values, std::size_t k, const char* name,
+           const std::string& file) {
+  return whole_number<T>(values[k],
+                         file + ": DataArray '" + name + "' at entry " + std::to_string(k));
 }
 
 } // namespace
@@ -94,13 +86,13 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
       material.size() != n || ids.size() != n)
     throw std::runtime_error(particles + ": arrays of different lengths");
   for (std::size_t i = 0; i < n; ++i) {
-    f.id.push_back(whole_number<std::uint32_t>(ids, i, "id", particles));
+    f.id.push_back(entry_of<std::uint32_t>(ids, i, "id", particles));
     f.position.push_back({pos[3 * i], pos[3 * i + 1]});
     f.radius.push_back(radius[i]);
     f.velocity.push_back({vel[3 * i], vel[3 * i + 1]});
     f.force.push_back({force[3 * i], force[3 * i + 1]});
-    f.kind.push_back(whole_number<std::uint8_t>(kind, i, "kind", particles));
-    f.material.push_back(whole_number<std::uint16_t>(material, i, "material", particles));
+    f.kind.push_back(entry_of<std::uint8_t>(kind, i, "kind", particles));
+    f.material.push_back(entry_of<std::uint16_t>(material, i, "material", particles));
   }
   if (!walls.empty() && std::filesystem::exists(walls)) {
     const auto w = data_array(read_file(walls), "position", walls);

@@ -7,6 +7,7 @@
 
 #include "cli/run_loop.hpp"
 #include "io/checkpoint.hpp"
+#include "io/contact_csv.hpp"
 #include "io/thesis_format.hpp"
 #include "io/track_csv.hpp"
 #include "io/vtp_reader.hpp"
@@ -313,11 +314,46 @@ TEST(RunOutputs, ASnapshotWithAnIdThatIsNotOneIsRefused) {
       ADD_FAILURE() << array << " " << value << " accepted";
     } catch (const std::runtime_error& e) {
       EXPECT_NE(std::string(e.what()).find(file + ": DataArray '"), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("at entry 0; allowed: whole numbers 0 to"),
+      EXPECT_NE(std::string(e.what()).find("' at entry 0 holds " +
+                                           std::to_string(std::stod(value)) +
+                                           "; allowed: whole numbers 0 to"),
                 std::string::npos)
           << e.what();
     }
   }
+  fs::remove_all(dir);
+}
+
+// The same for the ids of track.csv and contact_events.csv, with the file's line.
+TEST(RunOutputs, ATrackOrContactEventIdThatIsNotOneIsRefused) {
+  const fs::path dir = fresh_dir("csv_ids");
+  fs::create_directories(dir);
+  const std::string track = (dir / "track.csv").string();
+  const std::string header = "time,id,x,y,angle,vx,vy,omega\n";
+  write_file_atomically(track, header + "0,0,0,0,0,0,0,0\n0,4294967296,0,0,0,0,0,0\n");
+  try {
+    read_tracks(track);
+    ADD_FAILURE() << "an id of 2^32 accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(track + ":3: the id holds 4294967296.000000; allowed: "
+                                                 "whole numbers 0 to 4294967295"),
+              std::string::npos)
+        << e.what();
+  }
+  write_file_atomically(track, header + "0,7,0,0,0,0,0,0\n");
+  EXPECT_EQ(read_tracks(track).count(7), 1u);
+  const std::string events = (dir / "contact_events.csv").string();
+  const std::string row = "0,-1,0.5,0,1,1,1,1,1,1,0\n"; // a wall of index one half
+  write_file_atomically(events, contact_events_header() + row);
+  try {
+    read_contact_events(events);
+    ADD_FAILURE() << "a wall of index 0.5 accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(events + ":2: the wall holds 0.500000"), std::string::npos)
+        << e.what();
+  }
+  write_file_atomically(events, contact_events_header() + "0,-1,3,0,1,1,1,1,1,1,0\n");
+  EXPECT_EQ(read_contact_events(events).at(0).wall, 3);
   fs::remove_all(dir);
 }
 
