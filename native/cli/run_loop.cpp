@@ -38,9 +38,16 @@ void on_signal(int) {
   stop_requested = 1;
 }
 
+// A count of steps, from a time in steps (rounded as the caller chose). A count beyond any run
+// (an interval of years, or a scenario.toml edited before a resume) is cut to one no run reaches,
+// since converting a larger number to an integer is undefined.
+std::uint64_t step_count(double steps) {
+  return static_cast<std::uint64_t>(std::clamp(steps, 0.0, 1e18));
+}
+
 std::uint64_t every(double interval, double dt) {
   if (interval <= 0.0) return 0;
-  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / dt)));
+  return std::max<std::uint64_t>(1, step_count(std::round(interval / dt)));
 }
 
 class Run {
@@ -50,10 +57,9 @@ public:
         progress_(o.quiet, s.simulation.duration, s.output.thermo_interval,
                   sim_.config().timestep) {
     const double dt = sim_.config().timestep;
-    total_ = static_cast<std::uint64_t>(std::ceil(s.simulation.duration / dt - 1e-9));
-    stop_ = o.stop_at >= 0.0
-                ? std::min(total_, static_cast<std::uint64_t>(std::ceil(o.stop_at / dt - 1e-9)))
-                : total_;
+    total_ = step_count(std::ceil(s.simulation.duration / dt - 1e-9));
+    stop_ =
+        o.stop_at >= 0.0 ? std::min(total_, step_count(std::ceil(o.stop_at / dt - 1e-9))) : total_;
     thermo_every_ = every(s.output.thermo_interval, dt);
     snapshot_every_ = every(s.output.snapshot_interval, dt);
     track_every_ = std::max<std::uint64_t>(1, every(s.output.track_interval, dt));
@@ -65,7 +71,7 @@ public:
       if (!book_.front_state.empty())
         front_->load(book_.front_state, sim_.world().particles.size());
       const double phase = std::min(s.frost.freeze_time, s.frost.thaw_time);
-      front_every_ = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(phase / 1000.0 / dt));
+      front_every_ = std::max<std::uint64_t>(1, step_count(std::floor(phase / 1000.0 / dt)));
     }
     if (s.output.contacts) {
       contact_log_.emplace();

@@ -246,6 +246,7 @@ void configure(const Scenario& s, double r_min, BuiltScenario& out) {
     }
     c.timestep = *s.simulation.timestep;
   }
+  check_step_count(s, c.timestep);
   const Rect& b = out.bounds;
   if (b.hi.x > b.lo.x && b.hi.y > b.lo.y) {
     const Vec2 size = b.hi - b.lo;

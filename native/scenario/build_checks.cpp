@@ -62,6 +62,24 @@ void check_position_resolution(const Scenario& s, const Rect& bounds, const Rect
   }
 }
 
+// A billion steps a second for a month is about 3e15 steps: a run of more could never end, and
+// its step counts would not fit the integers that count them.
+void check_step_count(const Scenario& s, double timestep) {
+  constexpr double most_steps = 1e15;
+  const bool settles = s.packing.method == "sedimentation";
+  for (const auto& [time, key] :
+       {std::pair{s.simulation.duration, "simulation.duration"},
+        std::pair{settles ? s.packing.settle_max_time : 0.0, "packing.settle_max_time"}}) {
+    if (time / timestep <= most_steps) continue;
+    std::ostringstream msg;
+    msg << "key '" << key << "': " << time << " s takes " << time / timestep
+        << " steps of the timestep " << timestep
+        << " s; allowed: at most 1e15 steps (a shorter time, or softer materials: the timestep "
+           "follows the collision time)";
+    throw ScenarioError(msg.str());
+  }
+}
+
 // Listed grains may touch at the start but not overlap deeper than 1% of the smaller radius (walls:
 // check_listed_grains_clear_of_walls).
 void check_start_overlaps(const Scenario& s) {

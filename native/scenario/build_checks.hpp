@@ -14,6 +14,9 @@ void check_memory(std::size_t particles);
 /// millionth of the smallest radius.
 void check_position_resolution(const Scenario& s, const Rect& bounds, const Rect& fill,
                                double r_min);
+/// Refuses a run, or a settling, of more steps than any machine finishes (a stiffness that makes
+/// the timestep vanishingly small, say).
+void check_step_count(const Scenario& s, double timestep);
 /// Refuses listed grains overlapping each other beyond 1% of the smaller radius.
 void check_start_overlaps(const Scenario& s);
 /// Refuses hand-made walls with a gap a grain can slip through.

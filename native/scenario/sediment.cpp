@@ -1,6 +1,7 @@
 #include "scenario/sediment.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "analysis/observables.hpp"
 #include "scenario/toml_reader.hpp"
@@ -22,7 +23,12 @@ void sediment(const Scenario& s, const std::vector<SegmentSpec>& gate, std::uint
       scale += sim.world().particles.mass[i] * norm(w.gravity) * sim.world().particles.radius[i];
   if (scale == 0.0)
     throw ScenarioError("key 'packing.method': sedimentation needs gravity (simulation.gravity)");
-  const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(0.005 / c.timestep));
+  // looked at every 5 ms, or once at the end of a shorter settling (its step count is bounded:
+  // check_step_count)
+  const double max_time = s.packing.settle_max_time;
+  const double chunk_steps =
+      max_time < 0.005 ? std::ceil(max_time / c.timestep) : std::floor(0.005 / c.timestep);
+  const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(chunk_steps));
   out.settled = false;
   try {
     while (sim.time() < s.packing.settle_max_time) {
