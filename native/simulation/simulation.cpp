@@ -29,9 +29,9 @@ void validate_choices(const SimulationConfig& c) {
   require(within(c.tangential_law, TangentialLaws::size),
           "simulation.tangential_law: id " + std::to_string(static_cast<int>(c.tangential_law)) +
               " is not a law; allowed: " + law_names<TangentialLaw>());
-  require(c.integrator == Integrator::gear || c.integrator == Integrator::verlet,
-          "simulation.integrator: id " + std::to_string(static_cast<int>(c.integrator)) +
-              " is not an integrator; allowed: gear, verlet");
+  require(within(c.integrator, 2), "simulation.integrator: id " +
+                                       std::to_string(static_cast<int>(c.integrator)) +
+                                       " is not an integrator; allowed: gear, verlet");
   require(within(c.verlet_velocity, 2), "simulation.verlet_velocity: id " +
                                             std::to_string(static_cast<int>(c.verlet_velocity)) +
                                             " is not a choice; allowed: predicted, half_step");
