@@ -161,8 +161,7 @@ void PairGranthesis::init_style() {
       fail("no pair_coeff for type " + std::to_string(i) + " (pair_coeff " + std::to_string(i) +
            " " + std::to_string(i) + " key value ...; keys: " + pair_coefficient_names() + ")");
     const Material& m = material_[static_cast<std::size_t>(i)];
-    const std::string problem =
-        with_normal_law(normal_, [&]<class N>() { return N::material_error(m); });
+    const std::string problem = material_error(normal_, tangential_, m);
     if (!problem.empty()) fail("type " + std::to_string(i) + ": " + problem);
   }
   if (domain->dimension == 3 && comm->me == 0)

@@ -19,7 +19,8 @@ void validate(const Material& m) {
   check(m.poisson >= 0.0 && m.poisson < 0.5, m, "poisson", "[0, 0.5)", m.poisson);
   check(m.restitution > 0.0 && m.restitution <= 1.0, m, "restitution", "(0, 1]", m.restitution);
   check(std::isfinite(m.friction) && m.friction >= 0.0, m, "friction", ">= 0", m.friction);
-  check(m.tangential_damping >= 0.0, m, "tangential_damping", ">= 0 1/s", m.tangential_damping);
+  check(m.tangential_damping >= 0.0 || m.tangential_damping == -1.0, m, "tangential_damping",
+        ">= 0 1/s (or -1: from restitution)", m.tangential_damping);
   check(m.normal_stiffness >= 0.0, m, "normal_stiffness", ">= 0 N/m (0: not given)",
         m.normal_stiffness);
   check(m.tangential_stiffness_ratio > 0.0 || m.tangential_stiffness_ratio == -1.0, m,

@@ -49,12 +49,10 @@ void validate_setup(const World& w, const SimulationConfig& c) {
   require(c.max_overlap_fraction > 0.0, "simulation.max_overlap_fraction must be > 0");
   require(std::isfinite(c.impact_speed) && c.impact_speed > 0.0,
           "simulation.impact_speed = " + std::to_string(c.impact_speed) + " m/s; allowed: > 0");
-  with_normal_law(c.normal_law, [&]<class N>() {
-    for (const Material& m : w.materials) {
-      const std::string problem = N::material_error(m);
-      require(problem.empty(), problem);
-    }
-  });
+  for (const Material& m : w.materials) {
+    const std::string problem = material_error(c.normal_law, c.tangential_law, m);
+    require(problem.empty(), problem);
+  }
   for (std::size_t i = 0; i < w.particles.size(); ++i) {
     require(w.particles.material[i] < w.materials.size(),
             "particle " + std::to_string(i) + ": material index out of range");

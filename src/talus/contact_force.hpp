@@ -22,8 +22,7 @@ inline ContactForceOf<R> contact_force(const PairParametersOf<R>& p, const Conta
                                        R& history, double dt) {
   ContactForceOf<R> c;
   c.normal_force = N::force(p, g);
-  const R kn = N::stiffness(p, g);
-  const R ft = T::force(p, g, c.normal_force, kn, history, dt);
+  const R ft = T::template force<N>(p, g, c.normal_force, history, dt);
   c.force_x = c.normal_force * g.normal_x + ft * -g.normal_y;
   c.force_y = c.normal_force * g.normal_y + ft * g.normal_x;
   c.torque_i = -g.arm_i * ft;

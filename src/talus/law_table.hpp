@@ -115,6 +115,15 @@ template <class F> decltype(auto) with_contact_law(NormalLaw n, TangentialLaw t,
   });
 }
 
+/// What is wrong with a material for the pair of laws ("" if nothing): the normal law's
+/// complaint first, then the tangential law's.
+inline std::string material_error(NormalLaw n, TangentialLaw t, const Material& m) {
+  std::string problem = with_normal_law(n, [&]<class N>() { return N::material_error(m); });
+  if (problem.empty())
+    problem = with_tangential_law(t, [&]<class T>() { return T::material_error(m); });
+  return problem;
+}
+
 /// Whether the tangential law keeps a per-contact history (a spring's stretch).
 inline bool keeps_history(TangentialLaw t) {
   return with_tangential_law(t, []<class T>() { return T::has_history; });

@@ -20,6 +20,11 @@ struct LinearSpringDashpot {
   static constexpr std::string_view name = "linear";
   static constexpr int thesis_force_law = 1; ///< its number in the thesis' input files
   static constexpr bool uses_r_eff = false;
+  /// Whether the stiffness k_n changes with the overlap (a spring following it then rescales).
+  static constexpr bool stiffness_follows_overlap = false;
+  /// f_N of a tangential dashpot derived from the restitution (tangential_laws.hpp): the linear
+  /// oscillator's own damping ratio.
+  static constexpr double tsuji_factor = 1.0;
   template <class P, class G> static auto force(const P& p, const G& g) {
     return not_below_zero(p.normal_stiffness * g.overlap +
                           p.normal_dashpot(g.m_eff) * g.overlap_rate());
@@ -70,6 +75,9 @@ struct HertzViscoelastic {
   static constexpr std::string_view name = "hertz";
   static constexpr int thesis_force_law = 0;
   static constexpr bool uses_r_eff = true;
+  static constexpr bool stiffness_follows_overlap = true;
+  /// sqrt(5/6): Tsuji et al. 1992's factor for a dashpot beside a Hertzian spring.
+  static constexpr double tsuji_factor = 0.91287092917527685576;
   template <class P, class G> static auto force(const P& p, const G& g) {
     const auto rho = 4.0 / 3.0 * p.effective_young * square_root(g.r_eff);
     const auto s = square_root(g.overlap);

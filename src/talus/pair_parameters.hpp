@@ -9,6 +9,7 @@
 #include "talus/closed_forms.hpp"
 #include "talus/material.hpp"
 #include "talus/number.hpp"
+#include "talus/tangential_laws.hpp"
 
 namespace talus {
 
@@ -22,11 +23,13 @@ template <class R> struct PairParametersOf {
   R damping_rate{};                               ///< gamma_n, 1/s: eta_n += gamma_n m_eff
   R damping_sqrt_coeff{};                         ///< 2 zeta sqrt(k_n): eta_n += this * sqrt(m_eff)
   R tangential_stiffness_ratio = R{} + 2.0 / 7.0; ///< k_t / k_n (Cundall-Strack)
-  R tangential_damping{};                         ///< gamma_t, 1/s
-  R friction{};                                   ///< mu
-  R effective_young{};                            ///< E*, Pa
-  R effective_shear{};                            ///< G*, Pa
-  R hertz_damping{};                              ///< A, s: the constant part of A
+  R tangential_damping{};                         ///< gamma_t, 1/s: eta_t += gamma_t m_eff
+  /// c, from the restitution: a spring law's eta_t += f_N c sqrt(k_t m_eff) (tangential_laws.hpp)
+  R tangential_damping_sqrt_coeff{};
+  R friction{};        ///< mu
+  R effective_young{}; ///< E*, Pa
+  R effective_shear{}; ///< G*, Pa
+  R hertz_damping{};   ///< A, s: the constant part of A
   /// c, the part of A derived from the restitution: A += c (m_eff / rho)^(2/5) per contact
   R hertz_damping_scale{};
   R restitution = R{} + 1.0; ///< the mixed e (informational for the Hertz law)
@@ -48,6 +51,7 @@ template <class R> struct PairParametersOf {
             f(a.damping_sqrt_coeff, b.damping_sqrt_coeff),
             f(a.tangential_stiffness_ratio, b.tangential_stiffness_ratio),
             f(a.tangential_damping, b.tangential_damping),
+            f(a.tangential_damping_sqrt_coeff, b.tangential_damping_sqrt_coeff),
             f(a.friction, b.friction),
             f(a.effective_young, b.effective_young),
             f(a.effective_shear, b.effective_shear),
@@ -94,6 +98,24 @@ inline void mix_hertz_damping(PairParameters& p, const Material& a, const Materi
   }
 }
 
+/// The tangential damping of a pair: the mean of the materials' gamma_t, where a material leaves
+/// it to be derived (negative) its part is the dashpot of Tsuji et al. 1992 from a restitution:
+/// the pair's mean restitution when neither gives gamma_t, its own when the other does.
+inline void mix_tangential_damping(PairParameters& p, const Material& a, const Material& b) {
+  const bool a_derived = a.tangential_damping < 0.0, b_derived = b.tangential_damping < 0.0;
+  if (!a_derived && !b_derived) {
+    p.tangential_damping = 0.5 * (a.tangential_damping + b.tangential_damping);
+  } else if (a_derived && b_derived) {
+    p.tangential_damping_sqrt_coeff = tangential_damping_from_restitution(p.restitution);
+  } else {
+    const Material& given = a_derived ? b : a;
+    const Material& derived = a_derived ? a : b;
+    p.tangential_damping = 0.5 * given.tangential_damping;
+    p.tangential_damping_sqrt_coeff =
+        0.5 * tangential_damping_from_restitution(derived.restitution);
+  }
+}
+
 /// The parameters of a contact between materials a and b (for a wall, b is its material). A rigid
 /// material adds no compliance: against it the stiffness, E* and G* are the other material's
 /// alone (E* = E / (1 - nu^2), G* = E / (2 (2 - nu) (1 + nu)), k_n its own); restitution,
@@ -125,7 +147,7 @@ inline PairParameters mix(const Material& a, const Material& b, double impact_sp
     p.damping_sqrt_coeff =
         2.0 * linear_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
   } // below the floor only the Hertz law reaches e; the linear law's material check refuses it
-  p.tangential_damping = mean(a.tangential_damping, b.tangential_damping);
+  mix_tangential_damping(p, a, b);
   p.friction = mean(a.friction, b.friction);
   p.effective_young = effective_young(a, b);
   p.effective_shear = effective_shear(a, b);

@@ -2,10 +2,15 @@
 // Tangential contact laws: friction force along t from the slip velocity and, for the spring
 // laws, the stored tangential displacement (the contact's history, a scalar along the current
 // tangent, so it is always kept in the current tangent direction). Like the normal laws, they
-// take one contact or several side by side (number.hpp).
+// take one contact or several side by side (number.hpp). Each law is given the normal law N of
+// its contact, whose stiffness a spring may follow.
+#include <cmath>
+#include <numbers>
+#include <string>
 #include <string_view>
 
 #include "talus/contact_geometry.hpp"
+#include "talus/material.hpp"
 #include "talus/number.hpp"
 
 namespace talus {
@@ -15,45 +20,80 @@ namespace talus {
 struct ViscousCoulomb {
   static constexpr std::string_view name = "coulomb";
   static constexpr bool has_history = false;
+  static constexpr bool has_friction = true;
   static constexpr bool uses_r_eff = false;
-  template <class P, class G, class R>
-  static R force(const P& p, const G& g, R normal_force, R /*normal_stiffness*/, R& /*history*/,
-                 double /*dt*/) {
+  template <class N, class P, class G, class R>
+  static R force(const P& p, const G& g, R normal_force, R& /*history*/, double /*dt*/) {
     const R viscous = p.tangential_damping * g.m_eff * magnitude(g.v_tangent);
     const R f = smaller(viscous, p.friction * normal_force);
     return select(g.v_tangent > 0.0, -f, select(g.v_tangent < 0.0, f, R{}));
   }
   template <class P, class G, class R> static R stiffness(const P&, const G&, R) { return R{}; }
+  /// What is wrong with a material for this law ("" if nothing).
+  static std::string material_error(const Material& m) {
+    if (m.tangential_damping < 0.0)
+      return "material '" + m.name +
+             "': tangential_damping = -1 (from restitution) needs a tangential spring to damp; "
+             "allowed with tangential law 'coulomb': >= 0 1/s (or choose tangential law "
+             "'cundall_strack' or 'mindlin')";
+    return {};
+  }
 };
 
-/// A tangential spring with history and Coulomb slip (Cundall & Strack 1979, as in LAMMPS):
-/// s += v_t dt; F_t = -k_t s - eta_t v_t; if |F_t| > mu F_n, F_t = +-mu F_n and the spring is
-/// reset to carry it: s = -(F_t + eta_t v_t) / k_t. `Stiffness` gives k_t.
+/// A tangential spring with history and Coulomb slip, in the incremental form the literature
+/// validates (Thornton et al. 2011 and 2013; LAMMPS' `mindlin_rescale/force`). The history s is
+/// the spring's stretch, its force -k_t s. Each step:
+/// - loading (k_t grew since the step before): s *= k_t,before / k_t, so that the spring's force
+///   is kept and only the new stretch is taken at the new stiffness, dF = -k_t ds;
+/// - unloading (k_t fell): s is kept, so that the force falls with the stiffness and reaches zero
+///   with the contact;
+/// - s += v_t dt; a spring beyond mu F_n is cut back to it (slip: s = -+mu F_n / k_t);
+/// - F_t = -k_t s - eta_t v_t, itself capped at mu F_n (the dashpot's share is cut).
+/// The spring alone is held within the Coulomb cone, as in LIGGGHTS and Thornton's models, so no
+/// step raises the spring's energy 1/2 k_t s^2 beyond the work done on it and friction's
+/// dissipation is never negative; the dashpot always opposes v_t. The damping
+/// eta_t = gamma_t m_eff + f_N c sqrt(k_t m_eff) (c from the restitution, Tsuji et al. 1992).
+/// `Stiffness` gives k_t.
 template <class Stiffness> struct TangentialSpring {
   static constexpr bool has_history = true;
+  static constexpr bool has_friction = true;
   static constexpr bool uses_r_eff = Stiffness::uses_r_eff;
   template <class P, class G, class R> static R stiffness(const P& p, const G& g, R kn) {
     return Stiffness::of(p, g, kn);
   }
-  // the slip by selects, not a branch: two contacts side by side may differ (the reset spring
-  // is computed for a contact that sticks too, and not used)
-  template <class P, class G, class R>
-  static R force(const P& p, const G& g, R normal_force, R kn, R& s, double dt) {
-    const R kt = Stiffness::of(p, g, kn);
-    const R eta = p.tangential_damping * g.m_eff;
-    s += g.v_tangent * dt;
-    const R f = -kt * s - eta * g.v_tangent;
-    const R limit = p.friction * normal_force;
-    const auto slips = magnitude(f) > limit;
-    const R f_slip = copy_sign(limit, f);
-    s = select(slips, select(kt > 0.0, -(f_slip + eta * g.v_tangent) / kt, R{}), s);
-    return select(slips, f_slip, f);
+  /// eta_t, kg/s, for a spring of stiffness kt beside the normal law N.
+  template <class N, class P, class G, class R> static R dashpot(const P& p, const G& g, R kt) {
+    const R rate_part = p.tangential_damping * g.m_eff;
+    if (all_zero(p.tangential_damping_sqrt_coeff)) return rate_part;
+    return rate_part +
+           (N::tsuji_factor * p.tangential_damping_sqrt_coeff) * square_root(kt * g.m_eff);
   }
+  // the slip by selects, not a branch: two contacts side by side may differ
+  template <class N, class P, class G, class R>
+  static R force(const P& p, const G& g, R normal_force, R& s, double dt) {
+    const R kt = Stiffness::of(p, g, N::stiffness(p, g));
+    if constexpr (Stiffness::template follows_overlap<N>) {
+      G before = g; // the overlap one step before, from its rate
+      before.overlap = not_below_zero(g.overlap - g.overlap_rate() * dt);
+      const R kt_before = Stiffness::of(p, before, N::stiffness(p, before));
+      s = select(kt > kt_before, s * (kt_before / kt), s);
+    }
+    s += g.v_tangent * dt;
+    const R limit = p.friction * normal_force;
+    R spring = -kt * s;
+    const auto slips = magnitude(spring) > limit;
+    spring = select(slips, copy_sign(limit, spring), spring);
+    s = select(slips, select(kt > 0.0, -spring / kt, R{}), s);
+    const R f = spring - dashpot<N>(p, g, kt) * g.v_tangent;
+    return select(magnitude(f) > limit, copy_sign(limit, f), f);
+  }
+  static std::string material_error(const Material&) { return {}; }
 };
 
 /// Cundall-Strack: k_t = ratio x k_n (linear law) or ratio x tangent stiffness (Hertz).
 struct CundallStrackStiffness {
   static constexpr bool uses_r_eff = false;
+  template <class N> static constexpr bool follows_overlap = N::stiffness_follows_overlap;
   template <class P, class G, class R> static R of(const P& p, const G&, R kn) {
     return p.tangential_stiffness_ratio * kn;
   }
@@ -61,6 +101,7 @@ struct CundallStrackStiffness {
 /// Hertz-Mindlin no-slip: k_t = 8 G* sqrt(R* xi).
 struct MindlinStiffness {
   static constexpr bool uses_r_eff = true;
+  template <class N> static constexpr bool follows_overlap = true;
   template <class P, class G, class R> static R of(const P& p, const G& g, R) {
     return 8.0 * p.effective_shear * square_root(g.r_eff * g.overlap);
   }
@@ -79,12 +120,23 @@ struct MindlinNoSlip : TangentialSpring<MindlinStiffness> {
 struct Frictionless {
   static constexpr std::string_view name = "none";
   static constexpr bool has_history = false;
+  static constexpr bool has_friction = false;
   static constexpr bool uses_r_eff = false;
-  template <class P, class G, class R>
-  static R force(const P&, const G&, R, R, R& /*history*/, double /*dt*/) {
+  template <class N, class P, class G, class R>
+  static R force(const P&, const G&, R, R& /*history*/, double /*dt*/) {
     return R{};
   }
   template <class P, class G, class R> static R stiffness(const P&, const G&, R) { return R{}; }
+  static std::string material_error(const Material&) { return {}; }
 };
+
+/// The factor c of the tangential dashpot eta_t = f_N c sqrt(k_t m_eff) that a spring law takes
+/// from the restitution e: c = 2 |ln e| / sqrt(ln^2 e + pi^2), twice the damping ratio of a
+/// linear oscillator of that restitution. f_N is the normal law's `tsuji_factor`: 1 for the
+/// linear law, sqrt(5/6) for Hertz (Tsuji et al. 1992, as EDEM and LIGGGHTS take it).
+inline double tangential_damping_from_restitution(double restitution) {
+  const double log_e = std::log(restitution);
+  return 2.0 * -log_e / std::sqrt(log_e * log_e + std::numbers::pi * std::numbers::pi);
+}
 
 } // namespace talus
