@@ -21,6 +21,44 @@ double time_to_zero(double overlap, double rate, double deceleration, double bet
   return std::min(2.0 * overlap / root, between);
 }
 
+// The normal force per unit reduced mass at a look, split as the laws are: an elastic part that
+// grows as xi^p and a dashpot part as xi^(p - 1) xi' (p = 1 linear, 3/2 Hertz), so that the
+// speed a contact gains between a look and its touch or parting is integrated over the overlap
+// rather than taken at the look's force.
+struct ForceShape {
+  double elastic = 0.0, dashpot = 0.0; ///< m/s^2
+  double exponent = 1.0;               ///< p
+};
+
+ForceShape force_shape(const ContactRecord& c) {
+  if (!(c.m_eff > 0.0)) return {};
+  ForceShape f;
+  f.elastic = c.elastic_force / c.m_eff;
+  f.dashpot = c.normal_force / c.m_eff - f.elastic;
+  if (c.elastic_force > 0.0)
+    f.exponent = std::clamp(c.stiffness * c.overlap / c.elastic_force, 1.0, 2.0);
+  return f;
+}
+
+// The speed the force took from the approach between the touch and a look `since` later, the
+// overlap growing at a steady rate from zero: the mean of xi^p over it is 1 / (p + 1) of its value
+// at the look, and of xi^(p - 1) 1 / p.
+double speed_lost_since_touch(const ForceShape& f, double since) {
+  return (f.elastic / (f.exponent + 1.0) + f.dashpot / f.exponent) * since;
+}
+
+// The speed the force adds to the parting over the `remaining` time from a look to the overlap's
+// end, the overlap falling at a steady rate to zero. A never-attractive force ends where its
+// dashpot part (negative while parting) cancels the elastic part: E z^p + D z^(p - 1) = 0 at
+// z0 = xi / xi_look = -D / E.
+double speed_gained_to_parting(const ForceShape& f, double remaining) {
+  if (!(f.elastic + f.dashpot > 0.0) || !(f.elastic > 0.0)) return 0.0;
+  const double p = f.exponent;
+  const double z0 = f.dashpot < 0.0 ? std::min(-f.dashpot / f.elastic, 1.0) : 0.0;
+  return remaining * (f.elastic * (1.0 - std::pow(z0, p + 1.0)) / (p + 1.0) +
+                      f.dashpot * (1.0 - std::pow(z0, p)) / p);
+}
+
 } // namespace
 
 std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
@@ -47,8 +85,8 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
       const double since =
           looks_ > 1 ? time_to_zero(c.overlap, c.overlap_rate, deceleration, between) : 0.0;
       o.event.start = now - since;
-      // the speed at the touch, before this force slowed it (a dashpot's force starts at once)
-      o.event.impact_speed = c.overlap_rate + deceleration * since;
+      // the speed at the touch, before this force slowed it
+      o.event.impact_speed = c.overlap_rate + speed_lost_since_touch(force_shape(c), since);
     }
     o.event.peak_normal_force = std::max(o.event.peak_normal_force, c.normal_force);
     o.event.peak_overlap = std::max(o.event.peak_overlap, c.overlap);
@@ -57,6 +95,9 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
     o.last_overlap = c.overlap;
     o.last_rate = c.overlap_rate;
     o.last_deceleration = deceleration;
+    const ForceShape shape = force_shape(c);
+    o.last_elastic = shape.elastic;
+    o.last_exponent = shape.exponent;
     o.seen = looks_;
   }
   std::vector<std::pair<std::uint64_t, ContactEvent>> ended;
@@ -69,7 +110,9 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
     ContactEvent e = o.event;
     const double since = time_to_zero(o.last_overlap, -o.last_rate, o.last_deceleration, between);
     e.end += since;
-    e.rebound_speed += o.last_deceleration * since; // what the force still added after the look
+    // what the force still added after the look
+    const ForceShape shape{o.last_elastic, o.last_deceleration - o.last_elastic, o.last_exponent};
+    e.rebound_speed += speed_gained_to_parting(shape, since);
     ended.emplace_back(it->second.order, e);
     it = open_.erase(it);
   }
@@ -96,24 +139,28 @@ std::vector<ContactEvent> ContactEventLog::open_events() const {
 }
 
 // Layout: looks, opened, last_time, the number of open contacts, then per contact its key (2),
-// its order and the event's and the last look's numbers (6 + 3). Ids and counts are exact in a
-// double up to 2^53.
+// its order and the event's and the last look's numbers (6 + 5). Ids and counts are exact in a
+// double up to 2^53. A checkpoint of an earlier talus holds 3 numbers of the last look (no force
+// shape): its contacts end as if all their force were elastic and linear.
 std::vector<double> ContactEventLog::save() const {
   std::vector<double> s{static_cast<double>(looks_), static_cast<double>(opened_), last_time_,
                         static_cast<double>(open_.size())};
   for (const auto& [key, o] : open_) {
     const ContactEvent& e = o.event;
-    s.insert(s.end(),
-             {static_cast<double>(key.first), static_cast<double>(key.second),
-              static_cast<double>(o.order), e.start, e.end, e.peak_normal_force, e.peak_overlap,
-              e.impact_speed, e.rebound_speed, o.last_overlap, o.last_rate, o.last_deceleration});
+    s.insert(s.end(), {static_cast<double>(key.first), static_cast<double>(key.second),
+                       static_cast<double>(o.order), e.start, e.end, e.peak_normal_force,
+                       e.peak_overlap, e.impact_speed, e.rebound_speed, o.last_overlap, o.last_rate,
+                       o.last_deceleration, o.last_elastic, o.last_exponent});
   }
   return s;
 }
 
 void ContactEventLog::load(const std::vector<double>& s) {
-  constexpr std::size_t head = 4, per_contact = 12;
-  if (s.size() < head || s.size() != head + per_contact * static_cast<std::size_t>(s[3]))
+  constexpr std::size_t head = 4, earlier = 12, now = 14;
+  if (s.size() < head) throw std::runtime_error("the checkpoint's contact event state is damaged");
+  const auto open = static_cast<std::size_t>(s[3]);
+  const std::size_t per_contact = s.size() == head + now * open ? now : earlier;
+  if (s.size() != head + per_contact * open)
     throw std::runtime_error("the checkpoint's contact event state is damaged");
   looks_ = static_cast<std::uint64_t>(s[0]);
   opened_ = static_cast<std::uint64_t>(s[1]);
@@ -135,6 +182,8 @@ void ContactEventLog::load(const std::vector<double>& s) {
     o.last_overlap = s[k + 9];
     o.last_rate = s[k + 10];
     o.last_deceleration = s[k + 11];
+    o.last_elastic = per_contact == now ? s[k + 12] : o.last_deceleration;
+    o.last_exponent = per_contact == now ? s[k + 13] : 1.0;
     o.seen = looks_;
   }
 }

@@ -46,8 +46,10 @@ private:
   struct Open {
     ContactEvent event;
     double last_overlap = 0.0, last_rate = 0.0, last_deceleration = 0.0; ///< at the last look
-    std::uint64_t order = 0; ///< when it opened, for a stable output order
-    std::uint64_t seen = 0;  ///< the look that last saw it
+    double last_elastic = 0.0;  ///< m/s^2: the elastic part of last_deceleration
+    double last_exponent = 1.0; ///< p of the force's shape (contact_events.cpp)
+    std::uint64_t order = 0;    ///< when it opened, for a stable output order
+    std::uint64_t seen = 0;     ///< the look that last saw it
   };
   std::map<Key, Open> open_;
   std::uint64_t looks_ = 0, opened_ = 0;

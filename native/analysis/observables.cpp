@@ -85,6 +85,10 @@ std::vector<ContactRecord> contact_forces(const Simulation& sim) {
       r.m_eff = g.m_eff;
       r.normal_force = f.normal_force;
       r.tangential_force = dot(force_of(f), tangent_of(v.geometry));
+      ContactGeometry at_rest = g;
+      at_rest.v_normal = 0.0;
+      r.elastic_force = N::force(*v.parameters, at_rest);
+      r.stiffness = N::stiffness(*v.parameters, g);
       out.push_back(r);
     });
   });

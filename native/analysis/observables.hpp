@@ -46,6 +46,8 @@ struct ContactRecord {
   double m_eff = 0.0;            ///< kg: the pair's reduced mass (the grain's against a wall)
   double normal_force = 0.0;     ///< N
   double tangential_force = 0.0; ///< N, signed along t
+  double elastic_force = 0.0;    ///< N: the normal law's force at this overlap without motion
+  double stiffness = 0.0;        ///< N/m: its slope d F_el / d xi here
 };
 
 /// Every touching contact with its normal and tangential force (the law of the run).
