@@ -85,8 +85,12 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
       const double since =
           looks_ > 1 ? time_to_zero(c.overlap, c.overlap_rate, deceleration, between) : 0.0;
       o.event.start = now - since;
-      // the speed at the touch, before this force slowed it
-      o.event.impact_speed = c.overlap_rate + speed_lost_since_touch(force_shape(c), since);
+      // the speed at the touch: the approach at the last look, before it touched, where known;
+      // else the speed now with what this force took since the touch
+      const double before = approach_before(sim, c);
+      o.event.impact_speed = looks_ > 1 && before > 0.0
+                                 ? before
+                                 : c.overlap_rate + speed_lost_since_touch(force_shape(c), since);
     }
     o.event.peak_normal_force = std::max(o.event.peak_normal_force, c.normal_force);
     o.event.peak_overlap = std::max(o.event.peak_overlap, c.overlap);
@@ -122,7 +126,38 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
   out.reserve(ended.size());
   for (auto& [order, e] : ended) out.push_back(e);
   last_time_ = now;
+  remember(sim);
   return out;
+}
+
+void ContactEventLog::remember(const Simulation& sim) {
+  const Particles& p = sim.world().particles;
+  std::uint32_t largest = 0;
+  for (const std::uint32_t id : p.id) largest = std::max(largest, id);
+  velocity_by_id_.assign(p.size() ? std::size_t{largest} + 1 : 0, Vec2{});
+  for (std::size_t i = 0; i < p.size(); ++i) velocity_by_id_[p.id[i]] = p.velocity[i];
+}
+
+// The overlap's rate of a contact seen for the first time, from the velocities of the look
+// before, when it did not touch yet: its approach speed free of the integrator's start-up at the
+// touch (0 if unknown). A wall's velocity is its velocity now.
+double ContactEventLog::approach_before(const Simulation& sim, const ContactRecord& c) const {
+  const Particles& p = sim.world().particles;
+  const auto velocity_before = [&](std::size_t i, Vec2& v) {
+    if (p.id[i] >= velocity_by_id_.size()) return false;
+    v = velocity_by_id_[p.id[i]];
+    return true;
+  };
+  const Vec2 d = c.from - c.to;
+  const double length = norm(d);
+  Vec2 v_i, v_j;
+  if (!(length > 0.0) || !velocity_before(c.i, v_i)) return 0.0;
+  if (c.j >= 0) {
+    if (!velocity_before(static_cast<std::size_t>(c.j), v_j)) return 0.0;
+  } else {
+    v_j = sim.world().walls[static_cast<std::size_t>(-1 - c.j)].velocity_at(c.to);
+  }
+  return -dot(v_i - v_j, d / length);
 }
 
 std::vector<ContactEvent> ContactEventLog::open_events() const {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/observables.hpp"
 #include "simulation/simulation.hpp"
 
 namespace talus {
@@ -35,6 +36,9 @@ public:
   /// The contacts open now, with their end at the last look and touching = true.
   std::vector<ContactEvent> open_events() const;
   std::size_t open_count() const { return open_.size(); }
+  /// Takes the velocities of the current state as those of the last look: a log that starts or
+  /// resumes with a run calls it once, observe() after every look.
+  void remember(const Simulation& sim);
   /// The log's state as numbers, for a checkpoint, and back: a resumed run's events are the
   /// same as an uninterrupted one's.
   std::vector<double> save() const;
@@ -51,7 +55,10 @@ private:
     std::uint64_t order = 0;    ///< when it opened, for a stable output order
     std::uint64_t seen = 0;     ///< the look that last saw it
   };
+  double approach_before(const Simulation& sim, const ContactRecord& c) const;
+
   std::map<Key, Open> open_;
+  std::vector<Vec2> velocity_by_id_; ///< m/s, at the last look, by particle id
   std::uint64_t looks_ = 0, opened_ = 0;
   double last_time_ = 0.0;
 };

@@ -76,6 +76,7 @@ public:
     if (s.output.contacts) {
       contact_log_.emplace();
       if (!book_.contact_state.empty()) contact_log_->load(book_.contact_state);
+      contact_log_->remember(sim_);
     }
     if (s.output.energy_ledger) {
       ledger_.emplace();
