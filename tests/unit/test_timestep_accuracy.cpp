@@ -53,14 +53,25 @@ TEST(TimestepAccuracy, LinearOnsetIsPiZetaDtOverTc) {
 }
 
 TEST(TimestepAccuracy, HertzFollowsItsMeasuredTable) {
-  EXPECT_DOUBLE_EQ(hertz_restitution_error(50.0), 5.8e-5); // a measured point
-  // between points: log-log, so the geometric mean of t_c/100 and t_c/200's at their own mean
-  EXPECT_NEAR(hertz_restitution_error(std::sqrt(100.0 * 200.0)), std::sqrt(1.3e-5 * 4.7e-6), 1e-18);
-  // beyond the table: second order; before it, the coarsest measured
-  EXPECT_NEAR(hertz_restitution_error(2000.0), 2.5e-7 / 4.0, 1e-20);
-  EXPECT_DOUBLE_EQ(hertz_restitution_error(2.0), 1.8e-2);
+  EXPECT_DOUBLE_EQ(hertz_restitution_error(50.0, 0.99), 5.89e-5); // measured points
+  EXPECT_DOUBLE_EQ(hertz_restitution_error(50.0, 0.5), 2.22e-3);
+  // between factors: log-log, so the geometric mean of t_c/100 and t_c/200's at their own mean
+  EXPECT_NEAR(hertz_restitution_error(std::sqrt(100.0 * 200.0), 0.99), std::sqrt(1.32e-5 * 4.87e-6),
+              1e-18);
+  // between restitutions: the log of the error linear in e
+  EXPECT_NEAR(hertz_restitution_error(50.0, 0.6), std::sqrt(2.22e-3 * 1.18e-3), 1e-15);
+  // beyond the table: second order; before it, the coarsest measured; e outside 0.1 to 0.99: the
+  // nearest row
+  EXPECT_NEAR(hertz_restitution_error(2000.0, 0.99), 2.54e-7 / 4.0, 1e-20);
+  EXPECT_DOUBLE_EQ(hertz_restitution_error(2.0, 0.99), 1.78e-2);
+  EXPECT_DOUBLE_EQ(hertz_restitution_error(50.0, 1.0), 5.89e-5);
+  EXPECT_DOUBLE_EQ(hertz_restitution_error(50.0, 0.05), 6.77e-3);
+  // a scene's estimate is at the lowest restitution of its pairs: here the derived damping gives
+  // e = 0.9 at the impact speed (hertz_restitution is good to 1e-8 in e)
   const BuiltScenario b = build_scenario(two_disks("hertz", 0.9, 50.0));
-  EXPECT_NEAR(expected_restitution_error(b).error, 5.8e-5, 1e-9);
+  const RestitutionError e = expected_restitution_error(b);
+  EXPECT_NEAR(e.error, 3.55e-4, 1e-8);
+  EXPECT_NE(e.basis.find("e = 0.9"), std::string::npos) << e.basis;
 }
 
 } // namespace
