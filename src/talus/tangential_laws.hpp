@@ -72,18 +72,23 @@ template <class Stiffness> struct TangentialSpring {
   template <class N, class P, class G, class R>
   static R force(const P& p, const G& g, R normal_force, R& s, double dt) {
     const R kt = Stiffness::of(p, g, N::stiffness(p, g));
+    const R limit = p.friction * normal_force;
+    R spring;
     if constexpr (Stiffness::template follows_overlap<N>) {
       G before = g; // the overlap one step before, from its rate
       before.overlap = not_below_zero(g.overlap - g.overlap_rate() * dt);
       const R kt_before = Stiffness::of(p, before, N::stiffness(p, before));
-      s = select(kt > kt_before, s * (kt_before / kt), s);
+      // loading keeps the force (k_t,before s), unloading the stretch (k_t s): the smaller
+      spring = -smaller(kt, kt_before) * s - kt * (g.v_tangent * dt);
+      spring = select(magnitude(spring) > limit, copy_sign(limit, spring), spring);
+      s = select(kt > 0.0, -spring / kt, R{});
+    } else {
+      s += g.v_tangent * dt;
+      spring = -kt * s;
+      const auto slips = magnitude(spring) > limit;
+      spring = select(slips, copy_sign(limit, spring), spring);
+      s = select(slips, select(kt > 0.0, -spring / kt, R{}), s);
     }
-    s += g.v_tangent * dt;
-    const R limit = p.friction * normal_force;
-    R spring = -kt * s;
-    const auto slips = magnitude(spring) > limit;
-    spring = select(slips, copy_sign(limit, spring), spring);
-    s = select(slips, select(kt > 0.0, -spring / kt, R{}), s);
     const R f = spring - dashpot<N>(p, g, kt) * g.v_tangent;
     return select(magnitude(f) > limit, copy_sign(limit, f), f);
   }
