@@ -76,6 +76,7 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
     Open& o = it->second;
     // the normal force slows the approach (and the separation): d^2 xi / dt^2 = -F_n / m_eff
     const double deceleration = c.m_eff > 0.0 ? c.normal_force / c.m_eff : 0.0;
+    const ForceShape shape = force_shape(c);
     if (fresh) {
       o.order = opened_++;
       o.event.particle = key.first;
@@ -90,7 +91,7 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
       const double before = approach_before(sim, c);
       o.event.impact_speed = looks_ > 1 && before > 0.0
                                  ? before
-                                 : c.overlap_rate + speed_lost_since_touch(force_shape(c), since);
+                                 : c.overlap_rate + speed_lost_since_touch(shape, since);
     }
     o.event.peak_normal_force = std::max(o.event.peak_normal_force, c.normal_force);
     o.event.peak_overlap = std::max(o.event.peak_overlap, c.overlap);
@@ -99,7 +100,6 @@ std::vector<ContactEvent> ContactEventLog::observe(const Simulation& sim) {
     o.last_overlap = c.overlap;
     o.last_rate = c.overlap_rate;
     o.last_deceleration = deceleration;
-    const ForceShape shape = force_shape(c);
     o.last_elastic = shape.elastic;
     o.last_exponent = shape.exponent;
     o.seen = looks_;

@@ -37,7 +37,7 @@ std::string normal_damping(const PairParameters& p, const SimulationConfig& c, d
   }
   if (p.hertz_damping_scale == 0.0) return fmt::format("A = {:.6g} s", p.hertz_damping);
   const double rho = hertz_rho(p.effective_young, r_eff);
-  const double A = p.hertz_damping + p.hertz_damping_scale * std::pow(m_eff / rho, 0.4);
+  const double A = HertzViscoelastic::damping(p, m_eff, rho);
   return fmt::format("A = {:.6g} s for {} (per contact: A = {:.6g} + {:.6g} (m_eff / rho)^(2/5), "
                      "reaching e at {:.6g} m/s)",
                      A, who, p.hertz_damping, p.hertz_damping_scale, c.impact_speed);

@@ -58,7 +58,7 @@ double lowest_hertz_restitution(const BuiltScenario& b, double m_min, double r_m
     const PairParameters p = mix(b.world.materials[m.a], b.world.materials[m.b], v);
     const double m_eff = m.wall ? m_min : 0.5 * m_min, r_eff = m.wall ? r_min : 0.5 * r_min;
     const double rho = hertz_rho(p.effective_young, r_eff);
-    const double A = p.hertz_damping + p.hertz_damping_scale * std::pow(m_eff / rho, 0.4);
+    const double A = HertzViscoelastic::damping(p, m_eff, rho);
     lowest = std::min(lowest, hertz_restitution(A, m_eff, rho, v));
   }
   return lowest;

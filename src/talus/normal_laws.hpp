@@ -81,9 +81,15 @@ struct HertzViscoelastic {
   template <class P, class G> static auto force(const P& p, const G& g) {
     const auto rho = 4.0 / 3.0 * p.effective_young * square_root(g.r_eff);
     const auto s = square_root(g.overlap);
-    auto A = p.hertz_damping;
-    if (!all_zero(p.hertz_damping_scale)) A = A + p.hertz_damping_scale * power(g.m_eff / rho, 0.4);
+    const auto A = damping(p, g.m_eff, rho);
     return not_below_zero(rho * s * (g.overlap + 1.5 * A * g.overlap_rate()));
+  }
+  /// A, s, of a contact of reduced mass m_eff and rho = 4/3 E* sqrt(R*): the pair's constant
+  /// part plus the part derived from the restitution, c (m_eff / rho)^(2/5).
+  template <class P, class R> static R damping(const P& p, R m_eff, R rho) {
+    R A = p.hertz_damping;
+    if (!all_zero(p.hertz_damping_scale)) A = A + p.hertz_damping_scale * power(m_eff / rho, 0.4);
+    return A;
   }
   /// Tangent stiffness dF/dxi = 2 E* sqrt(R* xi), used to scale a linear tangential spring.
   template <class P, class G> static auto stiffness(const P& p, const G& g) {

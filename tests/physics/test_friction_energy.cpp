@@ -34,13 +34,17 @@ struct Impact {
   LeverArm arm = LeverArm::contact_point;
 };
 
+// A rigid floor of the grain's own material.
+Material floor_of(const Material& grain) {
+  Material wall = grain;
+  wall.name = "floor";
+  wall.rigid = true;
+  return wall;
+}
+
 // The grain's collision time against the rigid floor at its normal speed.
 double collision_time(const Impact& c, double mass) {
-  const PairParameters p = [&] {
-    Material wall = c.grain;
-    wall.rigid = true;
-    return mix(c.grain, wall, std::abs(c.velocity.y));
-  }();
+  const PairParameters p = mix(c.grain, floor_of(c.grain), std::abs(c.velocity.y));
   return with_normal_law(c.normal, [&]<class N>() {
     return N::collision_time(p, mass, c.radius, std::abs(c.velocity.y));
   });
@@ -50,10 +54,7 @@ double collision_time(const Impact& c, double mass) {
 // gravity: the grain's force is the floor's contact force alone.
 Simulation impact(const Impact& c) {
   World w;
-  Material wall = c.grain;
-  wall.name = "floor";
-  wall.rigid = true;
-  w.materials = {c.grain, wall};
+  w.materials = {c.grain, floor_of(c.grain)};
   w.add_particle({.position = {0.0, c.radius * 1.0001},
                   .radius = c.radius,
                   .shape = c.shape,
@@ -396,14 +397,7 @@ TEST(FrictionEnergy, ADashpotFromTheRestitutionDampsAStickingImpactAsTheClosedFo
   const double u0 = slip(s, c.arm);
   ASSERT_TRUE(watch(s, c.arm).separated);
   // normal: eta_n from the restitution, as mixed
-  const PairParameters p = mix(
-      m,
-      [&] {
-        Material wall = m;
-        wall.rigid = true;
-        return wall;
-      }(),
-      0.1);
+  const PairParameters p = mix(m, floor_of(m), 0.1);
   const double eta_n = p.normal_dashpot(mass);
   const double beta = eta_n / (2.0 * mass);
   const double omega = std::sqrt(m.normal_stiffness / mass - beta * beta);
