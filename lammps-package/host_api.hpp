@@ -10,7 +10,11 @@
 #include "error.h"
 #include "force.h"
 #include "lammps.h"
+#include "pair.h"
+#include "talus/law_table.hpp"
 #ifndef TALUS_HOST_LIGGGHTS
+#include "fix_contact_history.h"
+#include "modify.h"
 #include "utils.h"
 #endif
 
@@ -54,6 +58,94 @@ inline void read_restart_items(LAMMPS_NS::LAMMPS* lmp, void* to, std::size_t siz
   LAMMPS_NS::utils::sfread(__FILE__, __LINE__, to, size, count, file, nullptr, lmp->error);
 #endif
 }
+
+#ifdef TALUS_HOST_LIGGGHTS
+/// LIGGGHTS keeps no spring per contact for this pair style (its own history lives in its
+/// granular framework): a law with a spring is refused there, so this stand-in for
+/// fix granthesis/history is never made and its calls are never reached.
+class FixContactHistory {
+public:
+  void begin_pass() {}
+  void end_pass(int) {}
+  double& spring(int, LAMMPS_NS::tagint) { return unused_; }
+  double peek(int, LAMMPS_NS::tagint) const { return 0.0; }
+
+private:
+  double unused_ = 0.0;
+};
+inline constexpr bool host_keeps_springs = false;
+#else
+inline constexpr bool host_keeps_springs = true;
+#endif
+
+/// The tangential laws the host can run: every one, or in LIGGGHTS those without a spring.
+inline std::string host_tangential_law_names() {
+  return host_keeps_springs ? law_names<TangentialLaw>() : history_free_tangential_names();
+}
+
+/// LAMMPS' Pair with the members whose form differs between the hosts: the restart readers'
+/// signatures, the start of the energy and virial tally, the reach, and the springs' fix.
+class HostPair : public LAMMPS_NS::Pair {
+public:
+  explicit HostPair(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
+#ifndef TALUS_HOST_LIGGGHTS
+    finitecutflag = 1; // LIGGGHTS' neighbour lists add the skin to init_one's reach anyway
+#endif
+  }
+#ifdef TALUS_HOST_LIGGGHTS
+  void read_restart(FILE* file, int, int) override {
+    read_coefficients(file);
+  }
+  void read_restart_settings(FILE* file, int, int) override {
+    read_settings(file);
+  }
+#else
+  void read_restart(FILE* file) override {
+    read_coefficients(file);
+  }
+  void read_restart_settings(FILE* file) override {
+    read_settings(file);
+  }
+#endif
+
+protected:
+  virtual void read_settings(FILE* file) = 0;     ///< the style's settings, from a restart file
+  virtual void read_coefficients(FILE* file) = 0; ///< its coefficients, from a restart file
+
+  /// The start of a force pass: the energy and virial tallies this pass asks for.
+  void start_tally(int eflag, int vflag) {
+#ifdef TALUS_HOST_LIGGGHTS
+    if (eflag || vflag)
+      ev_setup(eflag, vflag);
+    else
+      evflag = vflag_fdotr = 0;
+#else
+    ev_init(eflag, vflag);
+#endif
+  }
+
+  /// The fix `id` that keeps the springs (slots per atom), found or made; in a host that keeps
+  /// none, the run stops (`style` names the asker).
+  FixContactHistory* springs_fix(const std::string& id, int slots, const std::string& style) {
+#ifdef TALUS_HOST_LIGGGHTS
+    (void)id;
+    (void)slots;
+    fail(error, style, "a law with a contact history is not available in LIGGGHTS", __FILE__,
+         __LINE__);
+#else
+    return FixContactHistory::find_or_make(lmp, id, slots, style);
+#endif
+  }
+
+  /// Deletes the springs' fix `id`, if it is still there.
+  void remove_springs_fix(const std::string& id) {
+#ifndef TALUS_HOST_LIGGGHTS
+    if (modify->find_fix(id.c_str()) >= 0) modify->delete_fix(id.c_str());
+#else
+    (void)id;
+#endif
+  }
+};
 
 /// Writes a fix's global state into a restart file, as the host reads it back for the fix's
 /// restart(): the size in bytes, then the values. Call on rank 0 only.

@@ -12,10 +12,6 @@
 #include "error.h"
 #include "force.h"
 #include "host_api.hpp"
-#ifndef TALUS_HOST_LIGGGHTS
-#include "fix_contact_history.h"
-#include "modify.h"
-#endif
 #include "memory.h"
 #include "neigh_list.h"
 #include "pair_coefficients.hpp"
@@ -33,22 +29,17 @@ constexpr const char* history_fix_id = "GRANTHESIS_HISTORY";
 
 } // namespace
 
-PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : Pair(instance) {
+PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : HostPair(instance) {
   single_enable = 1;
   single_extra = 6;
   svector = svector_storage_;
   restartinfo = 1;
-#ifndef TALUS_HOST_LIGGGHTS
-  finitecutflag = 1; // LIGGGHTS' neighbour lists add the skin to init_one's reach anyway
-#endif
   no_virial_fdotr_compute = 1;
 }
 
 PairGranthesis::~PairGranthesis() {
   svector = nullptr; // ours, not allocated by Pair
-#ifndef TALUS_HOST_LIGGGHTS
-  if (history_ && modify->find_fix(history_fix_id) >= 0) modify->delete_fix(history_fix_id);
-#endif
+  if (history_) remove_springs_fix(history_fix_id);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -78,11 +69,7 @@ const PairParameters& PairGranthesis::parameters(int i, int j) const {
 
 // pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]
 void PairGranthesis::settings(int narg, char** arg) {
-#ifdef TALUS_HOST_LIGGGHTS
-  const std::string tangential_names = history_free_tangential_names();
-#else
-  const std::string tangential_names = law_names<TangentialLaw>();
-#endif
+  const std::string tangential_names = host_tangential_law_names();
   const std::string usage =
       "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]; "
       "NORMAL: " +
@@ -97,13 +84,11 @@ void PairGranthesis::settings(int narg, char** arg) {
   } catch (const InvalidArgument& e) {
     fail(std::string(e.what()) + " (" + usage + ")");
   }
-#ifdef TALUS_HOST_LIGGGHTS
-  if (keeps_history(tangential_))
+  if (!host_keeps_springs && keeps_history(tangential_))
     fail("tangential law '" + std::string(arg[1]) +
          "' keeps a contact history, which this pair style stores in LAMMPS only; allowed in "
          "LIGGGHTS: " +
-         history_free_tangential_names());
-#endif
+         host_tangential_law_names());
   impact_speed_ = 1.0;
   history_slots_ = 16;
   for (int k = 2; k < narg; k += 2) {
@@ -181,15 +166,11 @@ void PairGranthesis::init_style() {
 // contact with a ghost atom itself (newton_pair off) and keeps the spring of its own atom, so
 // that no spring needs to be sent back to the rank that owns the ghost.
 void PairGranthesis::init_history() {
-#ifdef TALUS_HOST_LIGGGHTS
-  fail("a law with a contact history is not available in LIGGGHTS");
-#else
-  if (force->newton_pair)
+  if (host_keeps_springs && force->newton_pair)
     fail("tangential law '" + std::string(name_of(tangential_)) +
          "' keeps a spring per contact, which needs newton_pair off (newton off, or newton on "
          "off), so that each rank computes its own atoms' contacts");
-  history_ = FixContactHistory::find_or_make(lmp, history_fix_id, history_slots_, style_name);
-#endif
+  history_ = springs_fix(history_fix_id, history_slots_, style_name);
 }
 
 double PairGranthesis::init_one(int i, int j) {
@@ -209,14 +190,7 @@ void PairGranthesis::compute(int eflag, int vflag) {
 }
 
 template <class N, class T> void PairGranthesis::compute_with(int eflag, int vflag) {
-#ifdef TALUS_HOST_LIGGGHTS
-  if (eflag || vflag)
-    ev_setup(eflag, vflag);
-  else
-    evflag = vflag_fdotr = 0;
-#else
-  ev_init(eflag, vflag);
-#endif
+  start_tally(eflag, vflag);
   double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
@@ -232,9 +206,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
   // in the setup before a run the forces are computed again at the same state: the springs
   // keep their values (they advance once per step)
   [[maybe_unused]] const bool advance = update->setupflag == 0;
-#ifndef TALUS_HOST_LIGGGHTS
   if constexpr (T::has_history) history_->begin_pass();
-#endif
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int* neighbours = list->firstneigh[i];
@@ -251,8 +223,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
           dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0], v[i][1],
           v[j][0], v[j][1], omega[i][2], omega[j][2], N::uses_r_eff || T::uses_r_eff);
       const PairParameters& p = parameters(type[i], type[j]);
-      double history = 0.0; // the spring: 0 for a law without one
-#ifndef TALUS_HOST_LIGGGHTS
+      double history = 0.0;     // the spring: 0 for a law without one
       double* kept = nullptr;   // i's spring
       double* mirror = nullptr; // the same contact's spring kept by j, when j is this rank's
       if constexpr (T::has_history) {
@@ -260,15 +231,12 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
         if (j < nlocal) mirror = &history_->spring(j, tag[i]);
         history = *kept;
       }
-#endif
       const ContactForce c = contact_force<N, T>(p, g, history, dt);
-#ifndef TALUS_HOST_LIGGGHTS
       if constexpr (T::has_history)
         if (advance) {
           *kept = history;
           if (mirror) *mirror = history;
         }
-#endif
       f[i][0] += c.force_x;
       f[i][1] += c.force_y;
       torque[i][2] += c.torque_i;
@@ -283,9 +251,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
                      c.force_y, 0.0, dx, dy, dz);
     }
   }
-#ifndef TALUS_HOST_LIGGGHTS
   if constexpr (T::has_history) history_->end_pass(nlocal);
-#endif
 }
 
 void PairGranthesis::out_of_plane(int i, int j, double dz) const {
@@ -312,9 +278,7 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
       v[i][0], v[i][1], v[j][0], v[j][1], atom->omega[i][2], atom->omega[j][2]);
   const PairParameters& p = parameters(itype, jtype);
   double history = 0.0; // the spring as it stands (single changes nothing)
-#ifndef TALUS_HOST_LIGGGHTS
   if (history_) history = history_->peek(i, atom->tag[j]);
-#endif
   return with_contact_law(normal_, tangential_, [&]<class N, class T>() {
     const ContactForce c = contact_force<N, T>(p, g, history, update->dt);
     fforce = c.normal_force / std::sqrt(rsq);
@@ -393,21 +357,5 @@ void PairGranthesis::read_coefficients(FILE* file) {
       }
     }
 }
-
-#ifdef TALUS_HOST_LIGGGHTS
-void PairGranthesis::read_restart_settings(FILE* file, const int, const int) {
-  read_settings(file);
-}
-void PairGranthesis::read_restart(FILE* file, const int, const int) {
-  read_coefficients(file);
-}
-#else
-void PairGranthesis::read_restart_settings(FILE* file) {
-  read_settings(file);
-}
-void PairGranthesis::read_restart(FILE* file) {
-  read_coefficients(file);
-}
-#endif
 
 } // namespace talus::lammps

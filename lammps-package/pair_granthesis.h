@@ -14,16 +14,14 @@ PairStyle(granthesis, talus::lammps::PairGranthesis);
 #include <string>
 #include <vector>
 
-#include "pair.h"
+#include "host_api.hpp"
 #include "talus/law_table.hpp"
 #include "talus/material.hpp"
 #include "talus/pair_parameters.hpp"
 
 namespace talus::lammps {
 
-class FixContactHistory;
-
-class PairGranthesis : public LAMMPS_NS::Pair {
+class PairGranthesis : public HostPair {
 public:
   explicit PairGranthesis(LAMMPS_NS::LAMMPS* instance);
   ~PairGranthesis() override;
@@ -36,36 +34,16 @@ public:
   double single(int i, int j, int itype, int jtype, double rsq, double factor_coul,
                 double factor_lj, double& fforce) override;
   void write_restart(FILE* file) override;
-#ifdef TALUS_HOST_LIGGGHTS
-  void read_restart(FILE* file, int major, int minor) override;
-#else
-  void read_restart(FILE* file) override;
-#endif
   void write_restart_settings(FILE* file) override;
-#ifdef TALUS_HOST_LIGGGHTS
-  void read_restart_settings(FILE* file, int major, int minor) override;
-#else
-  void read_restart_settings(FILE* file) override;
-#endif
 
   /// The pair parameters of types i and j (1-based), as mixed or given.
   const PairParameters& parameters(int i, int j) const;
-  NormalLaw normal_law() const {
-    return normal_;
-  }
-  TangentialLaw tangential_law() const {
-    return tangential_;
-  }
-  double impact_speed() const {
-    return impact_speed_;
-  }
+  NormalLaw normal_law() const { return normal_; }
+  TangentialLaw tangential_law() const { return tangential_; }
+  double impact_speed() const { return impact_speed_; }
   /// The material pair_coeff I I gave type i (1-based).
-  const Material& material(int i) const {
-    return material_[static_cast<std::size_t>(i)];
-  }
-  int history_slots() const {
-    return history_slots_;
-  }
+  const Material& material(int i) const { return material_[static_cast<std::size_t>(i)]; }
+  int history_slots() const { return history_slots_; }
 
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
@@ -79,8 +57,8 @@ private:
   [[noreturn]] void fail(const std::string& message) const;
   /// fail(), for atoms i and j touching with dz != 0: out of line, off the pair loop's path.
   [[noreturn, gnu::cold, gnu::noinline]] void out_of_plane(int i, int j, double dz) const;
-  void read_settings(FILE* file);     ///< the laws, from a restart file
-  void read_coefficients(FILE* file); ///< the laws and the coefficients, from a restart file
+  void read_settings(FILE* file) override;     ///< the laws, from a restart file
+  void read_coefficients(FILE* file) override; ///< the laws and the coefficients
 
   NormalLaw normal_ = law_id<HertzViscoelastic>;
   TangentialLaw tangential_ = law_id<ViscousCoulomb>;
