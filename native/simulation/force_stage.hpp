@@ -76,6 +76,12 @@ public:
   /// Bytes of everything else the stage holds: deferred slots, wall forces, the schedule.
   std::size_t footprint_bytes() const;
 
+  /// compute for the laws N and T (force_stage_laws.hpp): instantiated once per law pair, each
+  /// in a translation unit of its own.
+  template <class N, class T>
+  PassReport compute_with(World& world, NeighbourList& list, const PairTable& pairs, Finish finish,
+                          bool refresh, int threads, const StepFeatures& features);
+
 private:
   template <class N, class T, class S, class Done>
   PassReport run(World& world, NeighbourList& list, const PairTable& pairs, bool refresh,

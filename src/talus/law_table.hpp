@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -22,6 +23,8 @@ namespace talus {
 
 template <class... Laws> struct LawList {
   static constexpr std::size_t size = sizeof...(Laws);
+  /// The law at position I.
+  template <std::size_t I> using at = std::tuple_element_t<I, std::tuple<Laws...>>;
   static constexpr std::array<std::string_view, size> names{Laws::name...};
 };
 
