@@ -14,6 +14,7 @@
 #include "error.h"
 #include "host_api.hpp"
 #include "pair_coefficients.hpp"
+#include "talus/frost_heave.hpp"
 #include "update.h"
 #include "utils.h"
 
@@ -155,7 +156,8 @@ void FixFrostHeave::end_of_step() {
 void FixFrostHeave::heave() {
   const int up = domain->dimension == 2 ? 1 : 2;
   for (int i = 0; i < atom->nlocal; ++i)
-    if (atom->mask[i] & groupbit) atom->x[i][up] = table_ + (atom->x[i][up] - table_) * factor_;
+    if (atom->mask[i] & groupbit)
+      atom->x[i][up] = talus::heaved_height(atom->x[i][up], table_, factor_);
 }
 
 double FixFrostHeave::compute_scalar() {

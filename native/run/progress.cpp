@@ -1,4 +1,4 @@
-#include "cli/run_progress.hpp"
+#include "run/progress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "simulation/simulation.hpp"
 
-namespace talus::cli {
+namespace talus::run {
 
 void report_opening(const Simulation& sim, bool quiet) {
   if (quiet) return;
@@ -66,4 +66,4 @@ std::string RunProgress::time_text(double t) const {
   return fmt::format("{:.{}f}", t, decimals);
 }
 
-} // namespace talus::cli
+} // namespace talus::run

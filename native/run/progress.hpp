@@ -9,7 +9,7 @@ namespace talus {
 class Simulation;
 }
 
-namespace talus::cli {
+namespace talus::run {
 
 /// The run's opening lines (unless `quiet`): the step specialised to the scene (what it leaves
 /// out), and the threads taken when fewer than asked.
@@ -39,4 +39,4 @@ private:
   std::chrono::steady_clock::time_point last_print_{};
 };
 
-} // namespace talus::cli
+} // namespace talus::run

@@ -1,4 +1,4 @@
-#include "cli/run_records.hpp"
+#include "run/records.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace talus::cli {
+namespace talus::run {
 
 namespace {
 
@@ -155,4 +155,4 @@ void cut_back_outputs(const fs::path& dir, const std::map<std::string, std::uint
   keep(e);
 }
 
-} // namespace talus::cli
+} // namespace talus::run

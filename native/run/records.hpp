@@ -1,7 +1,7 @@
 #pragma once
 // What a run writes into its folder, row by row and file by file: thermo.csv's columns,
-// track.csv's rows, the VTK snapshots and their collections, run.json. The run loop
-// (run_loop.cpp) decides when.
+// track.csv's rows, the VTK snapshots and their collections, run.json. The run's observers
+// (run/observer.hpp) decide when.
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "analysis/observables.hpp"
-#include "cli/run_loop.hpp"
+#include "run/run_book.hpp"
+#include "scenario/scenario.hpp"
 
-namespace talus::cli {
+namespace talus::run {
 
 /// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger).
 std::string thermo_header(const RunBook& book, bool ledger);
@@ -44,4 +45,4 @@ void cut_back_outputs(const std::filesystem::path& dir,
                       const std::map<std::string, std::uint64_t>& file_bytes,
                       std::uint64_t snapshots, std::error_code& ec);
 
-} // namespace talus::cli
+} // namespace talus::run

@@ -2,9 +2,9 @@
 // item, numbers at full precision so a resume continues exactly.
 #include <sstream>
 
-#include "cli/run_loop.hpp"
+#include "run/run_book.hpp"
 
-namespace talus::cli {
+namespace talus::run {
 
 namespace {
 
@@ -23,6 +23,17 @@ std::vector<double> read_numbers(std::istream& in) {
 }
 
 } // namespace
+
+RunBook RunBook::of(const BuiltScenario& built) {
+  RunBook book;
+  book.tracked = built.tracked;
+  book.groups = built.groups;
+  book.fill = built.fill;
+  book.bounds = built.bounds;
+  book.settle_time = built.settle_time;
+  book.collision_time = built.collision_time;
+  return book;
+}
 
 std::string RunBook::encode() const {
   std::ostringstream o;
@@ -102,4 +113,4 @@ RunBook RunBook::decode(const std::string& text) {
   return b;
 }
 
-} // namespace talus::cli
+} // namespace talus::run

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "cli/run_loop.hpp"
+#include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "physics/reference_values.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/run_loop.hpp"
+#include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"

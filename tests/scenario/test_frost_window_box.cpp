@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "cli/analyses.hpp"
-#include "cli/run_loop.hpp"
+#include "cli/analyze/analyses.hpp"
+#include "cli/run/run_loop.hpp"
 #include "post/frost_cycles.hpp"
 #include "scenario/build.hpp"
 #include "support/builtin_scenario.hpp"

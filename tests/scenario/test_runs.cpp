@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "cli/run_loop.hpp"
+#include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/thesis_format.hpp"

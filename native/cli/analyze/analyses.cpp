@@ -1,5 +1,5 @@
 // The run folder the analyses share, the chart helper, and the thermo and forces analyses.
-#include "cli/analyses.hpp"
+#include "cli/analyze/analyses.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -7,7 +7,7 @@
 #include <fmt/core.h>
 
 #include "analysis/force_distribution.hpp"
-#include "cli/pictures.hpp"
+#include "cli/pictures/pictures.hpp"
 #include "io/checkpoint.hpp"
 #include "io/vtp_reader.hpp"
 #include "scenario/load.hpp"

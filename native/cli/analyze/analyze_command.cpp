@@ -8,10 +8,10 @@
 
 #include <fmt/core.h>
 
-#include "cli/analyses.hpp"
-#include "cli/analyze_sweep.hpp"
+#include "cli/analyze/analyses.hpp"
+#include "cli/sweep/analyze_sweep.hpp"
 #include "cli/commands.hpp"
-#include "cli/sweep.hpp"
+#include "cli/sweep/sweep.hpp"
 #include "scenario/geometry.hpp"
 #include "scenario/load.hpp"
 #include "talus/error.hpp"

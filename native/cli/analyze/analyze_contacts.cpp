@@ -8,7 +8,7 @@
 
 #include <fmt/core.h>
 
-#include "cli/analyses.hpp"
+#include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "talus/error.hpp"

@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "cli/analyses.hpp"
+#include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "io/track_csv.hpp"
 #include "post/discharge.hpp"

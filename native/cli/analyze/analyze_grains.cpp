@@ -5,7 +5,7 @@
 
 #include <fmt/core.h>
 
-#include "cli/analyses.hpp"
+#include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "post/frost_cycles.hpp"
 #include "post/segregation.hpp"

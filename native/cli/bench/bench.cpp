@@ -13,7 +13,7 @@
 #include <fmt/core.h>
 
 #include "analysis/observables.hpp"
-#include "cli/bench_system.hpp"
+#include "cli/bench/bench_system.hpp"
 #include "cli/commands.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/dense2d.hpp"

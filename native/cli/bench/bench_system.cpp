@@ -1,4 +1,4 @@
-#include "cli/bench_system.hpp"
+#include "cli/bench/bench_system.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -10,7 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "analysis/observables.hpp"
-#include "cli/bench_system.hpp"
+#include "cli/bench/bench_system.hpp"
 #include "talus/error.hpp"
 
 namespace talus::cli {

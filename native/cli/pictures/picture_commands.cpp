@@ -5,7 +5,7 @@
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
-#include "cli/pictures.hpp"
+#include "cli/pictures/pictures.hpp"
 
 namespace fs = std::filesystem;
 

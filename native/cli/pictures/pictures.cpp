@@ -1,4 +1,4 @@
-#include "cli/pictures.hpp"
+#include "cli/pictures/pictures.hpp"
 
 #include <algorithm>
 #include <cstdlib>

@@ -4,7 +4,7 @@
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
-#include "cli/scenario_source.hpp"
+#include "cli/run/scenario_source.hpp"
 #include "io/lammps_export.hpp"
 #include "scenario/build.hpp"
 #include "scenario/load.hpp"

@@ -8,9 +8,9 @@
 
 #include "cli/builtin_scenarios.hpp"
 #include "cli/commands.hpp"
-#include "cli/run_loop.hpp"
-#include "cli/scenario_source.hpp"
-#include "cli/sweep.hpp"
+#include "cli/run/run_loop.hpp"
+#include "cli/run/scenario_source.hpp"
+#include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/load.hpp"

@@ -1,4 +1,4 @@
-#include "cli/run_folder.hpp"
+#include "cli/run/run_folder.hpp"
 
 #include <cerrno>
 #include <cstring>

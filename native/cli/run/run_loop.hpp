@@ -1,36 +1,13 @@
 #pragma once
-// A run of a scenario with its run folder: the observers, checkpoints, progress and signals
-// that `talus run` and `talus resume` share.
-#include <map>
+// `talus run` and `talus resume`: a run (run/run.hpp) in a run folder made and locked here,
+// with the signals that stop it at a checkpoint.
 #include <string>
-#include <vector>
 
-#include "cli/run_folder.hpp"
+#include "cli/run/run_folder.hpp"
 #include "scenario/build.hpp"
 #include "scenario/scenario.hpp"
 
 namespace talus::cli {
-
-/// The run's own bookkeeping, saved inside every checkpoint.
-struct RunBook {
-  std::map<std::string, std::uint64_t> file_bytes; ///< output files' sizes at the checkpoint
-  std::uint64_t snapshots = 0;                     ///< snapshots written
-  std::uint64_t freezes = 0;                       ///< frost: freezes done
-  double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
-  std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
-  std::vector<double> contact_state; ///< open contacts (ContactEventLog::save), output.contacts
-  std::vector<double> ledger_state;  ///< EnergyLedger::save, output.energy_ledger
-  double wall_seconds = 0.0;         ///< wall time spent so far
-  std::string ended; ///< why the run ended ("duration", "cycles"); empty while it goes on
-  double settle_time = 0.0;
-  double collision_time = 0.0;
-  std::vector<std::uint32_t> tracked;
-  std::map<std::string, DriverTargets> groups;
-  Rect fill;
-  Rect bounds;
-  std::string encode() const;
-  static RunBook decode(const std::string& text);
-};
 
 struct RunOptions {
   int threads = -1;      ///< -1: as the scenario says

@@ -1,4 +1,4 @@
-#include "cli/scenario_source.hpp"
+#include "cli/run/scenario_source.hpp"
 
 #include <filesystem>
 

@@ -8,9 +8,9 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/analyses.hpp"
-#include "cli/analyze_sweep.hpp"
-#include "cli/sweep.hpp"
+#include "cli/analyze/analyses.hpp"
+#include "cli/sweep/analyze_sweep.hpp"
+#include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "post/beverloo.hpp"
 #include "talus/error.hpp"

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "cli/analyses.hpp"
+#include "cli/analyze/analyses.hpp"
 
 namespace talus::cli {
 

@@ -1,4 +1,4 @@
-#include "cli/sweep.hpp"
+#include "cli/sweep/sweep.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/analyses.hpp"
-#include "cli/scenario_source.hpp"
+#include "cli/analyze/analyses.hpp"
+#include "cli/run/scenario_source.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/geometry.hpp"
 #include "scenario/load.hpp"

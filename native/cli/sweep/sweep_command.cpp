@@ -4,8 +4,8 @@
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
-#include "cli/scenario_source.hpp"
-#include "cli/sweep.hpp"
+#include "cli/run/scenario_source.hpp"
+#include "cli/sweep/sweep.hpp"
 
 namespace talus::cli {
 

@@ -16,8 +16,8 @@
 
 #include <fmt/core.h>
 
-#include "cli/run_folder.hpp"
-#include "cli/sweep.hpp"
+#include "cli/run/run_folder.hpp"
+#include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/load.hpp"
 #include "talus/error.hpp"

@@ -1,0 +1,64 @@
+// The observers that write a row now and then: thermo.csv, track.csv and the progress report.
+#include "run/observers.hpp"
+#include "run/records.hpp"
+
+namespace talus::run {
+
+ThermoObserver::ThermoObserver(RunContext& c, LedgerObserver* ledger)
+    : every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)),
+      ledger_(ledger) {}
+
+void ThermoObserver::open(RunContext& c) {
+  out_ = &c.files.open("thermo.csv");
+}
+
+void ThermoObserver::start(RunContext& c) {
+  *out_ << thermo_header(c.book, ledger_ != nullptr);
+  record(c);
+}
+
+void ThermoObserver::finish(RunContext& c) {
+  // the end's state is always recorded, though the interval may not divide the duration
+  if (c.sim.step_count() % every_ != 0) record(c);
+}
+
+void ThermoObserver::record(RunContext& c) {
+  const Energies e = energies(c.sim);
+  std::string row = thermo_columns(c.sim, c.scenario, c.book, e);
+  if (ledger_) row += ledger_->thermo_columns(c, e);
+  *out_ << row << group_force_columns(c.sim, c.book) << "\n";
+  c.last_kinetic = e.kinetic();
+}
+
+TrackObserver::TrackObserver(RunContext& c)
+    : every_(std::max<std::uint64_t>(
+          1, steps_of(c.scenario.output.track_interval, c.sim.config().timestep))) {}
+
+void TrackObserver::open(RunContext& c) {
+  out_ = &c.files.open("track.csv");
+}
+
+void TrackObserver::start(RunContext& c) {
+  *out_ << "time,id,x,y,angle,vx,vy,omega\n";
+  record(c);
+}
+
+void TrackObserver::finish(RunContext& c) {
+  if (c.sim.step_count() % every_ != 0) record(c);
+}
+
+void TrackObserver::record(RunContext& c) {
+  *out_ << track_rows(c.sim, c.book.tracked);
+}
+
+ProgressObserver::ProgressObserver(RunContext& c, RunProgress& progress)
+    : every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)),
+      progress_(progress) {}
+
+void ProgressObserver::look(RunContext& c) {
+  const std::uint64_t k = c.sim.step_count();
+  progress_.report(c.sim.time(), k, c.total_steps, c.stop_step, c.session_wall(), k - c.first_step,
+                   c.last_kinetic);
+}
+
+} // namespace talus::run

@@ -1,0 +1,213 @@
+#include "run/run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/core.h>
+
+#include "render/snapshot_png.hpp"
+#include "run/observers.hpp"
+#include "run/records.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::run {
+
+namespace {
+
+// A count of steps from a time in steps, rounded up; one beyond any run is cut (see steps_of).
+std::uint64_t steps_until(double time, double dt) {
+  return static_cast<std::uint64_t>(std::clamp(std::ceil(time / dt - 1e-9), 0.0, 1e18));
+}
+
+// output.checkpoint_interval: a checkpoint now and then, after the other observers have looked.
+class CheckpointEvent final : public Observer {
+public:
+  CheckpointEvent(RunContext& c, Run& run)
+      : every_(steps_of(c.scenario.output.checkpoint_interval, c.sim.config().timestep)),
+        run_(run) {}
+  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+  void look(RunContext&) override { run_.checkpoint(); }
+
+private:
+  std::uint64_t every_;
+  Run& run_;
+};
+
+} // namespace
+
+Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunControl o, bool fresh)
+    : s_(s), sim_(std::move(sim)), book_(std::move(book)), o_(std::move(o)),
+      files_(std::move(dir), fresh),
+      progress_(o_.quiet, s.simulation.duration, s.output.thermo_interval, sim_.config().timestep),
+      c_{s_, sim_, book_, files_} {
+  const double dt = sim_.config().timestep;
+  c_.quiet = o_.quiet;
+  c_.progress_on_terminal = progress_.on_terminal();
+  c_.total_steps = steps_until(s.simulation.duration, dt);
+  c_.stop_step =
+      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
+  c_.session_wall = [this] { return wall_now() - session_wall_before_; };
+  checkpointed_ = !book_.file_bytes.empty(); // resumed: from a checkpoint
+  checkpointed_snapshots_ = book_.snapshots;
+  observers_ = observers_for(c_, progress_, snapshots_);
+  observers_.push_back(std::make_unique<CheckpointEvent>(c_, *this));
+}
+
+Run::~Run() = default;
+
+RunOutcome Run::go() {
+  session_start_ = std::chrono::steady_clock::now();
+  session_wall_before_ = book_.wall_seconds;
+  try {
+    for (auto& o : observers_) o->open(c_);
+    if (files_.fresh()) start();
+    return steps();
+  } catch (const WriteError& e) {
+    stop_on_write_failure(e);
+  } catch (const InstabilityError&) {
+    write_run_json(book_.wall_seconds, 0, "unstable"); // the last checkpoint stays as it was
+    throw;
+  }
+}
+
+void Run::start() {
+  for (auto& o : observers_) o->start(c_);
+  checkpoint_at(0.0); // a run killed before its first interval continues from here
+}
+
+RunOutcome Run::steps() {
+  c_.first_step = sim_.step_count();
+  // a run killed after its last checkpoint, while drawing its pictures, has its end recorded
+  const bool finished_before = !book_.ended.empty();
+  std::string ended = finished_before ? book_.ended : "duration";
+  if (finished_before && !o_.quiet)
+    fmt::print("the run had ended ({}); completing its pictures and run.json\n", ended);
+  due_.clear();
+  for (const auto& o : observers_) due_.push_back(o->next_look(sim_.step_count()));
+  while (!finished_before && sim_.step_count() < c_.stop_step) {
+    sim_.run(steps_to_next_look());
+    follow_renumbering();
+    look_after_step();
+    if (!c_.end.empty()) {
+      ended = c_.end;
+      break;
+    }
+    if (o_.stop_requested && o_.stop_requested()) {
+      checkpoint_at(wall_now());
+      progress_.finish();
+      write_run_json(wall_now(), sim_.step_count() - c_.first_step, "signal");
+      return RunOutcome::interrupted;
+    }
+  }
+  if (!finished_before) {
+    if (sim_.step_count() < c_.total_steps && ended == "duration") ended = "stop_at";
+    if (ended != "stop_at") finish(ended);
+    checkpoint_at(wall_now());
+  }
+  progress_.finish();
+  if (ended != "stop_at" && s_.output.picture)
+    write_snapshot_png(sim_, (files_.dir() / "final.png").string(), 1200, SnapshotColour::speed);
+  if (ended != "stop_at" && o_.end_pictures) o_.end_pictures(book_);
+  write_run_json(wall_now(), sim_.step_count() - c_.first_step, ended);
+  if (!o_.quiet)
+    fmt::print("{} at t = {} s after {} steps; run folder {}\n",
+               ended == "stop_at" ? "stopped (--stop-at)" : "finished",
+               progress_.time_text(sim_.time()), sim_.step_count(), files_.dir().string());
+  return ended == "stop_at" ? RunOutcome::stopped_at : RunOutcome::completed;
+}
+
+// Steps to the next one after which an observer looks, at most 1000 so that a stop request is
+// answered soon. Simulation::run does the steps in between with one pass over memory less each
+// (the correction of one and the prediction of the next together).
+std::uint64_t Run::steps_to_next_look() const {
+  const std::uint64_t k = sim_.step_count();
+  std::uint64_t next = std::min(c_.stop_step, k + 1000);
+  for (const std::uint64_t d : due_) next = std::min(next, d);
+  // a renumbering the run's own indices follow
+  next = std::min(next, next_multiple(k, sim_.config().sort_interval));
+  return next - k;
+}
+
+void Run::look_after_step() {
+  const std::uint64_t k = sim_.step_count();
+  for (std::size_t i = 0; i < observers_.size(); ++i) {
+    if (due_[i] != k) continue;
+    observers_[i]->look(c_);
+    due_[i] = observers_[i]->next_look(k);
+    if (!c_.end.empty()) return; // an event ended the run: the end's records follow
+  }
+}
+
+// The engine renumbers the particles now and then (simulation.sort_every): the run's own
+// particle indices (tracked grains, wall groups) follow.
+void Run::follow_renumbering() {
+  if (sim_.renumberings() == renumberings_seen_) return;
+  renumberings_seen_ = sim_.renumberings();
+  const std::vector<std::uint32_t>& to = sim_.new_indices();
+  for (std::uint32_t& i : book_.tracked) i = to[i];
+  for (auto& [name, g] : book_.groups)
+    for (std::uint32_t& i : g.particles) i = to[i];
+}
+
+// The end's state is always recorded, though an interval may not divide the duration; the
+// checkpoint that follows says the run ended, so a resume never records it twice.
+void Run::finish(const std::string& why) {
+  book_.ended = why;
+  for (auto& o : observers_) o->finish(c_);
+}
+
+void Run::checkpoint() {
+  checkpoint_at(wall_now());
+}
+
+void Run::checkpoint_at(double wall) {
+  files_.flush();
+  book_.file_bytes = files_.sizes();
+  book_.wall_seconds = wall;
+  for (const auto& o : observers_) o->save(book_);
+  const Checkpoint c{sim_.state(), sim_.config(), book_.encode()};
+  const fs::path latest = files_.dir() / "checkpoint.bin";
+  const fs::path previous = files_.dir() / "checkpoint.prev.bin";
+  if (fs::exists(latest)) fs::rename(latest, previous);
+  write_file_atomically(latest.string(), encode_checkpoint(c));
+  checkpointed_ = true;
+  checkpointed_snapshots_ = book_.snapshots;
+}
+
+// A write failed (a full disk, a file size limit): every output is cut back to what the last
+// checkpoint holds, so the folder reads as the run stopped there and resume continues it.
+void Run::stop_on_write_failure(const WriteError& e) {
+  files_.close();
+  const fs::path& dir = files_.dir();
+  if (!checkpointed_) // nothing to continue from: the command that starts it again
+    throw std::runtime_error(std::string(e.what()) +
+                             " (disk full or a file size limit?) before the run's first "
+                             "checkpoint; make room, then start it again with: talus run " +
+                             (dir / "scenario.toml").string() + " --out " + dir.string());
+  std::error_code ignored;
+  cut_back_outputs(dir, book_.file_bytes, checkpointed_snapshots_, ignored);
+  book_.snapshots = checkpointed_snapshots_;
+  try { // the collections and run.json need a little room too; the checkpoint is what counts
+    snapshots_->cut_back(c_);
+    write_run_json(book_.wall_seconds, 0, "write_error");
+  } catch (const WriteError&) {
+  }
+  throw std::runtime_error(std::string(e.what()) +
+                           " (disk full or a file size limit?); the outputs are cut back to the "
+                           "last checkpoint, which is kept; make room, then: talus resume " +
+                           dir.string());
+}
+
+void Run::write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {
+  write_file_atomically(
+      (files_.dir() / "run.json").string(),
+      run_json(s_, sim_, book_, wall, wall - session_wall_before_, steps_done, ended));
+}
+
+double Run::wall_now() const {
+  return session_wall_before_ +
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - session_start_).count();
+}
+
+} // namespace talus::run

@@ -1,0 +1,80 @@
+#pragma once
+// A run of a scenario into its folder: the engine's steps with the events and observers the
+// scenario asks for (run/observers.hpp) between them, checkpoints, and the end's records. The
+// command line (or any other caller) makes and locks the folder and answers signals.
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/checkpoint.hpp"
+#include "run/observer.hpp"
+#include "run/progress.hpp"
+#include "run/run_book.hpp"
+#include "run/run_files.hpp"
+#include "scenario/scenario.hpp"
+#include "simulation/simulation.hpp"
+
+namespace talus::run {
+
+/// What the caller asks of a run.
+struct RunControl {
+  double stop_at = -1.0; ///< s of simulated time: checkpoint and stop there (-1: run to the end)
+  bool quiet = false;
+  std::function<bool()> stop_requested;             ///< true: checkpoint and stop now
+  std::function<void(const RunBook&)> end_pictures; ///< after the end: the scenario's pictures
+};
+
+/// How a call of Run::go ended.
+enum class RunOutcome { completed, stopped_at, interrupted };
+
+class SnapshotObserver;
+
+class Run {
+public:
+  /// A run of `s` from `sim` with the bookkeeping `book`: a new run's (`fresh`: its outputs
+  /// start empty), or a checkpoint's (they are appended to).
+  Run(const Scenario& s, Simulation sim, RunBook book, std::filesystem::path dir, RunControl o,
+      bool fresh);
+  ~Run();
+  /// Opens the outputs, records a new run's start, and steps to the end, to
+  /// RunControl::stop_at or to a stop request, with a checkpoint there. Throws WriteError with
+  /// the outputs cut back to the last checkpoint, and InstabilityError with run.json saying so.
+  RunOutcome go();
+  const Simulation& simulation() const { return sim_; }
+  /// Writes a checkpoint of the engine's state and the run's book now (the previous one kept).
+  void checkpoint();
+
+private:
+  RunOutcome steps();
+  void start();
+  std::uint64_t steps_to_next_look() const;
+  void look_after_step();
+  void follow_renumbering();
+  void finish(const std::string& why);
+  void checkpoint_at(double wall);
+  [[noreturn]] void stop_on_write_failure(const WriteError& e);
+  void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
+  double wall_now() const;
+
+  const Scenario& s_;
+  Simulation sim_;
+  RunBook book_;
+  RunControl o_;
+  RunFiles files_;
+  RunProgress progress_;
+  RunContext c_;
+  std::vector<std::unique_ptr<Observer>> observers_;
+  std::vector<std::uint64_t> due_; ///< the step each observer looks at next
+  SnapshotObserver* snapshots_ = nullptr;
+  std::uint64_t renumberings_seen_ = 0;
+  bool checkpointed_ = false;                ///< a checkpoint of this run exists
+  std::uint64_t checkpointed_snapshots_ = 0; ///< the snapshots the last checkpoint counts
+  double session_wall_before_ = 0.0;         ///< wall seconds of the sessions before this one
+  std::chrono::steady_clock::time_point session_start_;
+};
+
+} // namespace talus::run
