@@ -42,7 +42,7 @@ std::string pair_coefficient_names() {
 }
 
 Material parse_pair_coefficients(const std::vector<std::string>& words) {
-  Material m = default_material();
+  Material m; // every key at its default
   for (std::size_t w = 0; w < words.size(); w += 2) {
     const std::string& key = words[w];
     if (key == "density")

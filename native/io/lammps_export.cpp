@@ -243,7 +243,10 @@ std::string pair_section(const Scenario& s, const BuiltScenario& b, const Typing
   // a Hertz damping left to be derived is derived by LAMMPS as natively, per contact
   std::string out = fmt::format("pair_style granthesis {} {}{}\n", name_of(s.simulation.normal_law),
                                 name_of(s.simulation.tangential_law),
-                                s.simulation.normal_law == law_id<HertzViscoelastic>
+                                with_normal_law(s.simulation.normal_law,
+                                                []<class N>() {
+                                                  return N::damping_needs_impact_speed;
+                                                })
                                     ? fmt::format(" impact_speed {}", s.simulation.impact_speed)
                                     : std::string());
   for (std::size_t k = 0; k < t.key_of.size(); ++k)

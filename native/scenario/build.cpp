@@ -66,11 +66,12 @@ std::vector<MeetingPair> meeting_pairs(const World& w) {
   return out;
 }
 
-double shortest_collision_time(const Scenario& s, const World& w, double r_min) {
+double shortest_collision_time(const Scenario& s, const World& w, const PairTable& pairs,
+                               double r_min) {
   double shortest = std::numeric_limits<double>::max();
   for (const MeetingPair& m : meeting_pairs(w)) {
     const Material &a = w.materials[m.a], &b = w.materials[m.b];
-    const PairParameters p = mix(a, b, s.simulation.impact_speed);
+    const PairParameters& p = pairs(m.a, m.b);
     // against a wall: the grain's own mass and radius (a segment is flat and immovable)
     const double m_eff = m.wall ? grain_mass(s, a, r_min)
                                 : 0.5 * std::min(grain_mass(s, a, r_min), grain_mass(s, b, r_min));
@@ -89,15 +90,15 @@ namespace {
 // the lightest grain (the bound is then conservative): the normal one (linear k_n, or Hertz'
 // tangent stiffness at the impact speed), or a tangential spring's, which also turns the grains
 // and so oscillates faster than its stiffness alone says: k_t (1 + m r^2 / I) / m_eff.
-double stable_timestep_bound(const Scenario& s, const World& w, const SimulationConfig& c,
-                             double r_min) {
+double stable_timestep_bound(const Scenario& s, const World& w, const PairTable& pairs_of,
+                             const SimulationConfig& c, double r_min) {
   double k_max = 0.0, m_min = std::numeric_limits<double>::max();
   const auto pairs = meeting_pairs(w);
   for (const MeetingPair& m : pairs)
     m_min = std::min(m_min, 0.5 * grain_mass(s, w.materials[m.a], r_min));
   const double turning = 1.0 + 1.0 / shape_inertia(s.particles.shape, 1.0, 1.0);
   for (const MeetingPair& m : pairs) {
-    const PairParameters p = mix(w.materials[m.a], w.materials[m.b], s.simulation.impact_speed);
+    const PairParameters& p = pairs_of(m.a, m.b);
     const double m_eff = m.wall ? 2.0 * m_min : m_min;
     ContactGeometry g;
     g.m_eff = m_eff;
@@ -220,7 +221,8 @@ void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStr
 // The simulation's settings, its timestep (the collision time's fraction, or one given within
 // the stability bound) and the stability guard's box: the container and as much again around it.
 void configure(const Scenario& s, double r_min, BuiltScenario& out) {
-  out.collision_time = shortest_collision_time(s, out.world, r_min);
+  out.pairs = PairTable(out.world.materials, s.simulation.impact_speed);
+  out.collision_time = shortest_collision_time(s, out.world, out.pairs, r_min);
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
   c.verlet_velocity = s.simulation.verlet_velocity;
@@ -234,7 +236,7 @@ void configure(const Scenario& s, double r_min, BuiltScenario& out) {
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
   c.timestep = out.collision_time / s.simulation.timestep_factor;
   if (s.simulation.timestep) {
-    const double bound = stable_timestep_bound(s, out.world, c, r_min);
+    const double bound = stable_timestep_bound(s, out.world, out.pairs, c, r_min);
     if (*s.simulation.timestep > bound) {
       std::ostringstream msg;
       msg << "key 'simulation.timestep': " << *s.simulation.timestep

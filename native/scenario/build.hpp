@@ -17,6 +17,7 @@ struct BuiltScenario {
   std::vector<std::uint32_t> tracked;          ///< indices of tracked particles
   Rect fill;                                   ///< the region grains were placed in
   Rect bounds;                                 ///< the container's extent
+  PairTable pairs; ///< the materials' pairs, mixed once: every bound and estimate reads them
   double collision_time = 0.0;                 ///< s, of the stiffest pair
   double settle_time = 0.0;                    ///< s of sedimentation (0 if none)
   bool settled = true;
@@ -40,8 +41,9 @@ struct MeetingPair {
 /// those of the wall particles and segments.
 std::vector<MeetingPair> meeting_pairs(const World& w);
 
-/// Shortest collision time over the pairs that can meet, for grains of the smallest size
-/// (against a wall, the grain's own mass and radius).
-double shortest_collision_time(const Scenario& s, const World& w, double r_min);
+/// Shortest collision time over the pairs of `pairs` (w's materials) that can meet, for grains of
+/// the smallest size (against a wall, the grain's own mass and radius).
+double shortest_collision_time(const Scenario& s, const World& w, const PairTable& pairs,
+                               double r_min);
 
 } // namespace talus

@@ -27,31 +27,16 @@ MeanGrain mean_grain(const Particles& p, std::uint16_t k) {
   return count > 0 ? MeanGrain{s.mass / count, s.radius / count} : MeanGrain{};
 }
 
-std::string normal_damping(const PairParameters& p, const SimulationConfig& c, double m_eff,
-                           double r_eff, const char* who) {
-  if (c.normal_law == law_id<LinearSpringDashpot>) {
-    if (p.damping_sqrt_coeff > 0.0)
-      return fmt::format("eta_n = 2 zeta sqrt(k_n m_eff), zeta = {:.6g}",
-                         p.damping_sqrt_coeff / (2.0 * std::sqrt(p.normal_stiffness)));
-    return fmt::format("eta_n = gamma_n m_eff, gamma_n = {:.6g} 1/s", p.damping_rate);
-  }
-  if (p.hertz_damping_scale == 0.0) return fmt::format("A = {:.6g} s", p.hertz_damping);
-  const double rho = hertz_rho(p.effective_young, r_eff);
-  const double A = HertzViscoelastic::damping(p, m_eff, rho);
-  return fmt::format("A = {:.6g} s for {} (per contact: A = {:.6g} + {:.6g} (m_eff / rho)^(2/5), "
-                     "reaching e at {:.6g} m/s)",
-                     A, who, p.hertz_damping, p.hertz_damping_scale, c.impact_speed);
-}
-
 } // namespace
 
-std::string describe_contact_pairs(const World& w, const SimulationConfig& c) {
+std::string describe_contact_pairs(const World& w, const PairTable& pairs,
+                                   const SimulationConfig& c) {
   std::string out =
       "\n# The contact parameters derived for this run (comments: a rerun derives them "
       "again):\n";
   for (const MeetingPair& m : meeting_pairs(w)) {
     const Material &a = w.materials[m.a], &b = w.materials[m.b];
-    const PairParameters p = mix(a, b, c.impact_speed);
+    const PairParameters& p = pairs(m.a, m.b);
     const MeanGrain ga = mean_grain(w.particles, m.a);
     const MeanGrain gb = m.wall ? ga : mean_grain(w.particles, m.b);
     // against a wall: the grain's own mass and radius
@@ -59,8 +44,13 @@ std::string describe_contact_pairs(const World& w, const SimulationConfig& c) {
     const double r_eff = m.wall ? ga.radius : ga.radius * gb.radius / (ga.radius + gb.radius);
     out += fmt::format("#   {} with {}{}: restitution {:.6g}, {}\n", a.name, b.name,
                        m.wall ? " (wall)" : "", p.restitution,
-                       m_eff > 0.0 ? normal_damping(p, c, m_eff, r_eff,
-                                                    m.wall ? "a mean grain" : "two mean grains")
+                       m_eff > 0.0 ? with_normal_law(c.normal_law,
+                                                     [&]<class N>() {
+                                                       return N::describe_damping(
+                                                           p, m_eff, r_eff, c.impact_speed,
+                                                           m.wall ? "a mean grain"
+                                                                  : "two mean grains");
+                                                     })
                                    : "no grains");
   }
   return out;

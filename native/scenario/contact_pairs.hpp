@@ -11,6 +11,7 @@ namespace talus {
 /// TOML comment lines, one per pair of materials that can meet in w: its restitution and the
 /// normal damping the law uses (for a derived Hertz damping, its value for grains of the mean
 /// size). Comments, so that the file still reruns the same run: the values are derived again.
-std::string describe_contact_pairs(const World& w, const SimulationConfig& c);
+std::string describe_contact_pairs(const World& w, const PairTable& pairs,
+                                   const SimulationConfig& c);
 
 } // namespace talus

@@ -364,11 +364,8 @@ Scenario load_scenario(std::string_view text, const std::string& file,
     r.finish();
   }
   if (s.materials.empty()) {
-    Material m;
+    Material m; // every key at its default
     m.name = "grain";
-    m.normal_stiffness = 1.0e5;
-    m.restitution = 0.5;
-    m.hertz_damping = -1.0;
     s.materials.push_back(m);
   }
   section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });

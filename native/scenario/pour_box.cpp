@@ -59,7 +59,7 @@ PourBox build_pour_box(const PourBoxSpec& spec) {
   // timestep: the lightest pair has the shortest collision time
   const double r_min = spec.mean_radius * (1.0 - spec.radius_spread);
   const double m_min = shape_mass(spec.shape, r_min, grain.density, w.disk_thickness);
-  const PairParameters pp = mix(grain, grain, 1.0); // linear: no speed enters
+  const PairParameters pp = PairTable({grain}, 1.0)(0, 0); // linear: no speed enters
   const double m_eff = 0.5 * m_min;
   out.config.timestep =
       linear_collision_time(pp.normal_stiffness, pp.normal_dashpot(m_eff), m_eff) / 50.0;

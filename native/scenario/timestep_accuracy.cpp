@@ -55,7 +55,7 @@ double lowest_hertz_restitution(const BuiltScenario& b, double m_min, double r_m
   double lowest = 1.0;
   const double v = b.config.impact_speed;
   for (const MeetingPair& m : meeting_pairs(b.world)) {
-    const PairParameters p = mix(b.world.materials[m.a], b.world.materials[m.b], v);
+    const PairParameters& p = b.pairs(m.a, m.b);
     const double m_eff = m.wall ? m_min : 0.5 * m_min, r_eff = m.wall ? r_min : 0.5 * r_min;
     const double rho = hertz_rho(p.effective_young, r_eff);
     const double A = HertzViscoelastic::damping(p, m_eff, rho);
@@ -69,7 +69,7 @@ double lowest_hertz_restitution(const BuiltScenario& b, double m_min, double r_m
 double largest_damping_ratio(const BuiltScenario& b, double m_min) {
   double zeta = 0.0;
   for (const MeetingPair& m : meeting_pairs(b.world)) {
-    const PairParameters p = mix(b.world.materials[m.a], b.world.materials[m.b], 1.0);
+    const PairParameters& p = b.pairs(m.a, m.b);
     const double m_eff = m.wall ? m_min : 0.5 * m_min;
     if (p.normal_stiffness > 0.0)
       zeta =

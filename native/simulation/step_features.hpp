@@ -57,7 +57,7 @@ using GeneralShape = StepShape<false, true, true, true>;
 /// the shapes with gravity only, for the passes that never add the weight.
 template <class T, bool with_gravity = true, class F>
 decltype(auto) with_step_shape(const StepFeatures& features, F&& f) {
-  constexpr bool friction = !std::is_same_v<T, Frictionless>;
+  constexpr bool friction = T::has_friction;
   const bool special = features.friction == friction && features.history == T::has_history &&
                        features.rotation == friction;
   const auto with_material = [&]<bool G>() -> decltype(auto) {

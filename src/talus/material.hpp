@@ -5,22 +5,26 @@
 
 namespace talus {
 
+/// A material. A default-made Material has every key at its default from the key table
+/// (material_keys.hpp), the one place where the defaults and the allowed ranges are written.
 struct Material {
   std::string name = "default";
-  double density = 2650.0;         ///< kg/m^3 (quartz)
-  double young = 1.0e8;            ///< Young's modulus E, Pa (Hertzian law)
-  double poisson = 0.3;            ///< Poisson ratio nu, in [0, 0.5)
-  double restitution = 0.9;        ///< normal restitution e in (0, 1] (linear law)
-  double friction = 0.5;           ///< Coulomb friction coefficient mu >= 0
-  double tangential_damping = 0.0; ///< gamma_t, 1/s: tangential dashpot eta_t = gamma_t m_eff
-  double normal_stiffness = 0.0;   ///< k_n, N/m (linear law; 0 = not given)
-  double tangential_stiffness_ratio = -1.0; ///< k_t / k_n (Cundall-Strack); -1: from poisson
+  double density;                    ///< kg/m^3
+  double young;                      ///< Young's modulus E, Pa (Hertzian law)
+  double poisson;                    ///< Poisson ratio nu, in [0, 0.5)
+  double restitution;                ///< normal restitution e in (0, 1]
+  double friction;                   ///< Coulomb friction coefficient mu >= 0
+  double tangential_damping;         ///< gamma_t, 1/s: eta_t = gamma_t m_eff (-1: Tsuji's)
+  double normal_stiffness;           ///< k_n, N/m (linear law)
+  double tangential_stiffness_ratio; ///< k_t / k_n (Cundall-Strack); -1: from poisson
   /// gamma_n, 1/s: if >= 0 the linear dashpot is eta_n = gamma_n m_eff (the thesis' eq. 2.10 and
-  /// LAMMPS' convention) and `restitution` is ignored by the linear law. Negative: not given.
-  double normal_damping_rate = -1.0;
-  double hertz_damping = 0.0; ///< A, s: dissipative constant of the viscoelastic Hertz law
+  /// LAMMPS' convention) and `restitution` is ignored by the linear law. -1: from restitution.
+  double normal_damping_rate;
+  double hertz_damping; ///< A, s: dissipative constant of the viscoelastic Hertz law (-1: derived)
   /// A wall that does not deform: a contact with it has the other side's stiffness alone.
   bool rigid = false;
+  /// Every key at its default (material_keys.hpp).
+  Material();
 };
 
 /// Effective Young's modulus E* of a pair (Hertz): 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
@@ -37,3 +41,6 @@ inline double effective_shear(const Material& a, const Material& b) {
 }
 
 } // namespace talus
+
+// the key table, and with it the default constructor
+#include "talus/material_keys.hpp"

@@ -1,8 +1,9 @@
 #pragma once
 // The keys that describe a material, with their defaults and allowed ranges: one table for every
 // front end that reads materials (the native scenario loader, LAMMPS' pair_coeff), so that a
-// material means the same in both.
+// material means the same in both. A default-made Material takes these defaults.
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -45,11 +46,22 @@ inline constexpr std::array<MaterialKey, 10> material_keys{{
      ">= 0 s (or -1: from restitution at simulation.impact_speed)", true},
 }};
 
-/// The material with every key at its default.
-inline Material default_material() {
-  Material m;
-  for (const MaterialKey& k : material_keys) m.*k.field = k.fallback;
-  return m;
+inline Material::Material() {
+  for (const MaterialKey& k : material_keys) this->*k.field = k.fallback;
+}
+
+/// "" if every key of m is finite and allowed, else what is wrong: the key, its value and the
+/// allowed values.
+inline std::string material_key_error(const Material& m) {
+  for (const MaterialKey& k : material_keys) {
+    const double x = m.*k.field;
+    if (std::isfinite(x) && allowed_value(k, x)) continue;
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", x);
+    return std::string(k.name) + " = " + value + " is out of range; allowed: " +
+           std::string(k.allowed);
+  }
+  return "";
 }
 
 /// "young 1e8 poisson 0.3 ...": every key but density with its value to 17 digits (read back

@@ -11,6 +11,7 @@
 #include "talus/contact_geometry.hpp"
 #include "talus/material.hpp"
 #include "talus/pair_parameters.hpp"
+#include "talus/words.hpp"
 
 namespace talus {
 
@@ -67,6 +68,17 @@ struct LinearSpringDashpot {
   static void resolve_damping(Material& m) {
     if (m.hertz_damping < 0.0) m.hertz_damping = 0.0;
   }
+  /// Whether a damping derived from the restitution depends on the impact speed.
+  static constexpr bool damping_needs_impact_speed = false;
+  /// The pair's damping in words, for a contact of `who` (m_eff, r_eff), as a run reports it.
+  static std::string describe_damping(const PairParameters& p, double /*m_eff*/,
+                                      double /*r_eff*/, double /*impact_speed*/,
+                                      const char* /*who*/) {
+    if (p.damping_sqrt_coeff > 0.0)
+      return format_words("eta_n = 2 zeta sqrt(k_n m_eff), zeta = %.6g",
+                          p.damping_sqrt_coeff / (2.0 * std::sqrt(p.normal_stiffness)));
+    return format_words("eta_n = gamma_n m_eff, gamma_n = %.6g 1/s", p.damping_rate);
+  }
 };
 
 /// Hertzian viscoelastic (Brilliantov et al. 1996; thesis eq. 2.9):
@@ -119,6 +131,19 @@ struct HertzViscoelastic {
   /// A damping left to be derived (negative) stays so: the pair's A is then derived per contact
   /// from the restitution (mix_hertz_damping).
   static void resolve_damping(Material&) {}
+  /// Whether a damping derived from the restitution depends on the impact speed: it reaches the
+  /// restitution at one speed.
+  static constexpr bool damping_needs_impact_speed = true;
+  /// The pair's damping in words, for a contact of `who` (m_eff, r_eff), as a run reports it.
+  static std::string describe_damping(const PairParameters& p, double m_eff, double r_eff,
+                                      double impact_speed, const char* who) {
+    if (p.hertz_damping_scale == 0.0) return format_words("A = %.6g s", p.hertz_damping);
+    const double A = damping(p, m_eff, hertz_rho(p.effective_young, r_eff));
+    return format_words("A = %.6g s for ", A) + who +
+           format_words(" (per contact: A = %.6g + %.6g (m_eff / rho)^(2/5), reaching e at %.6g "
+                        "m/s)",
+                        p.hertz_damping, p.hertz_damping_scale, impact_speed);
+  }
 };
 
 } // namespace talus

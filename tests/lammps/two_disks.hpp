@@ -81,7 +81,7 @@ inline Simulation native(
 }
 
 inline Material grains() {
-  Material m = default_material();
+  Material m; // every key at its default
   m.young = 5.0e7;
   m.normal_stiffness = 2.0e5;
   m.normal_damping_rate = 40.0;

@@ -8,6 +8,7 @@
 #include "simulation/simulation.hpp"
 #include "talus/closed_forms.hpp"
 #include "talus/error.hpp"
+#include "talus/material_keys.hpp"
 
 namespace talus {
 namespace {
@@ -251,6 +252,31 @@ TEST(Materials, MixingRulesAndValidation) {
     EXPECT_NE(what.find("sand"), std::string::npos);
     EXPECT_NE(what.find("restitution"), std::string::npos);
     EXPECT_NE(what.find("(0, 1]"), std::string::npos);
+  }
+}
+
+// One definition of a material's defaults and ranges: the key table. A default-made Material
+// has every key at the table's default, and validate() refuses, for every key, a value just past
+// its range and a non-finite one, naming the key and the table's allowed values.
+TEST(Materials, DefaultsAndRangesComeFromTheKeyTable) {
+  const Material m;
+  for (const MaterialKey& k : material_keys) {
+    EXPECT_EQ(m.*k.field, k.fallback) << k.name;
+    for (const double past : {k.lowest - (k.lowest == 0.0 ? 1e-9 : 1e-6 * std::abs(k.lowest)),
+                              k.highest * (1.0 + 1e-6), std::nan("")}) {
+      if (k.minus_one_derives && past == -1.0) continue;
+      if (std::isinf(k.highest) && std::isinf(past)) continue; // no upper limit
+      Material bad;
+      bad.*k.field = past;
+      try {
+        validate(bad);
+        ADD_FAILURE() << k.name << " = " << past << " accepted";
+      } catch (const InvalidArgument& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(std::string(k.name)), std::string::npos) << what;
+        EXPECT_NE(what.find(std::string(k.allowed)), std::string::npos) << what;
+      }
+    }
   }
 }
 

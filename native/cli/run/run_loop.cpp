@@ -83,7 +83,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   run::RunBook book = run::RunBook::of(built);
   // the resolved scenario, now with the dampers derived for the built grains
   write_file_atomically((folder.path() / "scenario.toml").string(),
-                        to_toml(s) + describe_contact_pairs(built.world, built.config));
+                        to_toml(s) + describe_contact_pairs(built.world, built.pairs, built.config));
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   run::report_opening(sim, o.quiet);
   return go(s, std::move(sim), std::move(book), folder.path(), o, true);
