@@ -23,6 +23,9 @@ short_of() {
     silo_discharge) echo "--set particles.count=150 --set geometry.width=0.12 --set geometry.height=0.25
                   --set simulation.duration=0.2 --set packing.settle_max_time=0.3" ;;
     silo_shake) echo "--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1" ;;
+    tilted_box) echo "--set particles.count=60 --set simulation.duration=0.2 --set stages.1.duration=0.05
+                  --set stages.2.duration=0.05" ;;
+    silo_gate) echo "--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5" ;;
     *) echo "scripts/state-hashes.sh: no short version of '$1'" >&2; exit 1 ;;
   esac
 }

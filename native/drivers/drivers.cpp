@@ -81,7 +81,7 @@ Vec2 place(const Pose& pose, Vec2 origin) {
 } // namespace
 
 void apply(const Driver& d, double t, Particles& p, Segments& walls) {
-  const Pose pose = pose_at(d.motion, t);
+  const Pose pose = pose_at(d.motion, t - d.start_time);
   for (std::size_t k = 0; k < d.targets.particles.size(); ++k) {
     const auto i = d.targets.particles[k];
     p.position[i] = place(pose, d.particle_origin[k]);

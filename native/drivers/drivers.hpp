@@ -42,19 +42,22 @@ using Motion = std::variant<Vibrate, Translate, Rotate>;
 struct Driver {
   Motion motion;
   DriverTargets targets;
-  // captured at attach: reference positions and angles of the targets at t = 0
+  /// s: when the motion started, the time its origins were captured at (0 for a run's drivers;
+  /// a driver changed during a run starts again from where its targets are then)
+  double start_time = 0.0;
+  // captured at attach: reference positions and angles of the targets at start_time
   std::vector<Vec2> particle_origin;
   std::vector<double> angle_origin;
   std::vector<Vec2> segment_origin; ///< a, b, a, b, ...
 };
 
-/// Checks the targets and records their reference positions (time origin t = 0).
+/// Checks the targets and records their reference positions (the time origin, start_time).
 void attach(Driver& d, const Particles& p, const Segments& walls);
 /// For a driver read back from a checkpoint (attached when it was saved): what does not fit the
 /// particles and walls, in words, or "" (its targets in range, a particle target of kind moved,
 /// an origin for each).
 std::string attached_driver_problem(const Driver& d, const Particles& p, const Segments& walls);
-/// Sets positions and velocities of the targets at time t.
+/// Sets positions and velocities of the targets at time t (t - start_time into the motion).
 void apply(const Driver& d, double t, Particles& p, Segments& walls);
 
 } // namespace talus

@@ -198,9 +198,12 @@ void write_driver(Writer& w, const Driver& d) {
   std::visit([&](const auto& m) { w.pod(m); }, d.motion);
   w.vec(d.targets.particles), w.vec(d.targets.segments);
   w.vec(d.particle_origin), w.vec(d.angle_origin), w.vec(d.segment_origin);
+  w.pod(d.start_time);
 }
 
-Driver read_driver(Reader& r) {
+// Format 9 added the driver's start time (a driver changed during a run); before, every driver
+// started at 0.
+Driver read_driver(Reader& r, std::uint32_t version) {
   Driver d;
   switch (r.pod<std::uint32_t>()) {
   case 0:
@@ -217,6 +220,7 @@ Driver read_driver(Reader& r) {
   }
   r.vec(d.targets.particles), r.vec(d.targets.segments);
   r.vec(d.particle_origin), r.vec(d.angle_origin), r.vec(d.segment_origin);
+  if (version >= 9) d.start_time = r.pod<double>();
   return d;
 }
 
@@ -293,7 +297,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   world.gravity = r.pod<Vec2>();
   world.disk_thickness = r.pod<double>();
   world.drivers.resize(r.count(sizeof(std::uint32_t))); // each at least its type
-  for (Driver& d : world.drivers) d = read_driver(r);
+  for (Driver& d : world.drivers) d = read_driver(r, version);
   NeighbourList& l = c.state.neighbours;
   r.vec(l.row_offset), r.vec(l.neighbour), r.vec(l.image), r.vec(l.history);
   r.vec(l.wall_offset), r.vec(l.wall_segment);

@@ -28,7 +28,7 @@ struct Checkpoint {
 
 /// The format written. 7: the lever arm in the config; 8: FNV-1a's own offset basis in the
 /// checksum (7 had one a digit short). Versions 7 and 8 are read.
-inline constexpr std::uint32_t checkpoint_version = 8;
+inline constexpr std::uint32_t checkpoint_version = 9;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

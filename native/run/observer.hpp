@@ -7,6 +7,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "run/run_book.hpp"
 #include "run/run_files.hpp"
@@ -43,6 +44,9 @@ struct RunContext {
   std::function<double()> session_wall; ///< wall seconds this session has taken so far
   double last_kinetic = 0.0;            ///< J: the kinetic energy at the last thermo row
   std::string end; ///< set by an event that ends the run ("cycles"); empty otherwise
+  /// Changes the run from now on: "key=value" changes as --set takes them, recorded with their
+  /// source (Run::change). The events and observers after the caller look at the changed run.
+  std::function<void(const std::vector<std::string>&, const std::string&)> change;
 };
 
 class Observer {

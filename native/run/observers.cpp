@@ -29,6 +29,7 @@ std::vector<std::unique_ptr<Observer>> observers_for(RunContext& c, RunProgress&
   list.push_back(std::make_unique<ProgressObserver>(c, progress));
   if (c.scenario.frost.model == "uniform") list.push_back(std::make_unique<UniformFreezeEvent>(c));
   if (c.scenario.frost.model == "front") list.push_back(std::make_unique<FreezingFrontEvent>(c));
+  if (!c.scenario.stages.empty()) list.push_back(std::make_unique<StageEvent>(c));
   auto s = std::make_unique<SnapshotObserver>(c);
   snapshots = s.get();
   list.push_back(std::move(s));

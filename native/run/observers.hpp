@@ -149,6 +149,26 @@ private:
   std::ostream* log_ = nullptr;
 };
 
+/// The stages of an experiment ([[stages]]): a stage ends after its duration or, first, when its
+/// condition holds at a thermo row; the next starts with its changes. stages.csv gets a row per
+/// stage as it ends. A last stage ending on its condition ends the run.
+class StageEvent final : public Observer {
+public:
+  explicit StageEvent(RunContext& c);
+  std::uint64_t next_look(std::uint64_t step) const override;
+  void open(RunContext& c) override;
+  void start(RunContext& c) override;
+  void look(RunContext& c) override;
+  void finish(RunContext& c) override;
+
+private:
+  bool condition_holds(const RunContext& c) const;
+  void end_stage(RunContext& c, const char* why);
+  std::uint64_t thermo_every_;
+  std::ostream* log_ = nullptr;
+  const RunContext* c_;
+};
+
 /// The observers and events the scenario asks for, in the order they look. `progress` is the
 /// run's progress report; the snapshots' observer, if any, is also returned in `snapshots`.
 std::vector<std::unique_ptr<Observer>> observers_for(RunContext& c, RunProgress& progress,

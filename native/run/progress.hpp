@@ -24,6 +24,8 @@ public:
   /// seconds and `steps_done` steps of this session; `kinetic` (J) for the line's E_kin.
   void report(double time, std::uint64_t step, std::uint64_t total, std::uint64_t stop, double wall,
               std::uint64_t steps_done, double kinetic);
+  /// The run's whole length changed (talus resume --duration), s.
+  void set_duration(double duration) { duration_ = duration; }
   /// Ends a progress bar's line, if one was drawn.
   void finish();
   /// A time as the thermo interval resolves it: 0.61 s, not the 0.60999 s of a step's rounding.

@@ -60,11 +60,27 @@ std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBo
       packing(sim, s, book));
 }
 
+Vec2 group_force(const Simulation& sim, const DriverTargets& g) {
+  Vec2 f = force_on_particles(sim, g.particles);
+  for (const auto sidx : g.segments) f += sim.world().walls[sidx].force;
+  return f;
+}
+
+double group_height(const Simulation& sim, const DriverTargets& g) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const auto i : g.particles) sum += sim.world().particles.position[i].y, ++n;
+  for (const auto sidx : g.segments) {
+    const Segment& w = sim.world().walls[sidx];
+    sum += w.a.y + w.b.y, n += 2;
+  }
+  return n > 0 ? sum / static_cast<double>(n) : 0.0;
+}
+
 std::string group_force_columns(const Simulation& sim, const RunBook& book) {
   std::string out;
   for (const auto& [name, g] : book.groups) {
-    Vec2 f = force_on_particles(sim, g.particles);
-    for (const auto sidx : g.segments) f += sim.world().walls[sidx].force;
+    const Vec2 f = group_force(sim, g);
     out += fmt::format(",{:.9e},{:.9e}", f.x, f.y);
   }
   return out;

@@ -21,6 +21,10 @@ std::string thermo_header(const RunBook& book, bool ledger);
 /// coordination, contacts, packing fraction.
 std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBook& book,
                            const Energies& e);
+/// The force the grains push on a wall group (its particles and segments), N.
+Vec2 group_force(const Simulation& sim, const DriverTargets& g);
+/// A wall group's height: the mean y of its particles and of its segments' ends, m.
+double group_height(const Simulation& sim, const DriverTargets& g);
 /// The columns after the ledger's: the force on each wall group, x and y.
 std::string group_force_columns(const Simulation& sim, const RunBook& book);
 /// track.csv's rows of the tracked particles now.

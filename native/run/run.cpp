@@ -8,6 +8,8 @@
 #include "render/snapshot_png.hpp"
 #include "run/observers.hpp"
 #include "run/records.hpp"
+#include "run/scenario_change.hpp"
+#include "scenario/toml_reader.hpp"
 
 namespace fs = std::filesystem;
 
@@ -48,8 +50,16 @@ Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunContr
   c_.stop_step =
       o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
   c_.session_wall = [this] { return wall_now() - session_wall_before_; };
+  c_.change = [this](const std::vector<std::string>& set, const std::string& source) {
+    change(set, source);
+  };
   checkpointed_ = !book_.file_bytes.empty(); // resumed: from a checkpoint
   checkpointed_snapshots_ = book_.snapshots;
+  make_observers();
+}
+
+void Run::make_observers() {
+  for (const auto& o : observers_) o->save(book_);
   observers_ = observers_for(c_, progress_, snapshots_);
   observers_.push_back(std::make_unique<CheckpointEvent>(c_, *this));
 }
@@ -62,6 +72,12 @@ RunOutcome Run::go() {
   try {
     for (auto& o : observers_) o->open(c_);
     if (files_.fresh()) start();
+    if (!o_.set_now.empty()) {
+      change(o_.set_now, o_.set_now_source);
+      make_observers();
+      for (auto& o : observers_) o->open(c_);
+      observers_stale_ = false;
+    }
     return steps();
   } catch (const WriteError& e) {
     stop_on_write_failure(e);
@@ -137,6 +153,39 @@ void Run::look_after_step() {
     due_[i] = observers_[i]->next_look(k);
     if (!c_.end.empty()) return; // an event ended the run: the end's records follow
   }
+  if (!observers_stale_) return;
+  // a change: the events and observers of the changed scenario, from their saved state
+  make_observers();
+  for (auto& o : observers_) o->open(c_);
+  due_.clear();
+  for (const auto& o : observers_) due_.push_back(o->next_look(k));
+  observers_stale_ = false;
+}
+
+void Run::change(const std::vector<std::string>& set, const std::string& source) {
+  if (!o_.scenario_with)
+    throw ScenarioError("this run cannot be changed as it goes (" + source + ")");
+  std::vector<std::string> all = book_.overrides();
+  all.insert(all.end(), set.begin(), set.end());
+  Scenario next = o_.scenario_with(all);
+  apply_scenario_change(sim_, s_, next);
+  book_.changes.push_back({sim_.step_count(), sim_.time(), source, set});
+  std::ostream& log = files_.open("changes.csv", "time,step,source,change\n");
+  const auto quoted = [](std::string text) { // a CSV field: its quotes doubled
+    for (std::size_t at = text.find('"'); at != std::string::npos; at = text.find('"', at + 2))
+      text.insert(at, 1, '"');
+    return '"' + text + '"';
+  };
+  for (const std::string& x : set)
+    log << fmt::format("{:.9g},{},{},{}\n", sim_.time(), sim_.step_count(), quoted(source),
+                       quoted(x));
+  s_ = std::move(next);
+  const double dt = sim_.config().timestep;
+  c_.total_steps = steps_until(s_.simulation.duration, dt);
+  c_.stop_step =
+      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
+  progress_.set_duration(s_.simulation.duration);
+  observers_stale_ = true;
 }
 
 // The engine renumbers the particles now and then (simulation.sort_every): the run's own

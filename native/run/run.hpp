@@ -26,6 +26,12 @@ struct RunControl {
   bool quiet = false;
   std::function<bool()> stop_requested;             ///< true: checkpoint and stop now
   std::function<void(const RunBook&)> end_pictures; ///< after the end: the scenario's pictures
+  /// The run's scenario with "key=value" changes (its folder's scenario.toml with them): how a
+  /// stage or a resume changes the run. Without it, a change is refused.
+  std::function<Scenario(const std::vector<std::string>&)> scenario_with;
+  /// Changes made as this session starts (talus resume --set, --duration), with their source.
+  std::vector<std::string> set_now;
+  std::string set_now_source;
 };
 
 /// How a call of Run::go ended.
@@ -47,6 +53,11 @@ public:
   const Simulation& simulation() const { return sim_; }
   /// Writes a checkpoint of the engine's state and the run's book now (the previous one kept).
   void checkpoint();
+  /// Changes the run from this step on: the scenario with every change so far and `set`; what
+  /// changed in the engine (gravity, materials, the tangential law) is applied to it, and the
+  /// events and observers follow the new output intervals. Recorded in the book (saved with
+  /// the next checkpoint) and in changes.csv. Throws ScenarioError for a change that cannot be.
+  void change(const std::vector<std::string>& set, const std::string& source);
 
 private:
   RunOutcome steps();
@@ -60,7 +71,10 @@ private:
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
   double wall_now() const;
 
-  const Scenario& s_;
+  void make_observers();
+
+  Scenario s_;                   ///< the scenario as it stands now, with the changes made
+  bool observers_stale_ = false; ///< a change was made: new observers after this look
   Simulation sim_;
   RunBook book_;
   RunControl o_;

@@ -22,7 +22,53 @@ std::vector<double> read_numbers(std::istream& in) {
   return v;
 }
 
+// A word of free text (a change's source, a key=value) on a line of words: blanks, newlines and
+// backslashes escaped.
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '\\')
+      out += "\\\\";
+    else if (c == ' ')
+      out += "\\s";
+    else if (c == '\n')
+      out += "\\n";
+    else if (c == '\t')
+      out += "\\t";
+    else
+      out += c;
+  }
+  return out.empty() ? "\\e" : out;
+}
+
+std::string unescaped(const std::string& word) {
+  std::string out;
+  for (std::size_t k = 0; k < word.size(); ++k) {
+    if (word[k] != '\\' || k + 1 == word.size()) {
+      out += word[k];
+      continue;
+    }
+    const char c = word[++k];
+    if (c == 's')
+      out += ' ';
+    else if (c == 'n')
+      out += '\n';
+    else if (c == 't')
+      out += '\t';
+    else if (c == '\\')
+      out += '\\';
+    // 'e': the empty word
+  }
+  return out;
+}
+
 } // namespace
+
+std::vector<std::string> RunBook::overrides() const {
+  std::vector<std::string> out;
+  for (const RunChange& c : changes) out.insert(out.end(), c.set.begin(), c.set.end());
+  return out;
+}
 
 RunBook RunBook::of(const BuiltScenario& built) {
   RunBook book;
@@ -50,6 +96,12 @@ std::string RunBook::encode() const {
   write_numbers(o << "\nledger_state ", ledger_state);
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
+  o << "stage " << stage << " " << stage_start << "\nscenario_hash " << scenario_hash << "\n";
+  for (const RunChange& c : changes) {
+    o << "change " << c.step << " " << c.time << " " << escaped(c.source) << " " << c.set.size();
+    for (const std::string& x : c.set) o << " " << escaped(x);
+    o << "\n";
+  }
   for (const auto& [name, g] : groups) {
     o << "group " << name << " " << g.particles.size();
     for (const auto i : g.particles) o << " " << i;
@@ -90,7 +142,19 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
     else if (key == "bounds")
       l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
-    else if (key == "front_state")
+    else if (key == "stage")
+      l >> b.stage >> b.stage_start;
+    else if (key == "scenario_hash")
+      l >> b.scenario_hash;
+    else if (key == "change") {
+      RunChange c;
+      std::string word;
+      std::size_t n = 0;
+      l >> c.step >> c.time >> word >> n;
+      c.source = unescaped(word);
+      for (std::size_t k = 0; k < n && l >> word; ++k) c.set.push_back(unescaped(word));
+      b.changes.push_back(std::move(c));
+    } else if (key == "front_state")
       b.front_state = read_numbers(l);
     else if (key == "contact_state")
       b.contact_state = read_numbers(l);

@@ -11,6 +11,14 @@
 
 namespace talus::run {
 
+/// Changes made to a run as it went: a stage's start, or `talus resume --set/--duration`.
+struct RunChange {
+  std::uint64_t step = 0;       ///< made after this step
+  double time = 0.0;            ///< s
+  std::string source;           ///< "stage 1 (tilt)", "resume --set", ...
+  std::vector<std::string> set; ///< "key=value" changes, as --set takes them
+};
+
 struct RunBook {
   std::map<std::string, std::uint64_t> file_bytes; ///< output files' sizes at the checkpoint
   std::uint64_t snapshots = 0;                     ///< snapshots written
@@ -27,6 +35,13 @@ struct RunBook {
   std::map<std::string, DriverTargets> groups;
   Rect fill;
   Rect bounds;
+  std::size_t stage = 0;           ///< the stage under way ([[stages]]; = their count: past them)
+  std::uint64_t stage_start = 0;   ///< the step it started at
+  std::vector<RunChange> changes;  ///< in the order they were made
+  std::uint64_t scenario_hash = 0; ///< of the run folder's scenario.toml (0: not recorded)
+  /// Every change's "key=value" in order: the scenario of the run now is its folder's
+  /// scenario.toml with these.
+  std::vector<std::string> overrides() const;
   /// The book of a run about to start from a built scenario.
   static RunBook of(const BuiltScenario& built);
   std::string encode() const;

@@ -17,8 +17,9 @@ public:
   RunFiles(std::filesystem::path dir, bool fresh) : dir_(std::move(dir)), fresh_(fresh) {}
   const std::filesystem::path& dir() const { return dir_; }
   bool fresh() const { return fresh_; }
-  /// Opens `name` in the folder (once); throws WriteError when it cannot.
-  std::ostream& open(const std::string& name);
+  /// Opens `name` in the folder (once), with `header` first when it starts empty; throws
+  /// WriteError when it cannot.
+  std::ostream& open(const std::string& name, const std::string& header = "");
   /// Writes out what each file holds; throws WriteError naming a file that failed.
   void flush();
   /// Each open file's size now, bytes.

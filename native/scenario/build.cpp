@@ -31,14 +31,6 @@ double grain_mass(const Scenario& s, const Material& m, double r) {
   return shape_mass(s.particles.shape, r, m.density);
 }
 
-// A damping left to be derived from the restitution that the normal law does not use (the linear
-// law's Hertz A) set to zero; Hertz' A stays to be derived per contact.
-void resolve_damping(const Scenario& s, std::vector<Material>& materials) {
-  with_normal_law(s.simulation.normal_law, [&]<class N>() {
-    for (Material& m : materials) N::resolve_damping(m);
-  });
-}
-
 std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing) {
   const double length = norm(seg.b - seg.a);
   const auto n = static_cast<std::size_t>(std::ceil(length / spacing));
@@ -51,6 +43,26 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
 }
 
 } // namespace
+
+Motion motion_of(const DriverSection& d) {
+  if (d.type == "vibrate") return Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
+  if (d.type == "translate") return Translate{d.velocity};
+  return Rotate{d.centre, d.angular_velocity};
+}
+
+std::vector<DriverSection> all_drivers(const Scenario& s) {
+  std::vector<DriverSection> drivers = build_container(s.geometry).drivers;
+  drivers.insert(drivers.end(), s.drivers.begin(), s.drivers.end());
+  return drivers;
+}
+
+std::vector<Material> engine_materials(const Scenario& s) {
+  std::vector<Material> materials = s.materials;
+  with_normal_law(s.simulation.normal_law, [&]<class N>() {
+    for (Material& m : materials) N::resolve_damping(m);
+  });
+  return materials;
+}
 
 std::vector<MeetingPair> meeting_pairs(const World& w) {
   std::set<std::uint16_t> grains, walls;
@@ -257,6 +269,17 @@ void configure(const Scenario& s, double r_min, BuiltScenario& out) {
   }
 }
 
+// The wall groups the stages' conditions name are the geometry's.
+void check_stage_groups(const Scenario& s, const BuiltScenario& out) {
+  for (std::size_t k = 0; k < s.stages.size(); ++k) {
+    if (s.stages[k].group.empty() || out.groups.count(s.stages[k].group)) continue;
+    std::string names;
+    for (const auto& [name, _] : out.groups) names += (names.empty() ? "" : ", ") + name;
+    throw ScenarioError("key 'stages." + std::to_string(k) + ".group': no wall group '" +
+                        s.stages[k].group + "' in this geometry; groups: " + names);
+  }
+}
+
 void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
   for (const DriverSection& d : drivers) {
     const auto group = out.groups.find(d.target);
@@ -268,12 +291,7 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
     }
     Driver driver;
     driver.targets = group->second;
-    if (d.type == "vibrate")
-      driver.motion = Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
-    else if (d.type == "translate")
-      driver.motion = Translate{d.velocity};
-    else
-      driver.motion = Rotate{d.centre, d.angular_velocity};
+    driver.motion = motion_of(d);
     out.world.drivers.push_back(std::move(driver));
   }
 }
@@ -310,14 +328,13 @@ void select_tracked(const Scenario& s, BuiltScenario& out) {
 BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) {
   BuiltScenario out;
   World& w = out.world;
-  w.materials = s.materials;
+  w.materials = engine_materials(s);
   w.gravity = s.simulation.gravity;
   RandomStream rng(s.simulation.seed, 1);
 
   check_memory(s.particles.count + s.particles.list.size());
   check_start_overlaps(s);
   const GrainSizes sizes = draw_grain_sizes(s, rng);
-  resolve_damping(s, w.materials);
 
   const ContainerShape shape = build_container(s.geometry);
   const bool particle_walls = s.geometry.walls == "particles";
@@ -340,6 +357,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   set_periodic_domain(s, w.domain);
 
   place_grains(s, sizes.radii, rng, out);
+  check_stage_groups(s, out);
   configure(s, sizes.r_min, out);
   if (s.packing.method == "sedimentation" && !sizes.radii.empty())
     sediment(s, shape.gate, wall_mat, joint_tolerance * sizes.r_min, progress, out);

@@ -18,8 +18,8 @@ struct BuiltScenario {
   Rect fill;                                   ///< the region grains were placed in
   Rect bounds;                                 ///< the container's extent
   PairTable pairs; ///< the materials' pairs, mixed once: every bound and estimate reads them
-  double collision_time = 0.0;                 ///< s, of the stiffest pair
-  double settle_time = 0.0;                    ///< s of sedimentation (0 if none)
+  double collision_time = 0.0; ///< s, of the stiffest pair
+  double settle_time = 0.0;    ///< s of sedimentation (0 if none)
   bool settled = true;
 };
 
@@ -29,6 +29,17 @@ using SettleProgress = std::function<void(double time, double kinetic_energy)>;
 /// Builds everything. Throws ScenarioError naming the key for anything that cannot be built
 /// (too many grains for the region, a timestep above the stability bound, an unknown group).
 BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress = {});
+
+/// The motion a driver section asks for.
+Motion motion_of(const DriverSection& d);
+/// The drivers of the built world, in its order: the geometry builder's (the grain press' lid,
+/// the drum's turn), then the scenario's [[drivers]].
+std::vector<DriverSection> all_drivers(const Scenario& s);
+
+/// The scenario's materials as the engine takes them: a damping left to be derived from the
+/// restitution that the normal law does not use (the linear law's Hertz A) set to zero; Hertz' A
+/// stays to be derived per contact.
+std::vector<Material> engine_materials(const Scenario& s);
 
 /// A pair of materials that can meet: two grains' (a <= b), or a grain's (a) and a wall's (b).
 /// Two walls never meet, so their pair never sets the timestep.

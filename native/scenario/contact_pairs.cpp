@@ -44,14 +44,14 @@ std::string describe_contact_pairs(const World& w, const PairTable& pairs,
     const double r_eff = m.wall ? ga.radius : ga.radius * gb.radius / (ga.radius + gb.radius);
     out += fmt::format("#   {} with {}{}: restitution {:.6g}, {}\n", a.name, b.name,
                        m.wall ? " (wall)" : "", p.restitution,
-                       m_eff > 0.0 ? with_normal_law(c.normal_law,
-                                                     [&]<class N>() {
-                                                       return N::describe_damping(
-                                                           p, m_eff, r_eff, c.impact_speed,
-                                                           m.wall ? "a mean grain"
-                                                                  : "two mean grains");
-                                                     })
-                                   : "no grains");
+                       m_eff > 0.0
+                           ? with_normal_law(c.normal_law,
+                                             [&]<class N>() {
+                                               return N::describe_damping(
+                                                   p, m_eff, r_eff, c.impact_speed,
+                                                   m.wall ? "a mean grain" : "two mean grains");
+                                             })
+                           : "no grains");
   }
   return out;
 }

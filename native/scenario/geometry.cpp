@@ -148,6 +148,14 @@ ContainerShape build_container(const GeometrySection& g) {
     c.bounds = c.fill;
   }
   for (const SegmentSpec& s : g.segments) add(c, "extra", s.a, s.b);
+  if (g.gate) { // the gate stays, as walls of its own, instead of closing the orifice for the
+                // packing
+    need(!c.gate.empty(), "gate",
+         "applies only to a container with an orifice (a silo with orifice > 0, a hopper, an "
+         "hourglass)");
+    for (const SegmentSpec& s : c.gate) add(c, "gate", s.a, s.b);
+    c.gate.clear();
+  }
   return c;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "scenario/picture_request.hpp"
+#include "scenario/stages.hpp"
 #include "talus/material_keys.hpp"
 
 namespace talus {
@@ -211,6 +212,7 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
   g.orifice = r.number("orifice", g.orifice, 0.0, inf, ">= 0 m");
   if (r.has("orifice_x")) g.orifice_x = r.number("orifice_x", 0.0, 0.0, inf, ">= 0 m");
   if (r.has("bin_depth")) g.bin_depth = r.number("bin_depth", 0.0, 0.0, inf, "> 0 m");
+  g.gate = r.boolean("gate", false);
   g.wall_angle = r.number("wall_angle", g.wall_angle, 1.0, 89.0,
                           "(1, 89) degrees (a flat floor with an orifice: builder = \"silo\" "
                           "with orifice = WIDTH)");
@@ -330,17 +332,41 @@ std::uint16_t material_index(const Scenario& s, const std::string& name, const s
   throw ScenarioError("key '" + key + "': no material named '" + name + "'; defined: " + names);
 }
 
-Scenario load_scenario(std::string_view text, const std::string& file,
-                       const std::vector<std::string>& overrides) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw ScenarioError(file + ":" + std::to_string(e.source().begin.line) + ": " +
-                        std::string(e.description()));
-  }
-  for (const auto& o : overrides) apply_override(root, o);
+namespace {
 
+Scenario load_root(const toml::table& root, const std::string& file, bool check_stages);
+
+// With stages, the run lasts as long as they do unless simulation.duration says; each stage's
+// changes, with those before it, must make a scenario that loads (checked here, not when the
+// stage starts in the middle of a run).
+void settle_stages(Scenario& s, const toml::table& root, const std::string& file,
+                   bool check_stages) {
+  if (s.stages.empty()) return;
+  double before_last = 0.0;
+  for (std::size_t k = 0; k + 1 < s.stages.size(); ++k) before_last += s.stages[k].duration;
+  const toml::table* sim = root["simulation"].as_table();
+  if (!(sim && sim->contains("duration"))) {
+    if (!(s.stages.back().duration > 0.0))
+      throw ScenarioError(file + ": key 'stages." + std::to_string(s.stages.size() - 1) +
+                          ".duration': missing; the last stage needs one, or simulation.duration "
+                          "the run's whole length");
+    s.simulation.duration = before_last + s.stages.back().duration;
+  } // a simulation.duration given may end the run before the later stages start
+  if (!check_stages) return;
+  // the changes apply to the resolved scenario, as in a run folder: every section is there
+  toml::table changed = toml::parse(to_toml(s), file);
+  for (std::size_t k = 1; k < s.stages.size(); ++k) {
+    try {
+      for (const std::string& c : s.stages[k].set) apply_override(changed, c);
+      load_root(changed, file, false);
+    } catch (const ScenarioError& e) {
+      throw ScenarioError("key 'stages." + std::to_string(k) + ".set' (stage '" + s.stages[k].name +
+                          "'): " + e.what());
+    }
+  }
+}
+
+Scenario load_root(const toml::table& root, const std::string& file, bool check_stages) {
   Scenario s;
   TableReader top(root, file, "");
   s.name = top.text("name", s.name);
@@ -380,7 +406,9 @@ Scenario load_scenario(std::string_view text, const std::string& file,
   section(top, "track", file, [&](TableReader& r) { read_track(r, s.track); });
   section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
   section(top, "frost", file, [&](TableReader& r) { read_frost(r, s.frost); });
+  s.stages = read_stages(top, file);
   top.finish();
+  settle_stages(s, root, file, check_stages);
 
   // references between sections
   material_index(s, s.particles.material, "particles.material");
@@ -398,6 +426,21 @@ Scenario load_scenario(std::string_view text, const std::string& file,
                           "' draws tracks, but [track] selects no particles; set track.ids or "
                           "track.select (largest, smallest, nearest, all)");
   return s;
+}
+
+} // namespace
+
+Scenario load_scenario(std::string_view text, const std::string& file,
+                       const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw ScenarioError(file + ":" + std::to_string(e.source().begin.line) + ": " +
+                        std::string(e.description()));
+  }
+  for (const auto& o : overrides) apply_override(root, o);
+  return load_root(root, file, true);
 }
 
 Scenario load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {

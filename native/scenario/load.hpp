@@ -18,6 +18,9 @@ Scenario load_scenario(std::string_view text, const std::string& file,
 Scenario load_scenario_file(const std::string& path,
                             const std::vector<std::string>& overrides = {});
 
+/// TOML text with each float written as the shortest text that reads back to the same double.
+std::string with_shortest_floats(const std::string& toml_text);
+
 /// The resolved scenario as TOML: every key with its value, so it reruns the same run.
 std::string to_toml(const Scenario& s);
 

@@ -157,6 +157,7 @@ toml::table geometry_table(const GeometrySection& g) {
                        {"periodic", g.periodic}};
   if (g.orifice_x) geometry.insert("orifice_x", *g.orifice_x);
   if (g.bin_depth) geometry.insert("bin_depth", *g.bin_depth);
+  if (g.gate) geometry.insert("gate", true);
   if (g.box) geometry.insert("box", rect(*g.box));
   toml::array segments;
   for (const SegmentSpec& seg : g.segments)
@@ -225,7 +226,37 @@ toml::table frost_table(const FrostSection& f) {
                      {"thawed_material", f.thawed_material}};
 }
 
+// Each stage with its changes as quoted dotted keys ("simulation.gravity" = [0, -9.81]).
+toml::array stages_array(const std::vector<StageSection>& stages) {
+  toml::array out;
+  for (const StageSection& st : stages) {
+    toml::table set;
+    for (const std::string& c : st.set) {
+      const std::size_t eq = c.find('=');
+      toml::table parsed = toml::parse("v = " + c.substr(eq + 1));
+      set.insert(c.substr(0, eq), std::move(*parsed.get("v")));
+    }
+    toml::table t{{"name", st.name}, {"duration", st.duration}, {"until", st.until}};
+    if (st.until.starts_with("kinetic")) t.insert("kinetic", st.kinetic);
+    if (st.until.starts_with("wall")) t.insert("group", st.group);
+    if (st.until == "wall_force_above") t.insert("force", st.force);
+    if (st.until.starts_with("wall_position")) t.insert("position", st.position);
+    if (st.until == "grains_below") {
+      t.insert("height", st.height);
+      t.insert("count", static_cast<std::int64_t>(st.count));
+    }
+    if (st.until != "none") t.insert("then", st.then);
+    if (!set.empty()) t.insert("set", std::move(set));
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 } // namespace
+
+std::string with_shortest_floats(const std::string& toml_text) {
+  return shortest_floats(toml_text);
+}
 
 std::string to_toml(const Scenario& s) {
   toml::table root;
@@ -241,6 +272,7 @@ std::string to_toml(const Scenario& s) {
   root.insert("track", track_table(s.track));
   root.insert("output", output_table(s.output));
   root.insert("frost", frost_table(s.frost));
+  if (!s.stages.empty()) root.insert("stages", stages_array(s.stages));
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";

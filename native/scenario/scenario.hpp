@@ -82,10 +82,13 @@ struct GeometrySection {
       "none";          ///< none | box | silo | window_box | hopper | hourglass | grain_press | drum
   double width = 0.0;  ///< m
   double height = 0.0; ///< m
-  double orifice = 0.0;              ///< m (hopper, hourglass; silo: 0 for a closed floor)
-  std::optional<double> orifice_x;   ///< m: the orifice's centre (silo; default width / 2)
-  std::optional<double> bin_depth;   ///< m: the bin below the orifice (silo, hopper)
-  double wall_angle = 60.0;          ///< degrees from horizontal (hopper, hourglass)
+  double orifice = 0.0;            ///< m (hopper, hourglass; silo: 0 for a closed floor)
+  std::optional<double> orifice_x; ///< m: the orifice's centre (silo; default width / 2)
+  std::optional<double> bin_depth; ///< m: the bin below the orifice (silo, hopper)
+  double wall_angle = 60.0;        ///< degrees from horizontal (hopper, hourglass)
+  /// The orifice closed by a gate, the wall group "gate", after the packing too, until a driver
+  /// moves it away (a stage that slides it open). Silo with an orifice, hopper, hourglass.
+  bool gate = false;
   double lid_speed = 0.0;            ///< m/s downward (grain_press)
   double radius = 0.0;               ///< m (drum)
   double angular_velocity = 0.0;     ///< rad/s (drum)
@@ -162,6 +165,27 @@ struct FrostSection {
   std::string thawed_material;     ///< thawed fines take this material ("": unchanged)
 };
 
+/// One stage of an experiment run in stages ([[stages]]: settle, then tilt; fill, then open):
+/// it starts where the one before ended, with the changes of `set`, and ends after `duration`
+/// or, first, when its condition `until` holds (looked at with every thermo row). The last stage
+/// lasts to the run's end (simulation.duration: the sum of the stages' unless given; a shorter
+/// one ends the run before the later stages) or to its condition, which then ends the run.
+struct StageSection {
+  std::string name;
+  double duration = 0.0; ///< s: the longest the stage lasts
+  /// none | settled | kinetic_below | kinetic_above (kinetic) | wall_force_above (group, force)
+  /// | wall_position_below | wall_position_above (group, position) | grains_below (height, count)
+  std::string until = "none";
+  double kinetic = 0.0;         ///< J: the kinetic energy's threshold
+  std::string group;            ///< a wall group of the geometry (wall_* conditions)
+  double force = 0.0;           ///< N: the magnitude of the grains' force on the group
+  double position = 0.0;        ///< m: the group's height (the mean y of its walls and particles)
+  double height = 0.0;          ///< m: grains_below counts the free grains below this height
+  std::size_t count = 0;        ///< grains_below: this many
+  std::string then = "next";    ///< when the condition holds: next (the next stage) | end (the run)
+  std::vector<std::string> set; ///< "key=value" changes at the stage's start (as --set)
+};
+
 struct Scenario {
   std::string name = "scenario";
   std::string description;
@@ -174,6 +198,7 @@ struct Scenario {
   TrackSection track;
   OutputSection output;
   FrostSection frost;
+  std::vector<StageSection> stages; ///< empty: one stage, the whole run
 };
 
 } // namespace talus

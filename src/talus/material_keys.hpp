@@ -58,8 +58,8 @@ inline std::string material_key_error(const Material& m) {
     if (std::isfinite(x) && allowed_value(k, x)) continue;
     char value[32];
     std::snprintf(value, sizeof value, "%g", x);
-    return std::string(k.name) + " = " + value + " is out of range; allowed: " +
-           std::string(k.allowed);
+    return std::string(k.name) + " = " + value +
+           " is out of range; allowed: " + std::string(k.allowed);
   }
   return "";
 }

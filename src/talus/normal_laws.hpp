@@ -71,9 +71,8 @@ struct LinearSpringDashpot {
   /// Whether a damping derived from the restitution depends on the impact speed.
   static constexpr bool damping_needs_impact_speed = false;
   /// The pair's damping in words, for a contact of `who` (m_eff, r_eff), as a run reports it.
-  static std::string describe_damping(const PairParameters& p, double /*m_eff*/,
-                                      double /*r_eff*/, double /*impact_speed*/,
-                                      const char* /*who*/) {
+  static std::string describe_damping(const PairParameters& p, double /*m_eff*/, double /*r_eff*/,
+                                      double /*impact_speed*/, const char* /*who*/) {
     if (p.damping_sqrt_coeff > 0.0)
       return format_words("eta_n = 2 zeta sqrt(k_n m_eff), zeta = %.6g",
                           p.damping_sqrt_coeff / (2.0 * std::sqrt(p.normal_stiffness)));

@@ -23,6 +23,9 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     silo_discharge) short=(--set particles.count=150 --set geometry.width=0.12 --set geometry.height=0.25
                            --set simulation.duration=0.2 --set packing.settle_max_time=0.3) ;;
     silo_shake) short=(--set particles.count=60 --set simulation.duration=0.1 --set packing.settle_max_time=0.1) ;;
+    tilted_box) short=(--set particles.count=60 --set simulation.duration=0.2 --set stages.1.duration=0.05
+                       --set stages.2.duration=0.05) ;;
+    silo_gate) short=(--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5) ;;
     *) fail "no short version in $0" ;;
   esac
   "$talus" run "$name" "${common[@]}" "${short[@]}" || fail "run"

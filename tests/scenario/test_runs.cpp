@@ -181,6 +181,28 @@ TEST(Resume, AFormat7CheckpointIsReadToTheSameState) {
   fs::remove_all(dir);
 }
 
+// A checkpoint of format 8, with a driver (the grain press' lid), is read by this talus to the
+// state it reaches on the same run: format 9 added only the driver's start time, 0 for every
+// driver of format 8.
+TEST(Resume, AFormat8CheckpointIsReadToTheSameState) {
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/force_network-format8.ckpt";
+  const std::string bytes = read_file(file);
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 8, sizeof(version));
+  ASSERT_EQ(version, 8u);
+  const Checkpoint old = decode_checkpoint(bytes, file);
+  ASSERT_EQ(old.state.world.drivers.size(), 1u);
+  EXPECT_EQ(old.state.world.drivers[0].start_time, 0.0);
+  const fs::path dir = fresh_dir("format8");
+  ASSERT_EQ(run(builtin("force_network", {"particles.count=20", "simulation.duration=0.002"}), dir),
+            cli::exit_completed);
+  const Checkpoint now = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "now");
+  EXPECT_EQ(encode_checkpoint({old.state, old.config, ""}),
+            encode_checkpoint({now.state, now.config, ""}));
+  EXPECT_NO_THROW(Simulation::restore(old.state, old.config));
+  fs::remove_all(dir);
+}
+
 // A checkpoint whose checksum holds but whose arrays disagree in length (written by a defective
 // build, say) is refused when read, whichever per-particle field is off: read on, the short
 // array would be indexed beyond its end.

@@ -128,9 +128,18 @@ void add_resume_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--stop-at", o->stop_at, "stop again at this simulated time (s)")
       ->check(stop_time);
+  cmd->add_option("--set", o->set,
+                  "change a key from the resume point on, e.g. --set simulation.gravity=[0,-5] "
+                  "(repeatable; the keys a run can change: docs/scenarios.md, \"Runs in stages\")");
+  cmd->add_option("--duration", o->duration,
+                  "the run's whole length (s) from now on: a finished run goes on to it")
+      ->check(stop_time);
   cmd->add_flag("--quiet", o->quiet, "no progress output");
   cmd->callback([dir, o, sweep] {
     if (is_sweep_folder(*dir)) {
+      if (!o->set.empty() || o->duration >= 0.0)
+        throw InvalidArgument("--set and --duration change one run; '" + *dir +
+                              "' is a sweep folder");
       sweep->quiet = o->quiet;
       exit_status() = run_sweep(*dir, nullptr, *sweep);
     } else {

@@ -15,6 +15,7 @@
 #include "run/run.hpp"
 #include "scenario/contact_pairs.hpp"
 #include "scenario/load.hpp"
+#include "scenario/stages.hpp"
 
 namespace fs = std::filesystem;
 
@@ -45,12 +46,27 @@ void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBoo
   }
 }
 
-// Runs to the end (or a stop) in dir, answering SIGINT and SIGTERM with a checkpoint.
+// FNV-1a: whether the run folder's scenario.toml is still the one the run started with.
+std::uint64_t text_hash(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
+  return h;
+}
+
+// Runs to the end (or a stop) in dir, answering SIGINT and SIGTERM with a checkpoint. `set`: the
+// changes this session makes as it starts (talus resume --set, --duration), from `source`.
 int go(const Scenario& s, Simulation sim, run::RunBook book, const fs::path& dir,
-       const RunOptions& o, bool fresh) {
+       const RunOptions& o, bool fresh, std::vector<std::string> set = {},
+       std::string source = {}) {
   run::RunControl control;
   control.stop_at = o.stop_at;
   control.quiet = o.quiet;
+  const std::string scenario_file = (dir / "scenario.toml").string();
+  control.scenario_with = [scenario_file](const std::vector<std::string>& changes) {
+    return load_scenario_file(scenario_file, changes);
+  };
+  control.set_now = std::move(set);
+  control.set_now_source = std::move(source);
   control.stop_requested = [] { return stop_requested != 0; };
   control.end_pictures = [&](const run::RunBook& b) { scenario_pictures(s, dir, b, o.quiet); };
   run::Run r(s, std::move(sim), std::move(book), dir, std::move(control), fresh);
@@ -82,8 +98,10 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
   run::RunBook book = run::RunBook::of(built);
   // the resolved scenario, now with the dampers derived for the built grains
-  write_file_atomically((folder.path() / "scenario.toml").string(),
-                        to_toml(s) + describe_contact_pairs(built.world, built.pairs, built.config));
+  const std::string text =
+      to_toml(s) + describe_contact_pairs(built.world, built.pairs, built.config);
+  write_file_atomically((folder.path() / "scenario.toml").string(), text);
+  book.scenario_hash = text_hash(text);
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   run::report_opening(sim, o.quiet);
   return go(s, std::move(sim), std::move(book), folder.path(), o, true);
@@ -101,7 +119,8 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   if (!fs::exists(d / "scenario.toml"))          // killed before it wrote even its scenario
     throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped at its start; " +
                           "start it again with: talus run SCENARIO --out " + dir);
-  const Scenario s = load_scenario_file((d / "scenario.toml").string());
+  const std::string scenario_file = (d / "scenario.toml").string();
+  const std::string text = read_file(scenario_file);
   std::optional<Checkpoint> c;
   for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
     const fs::path p = d / name;
@@ -119,16 +138,44 @@ int resume_run(const std::string& dir, const RunOptions& o) {
                           (d / "scenario.toml").string() + " --out " + dir);
   if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
   run::RunBook book = run::RunBook::decode(c->run_data);
+  if (book.scenario_hash != 0 && text_hash(text) != book.scenario_hash)
+    throw InvalidArgument(
+        "'" + scenario_file +
+        "' was edited after the run started; a run goes on with the scenario it started with, "
+        "so the edit would not apply. Undo it, and change the run from its resume point with "
+        "talus resume " +
+        dir + " --set KEY=VALUE (or --duration T)");
+  // the run's scenario now: the file with the changes made so far (stages, resumes)
+  const Scenario s = load_scenario(text, scenario_file, book.overrides());
+  std::vector<std::string> set = o.set;
+  for (const std::string& x : o.set)
+    if (!changeable_during_run(change_key(x)))
+      throw InvalidArgument("--set " + x + ": '" + change_key(x) +
+                            "' cannot change during a run; allowed: " + changeable_keys_text());
+  std::string source = o.set.empty() ? "" : "resume --set";
+  if (o.duration >= 0.0) {
+    source += source.empty() ? "resume --duration" : " --duration";
+    set.push_back(fmt::format("simulation.duration={}", o.duration));
+    book.ended.clear(); // a finished run goes on
+  } else if (!book.ended.empty() && !o.set.empty()) {
+    throw InvalidArgument("the run in '" + dir + "' has ended (" + book.ended +
+                          "): --set changes it from there on; give --duration T too, to run it "
+                          "on to T s");
+  }
   std::error_code cut;
   run::cut_back_outputs(d, book.file_bytes, book.snapshots, cut);
   if (cut)
     throw WriteError("cannot cut the outputs of '" + dir +
                      "' back to its checkpoint: " + cut.message());
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
+  if (o.duration >= 0.0 && !(o.duration > sim.time()))
+    throw InvalidArgument(fmt::format("--duration {:g}: the run is at t = {:.9g} s already; "
+                                      "allowed: a longer whole length",
+                                      o.duration, sim.time()));
   run::report_opening(sim, o.quiet);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
-  return go(s, std::move(sim), std::move(book), d, o, false);
+  return go(s, std::move(sim), std::move(book), d, o, false, std::move(set), std::move(source));
 }
 
 } // namespace talus::cli

@@ -2,6 +2,7 @@
 // `talus run` and `talus resume`: a run (run/run.hpp) in a run folder made and locked here,
 // with the signals that stop it at a checkpoint.
 #include <string>
+#include <vector>
 
 #include "cli/run/run_folder.hpp"
 #include "scenario/build.hpp"
@@ -13,6 +14,8 @@ struct RunOptions {
   int threads = -1;      ///< -1: as the scenario says
   double stop_at = -1.0; ///< s of simulated time: checkpoint and stop there (-1: run to the end)
   bool quiet = false;
+  std::vector<std::string> set; ///< resume: "key=value" changes from the resume point on
+  double duration = -1.0;       ///< resume: the run's new whole length, s (-1: as it was)
 };
 
 /// Exit statuses of a run.

@@ -1,0 +1,105 @@
+// The stages of an experiment run in stages ([[stages]], StageSection).
+#include <fmt/core.h>
+
+#include "frost/uniform_freeze.hpp"
+#include "run/observers.hpp"
+#include "run/records.hpp"
+
+namespace talus::run {
+
+namespace {
+
+// The step a stage that started at `start` reaches its duration, rounded up.
+std::uint64_t end_of(std::uint64_t start, double duration, double dt) {
+  return start + static_cast<std::uint64_t>(std::clamp(std::ceil(duration / dt - 1e-9), 1.0, 1e18));
+}
+
+} // namespace
+
+StageEvent::StageEvent(RunContext& c)
+    : thermo_every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)), c_(&c) {}
+
+std::uint64_t StageEvent::next_look(std::uint64_t step) const {
+  const std::vector<StageSection>& stages = c_->scenario.stages;
+  const std::size_t k = c_->book.stage;
+  if (k >= stages.size()) return never;
+  std::uint64_t next = never;
+  // the last stage lasts to the run's end
+  if (k + 1 < stages.size())
+    next = std::max(step + 1,
+                    end_of(c_->book.stage_start, stages[k].duration, c_->sim.config().timestep));
+  if (stages[k].until != "none") next = std::min(next, next_multiple(step, thermo_every_));
+  return next;
+}
+
+void StageEvent::open(RunContext& c) {
+  log_ = &c.files.open("stages.csv");
+}
+
+void StageEvent::start(RunContext&) {
+  *log_ << "stage,name,start_time,end_time,ended_by\n";
+}
+
+bool StageEvent::condition_holds(const RunContext& c) const {
+  const StageSection& st = c.scenario.stages[c.book.stage];
+  if (st.until == "settled")
+    return c.last_kinetic < c.scenario.packing.settle_energy * rest_energy_scale(c.sim);
+  if (st.until == "kinetic_below") return c.last_kinetic < st.kinetic;
+  if (st.until == "kinetic_above") return c.last_kinetic > st.kinetic;
+  if (st.until == "grains_below") {
+    const Particles& p = c.sim.world().particles;
+    std::size_t below = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.is_free(i) && p.position[i].y < st.height) ++below;
+    return below >= st.count;
+  }
+  const DriverTargets& g = c.book.groups.at(st.group); // the build checked that it is there
+  if (st.until == "wall_force_above") return norm(group_force(c.sim, g)) > st.force;
+  if (st.until == "wall_position_below") return group_height(c.sim, g) < st.position;
+  if (st.until == "wall_position_above") return group_height(c.sim, g) > st.position;
+  return false;
+}
+
+void StageEvent::look(RunContext& c) {
+  const std::vector<StageSection>& stages = c.scenario.stages;
+  const std::size_t k = c.book.stage;
+  if (k >= stages.size()) return;
+  const std::uint64_t step = c.sim.step_count();
+  if (stages[k].until != "none" && step % thermo_every_ == 0 && condition_holds(c))
+    return end_stage(c, stages[k].until.c_str());
+  if (k + 1 < stages.size() &&
+      step >= end_of(c.book.stage_start, stages[k].duration, c.sim.config().timestep))
+    end_stage(c, "duration");
+}
+
+void StageEvent::end_stage(RunContext& c, const char* why) {
+  const std::vector<StageSection>& stages = c.scenario.stages;
+  const std::size_t k = c.book.stage;
+  const double dt = c.sim.config().timestep;
+  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, stages[k].name,
+                       static_cast<double>(c.book.stage_start) * dt, c.sim.time(), why);
+  c.book.stage = k + 1;
+  c.book.stage_start = c.sim.step_count();
+  if (!c.quiet && !c.progress_on_terminal)
+    fmt::print("stage {} ({}) ended ({}) at t = {:.6g} s\n", k, stages[k].name, why, c.sim.time());
+  // the last stage's end, or a condition that ends the experiment, ends the run
+  if (k + 1 == stages.size() || (std::string_view(why) != "duration" && stages[k].then == "end")) {
+    c.book.stage = stages.size();
+    c.end = "stages";
+    return;
+  }
+  const StageSection& next = stages[k + 1];
+  // copied: the change replaces the scenario this refers to
+  const std::vector<std::string> set = next.set;
+  c.change(set, fmt::format("stage {} ({})", k + 1, next.name));
+}
+
+void StageEvent::finish(RunContext& c) {
+  const std::size_t k = c.book.stage;
+  if (k >= c.scenario.stages.size()) return; // its last row is written
+  const double dt = c.sim.config().timestep;
+  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, c.scenario.stages[k].name,
+                       static_cast<double>(c.book.stage_start) * dt, c.sim.time(), c.book.ended);
+}
+
+} // namespace talus::run
