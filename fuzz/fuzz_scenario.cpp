@@ -6,7 +6,7 @@
 #include <string>
 
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

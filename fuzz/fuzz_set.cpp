@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/thesis_format.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

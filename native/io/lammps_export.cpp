@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "io/checkpoint.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
 

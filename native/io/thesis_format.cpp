@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 #include "talus/closed_forms.hpp"
 
 namespace talus {

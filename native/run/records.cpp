@@ -9,7 +9,7 @@
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/vtk.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 #include "run/observers.hpp"
 #include "run/records.hpp"
 #include "run/scenario_change.hpp"
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,8 +1,8 @@
 #include "run/scenario_change.hpp"
 
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
-#include "scenario/stages.hpp"
+#include "scenario/file/load.hpp"
+#include "scenario/file/stages.hpp"
 
 namespace talus::run {
 

@@ -10,7 +10,7 @@
 #include "materials/timestep.hpp"
 #include "scenario/build_checks.hpp"
 #include "scenario/geometry.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "scenario/packing.hpp"
 #include "scenario/sediment.hpp"
 #include "scenario/size_distribution.hpp"

@@ -8,7 +8,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 
 namespace talus {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 
 namespace talus {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 
 namespace talus {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/observables.hpp"
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/toml_reader.hpp"
 #include "talus/error.hpp"
 
 namespace talus {

@@ -12,7 +12,7 @@
 
 #include "frost/frost_front.hpp"
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace talus {
 namespace {

@@ -12,7 +12,7 @@
 #include "io/contact_csv.hpp"
 #include "physics/reference_values.hpp"
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/impacts_scenario.hpp"
 #include "support/run_dir.hpp"
 #include "talus/closed_forms.hpp"

@@ -14,7 +14,7 @@
 #include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/impacts_scenario.hpp"
 #include "support/run_dir.hpp"

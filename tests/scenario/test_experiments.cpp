@@ -15,7 +15,7 @@
 #include "post/segregation.hpp"
 #include "scenario/build.hpp"
 #include "scenario/geometry.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 
 namespace talus {

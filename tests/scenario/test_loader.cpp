@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "talus/error.hpp"
 

@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "cli/builtin_scenarios.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/law_table.hpp"
 
 namespace talus {

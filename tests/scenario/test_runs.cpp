@@ -11,7 +11,7 @@
 #include "io/thesis_format.hpp"
 #include "io/track_csv.hpp"
 #include "io/vtp_reader.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
 

@@ -6,7 +6,7 @@
 #include "post/discharge.hpp"
 #include "scenario/build.hpp"
 #include "scenario/geometry.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 
 namespace talus {

@@ -8,7 +8,7 @@
 #include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "run/run_book.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
 

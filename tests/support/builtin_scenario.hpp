@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "cli/builtin_scenarios.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace talus::testing {
 

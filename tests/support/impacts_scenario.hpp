@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace talus::testing {
 

@@ -10,7 +10,7 @@
 #include "post/flow_profiles.hpp"
 #include "post/frost_cycles.hpp"
 #include "post/segregation.hpp"
-#include "scenario/picture_request.hpp"
+#include "scenario/file/picture_request.hpp"
 
 namespace talus {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "scenario/timestep_accuracy.hpp"
 #include "talus/closed_forms.hpp"
 

@@ -10,7 +10,7 @@
 #include "cli/pictures/pictures.hpp"
 #include "io/checkpoint.hpp"
 #include "io/vtp_reader.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
-#include "scenario/picture_request.hpp"
+#include "scenario/file/picture_request.hpp"
 
 namespace talus::cli {
 

@@ -7,7 +7,7 @@
 #include "cli/run/scenario_source.hpp"
 #include "io/lammps_export.hpp"
 #include "scenario/build.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 namespace talus::cli {
 

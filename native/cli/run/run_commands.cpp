@@ -13,7 +13,7 @@
 #include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "scenario/timestep_accuracy.hpp"
 
 namespace fs = std::filesystem;

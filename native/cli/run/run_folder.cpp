@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "io/checkpoint.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;

@@ -14,8 +14,8 @@
 #include "run/records.hpp"
 #include "run/run.hpp"
 #include "scenario/contact_pairs.hpp"
-#include "scenario/load.hpp"
-#include "scenario/stages.hpp"
+#include "scenario/file/load.hpp"
+#include "scenario/file/stages.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,8 +5,8 @@
 #include "cli/builtin_scenarios.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
-#include "scenario/load.hpp"
-#include "scenario/toml_reader.hpp"
+#include "scenario/file/load.hpp"
+#include "scenario/file/toml_reader.hpp"
 
 namespace fs = std::filesystem;
 

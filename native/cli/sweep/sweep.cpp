@@ -13,7 +13,7 @@
 #include "cli/run/scenario_source.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/geometry.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;

@@ -19,7 +19,7 @@
 #include "cli/run/run_folder.hpp"
 #include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;

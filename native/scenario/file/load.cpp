@@ -1,4 +1,4 @@
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "scenario/picture_request.hpp"
-#include "scenario/stages.hpp"
+#include "scenario/file/picture_request.hpp"
+#include "scenario/file/stages.hpp"
 #include "talus/material_keys.hpp"
 
 namespace talus {

@@ -1,4 +1,4 @@
-#include "scenario/stages.hpp"
+#include "scenario/file/stages.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/material_keys.hpp"
 
 namespace talus {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "scenario/file/toml_reader.hpp"
 #include "scenario/scenario.hpp"
-#include "scenario/toml_reader.hpp"
 
 namespace talus {
 

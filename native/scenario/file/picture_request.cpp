@@ -1,4 +1,4 @@
-#include "scenario/picture_request.hpp"
+#include "scenario/file/picture_request.hpp"
 
 #include <array>
 

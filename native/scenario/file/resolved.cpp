@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "scenario/load.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/material_keys.hpp"
 
 namespace talus {
