@@ -265,6 +265,7 @@ TEST(Stages, ChangesThatCannotBeAreRefused) {
   };
   refused({"geometry.width=1"}, 0.01, "'geometry.width' cannot change during a run; allowed:");
   refused({"materials.0.density=1000"}, 0.01, "cannot change during a run");
+  refused({"materials.0.friction=-1"}, 0.01, "materials.0.friction");
   refused({"simulation.gravity=[0,-1]"}, -1.0, "has ended (duration)");
   refused({}, 0.004, "the run is at t = ");
   const std::string text = file(dir / "scenario.toml");

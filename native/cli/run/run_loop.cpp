@@ -162,16 +162,21 @@ int resume_run(const std::string& dir, const RunOptions& o) {
                           "): --set changes it from there on; give --duration T too, to run it "
                           "on to T s");
   }
+  if (o.duration >= 0.0 && !(o.duration > c->state.time))
+    throw InvalidArgument(fmt::format("--duration {:g}: the run is at t = {:.9g} s already; "
+                                      "allowed: a longer whole length",
+                                      o.duration, c->state.time));
+  if (!set.empty()) { // the values checked before anything is touched
+    std::vector<std::string> all = book.overrides();
+    all.insert(all.end(), set.begin(), set.end());
+    load_scenario(text, scenario_file, all);
+  }
   std::error_code cut;
   run::cut_back_outputs(d, book.file_bytes, book.snapshots, cut);
   if (cut)
     throw WriteError("cannot cut the outputs of '" + dir +
                      "' back to its checkpoint: " + cut.message());
   Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
-  if (o.duration >= 0.0 && !(o.duration > sim.time()))
-    throw InvalidArgument(fmt::format("--duration {:g}: the run is at t = {:.9g} s already; "
-                                      "allowed: a longer whole length",
-                                      o.duration, sim.time()));
   run::report_opening(sim, o.quiet);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
