@@ -226,6 +226,10 @@ Driver read_driver(Reader& r, std::uint32_t version) {
 
 } // namespace
 
+std::uint64_t fnv1a_hash(std::string_view bytes) {
+  return fnv1a(bytes.data(), bytes.size());
+}
+
 std::string encode_checkpoint(const Checkpoint& c) {
   Writer w;
   const World& world = c.state.world;

@@ -3,6 +3,7 @@
 // with a magic word, a format version and a checksum, written atomically.
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "simulation/simulation.hpp"
 
@@ -32,6 +33,8 @@ inline constexpr std::uint32_t checkpoint_version = 9;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);
+/// FNV-1a's 64-bit hash of `bytes`, the checksum a checkpoint is sealed with.
+std::uint64_t fnv1a_hash(std::string_view bytes);
 /// A checkpoint's bytes around its payload (every field, in order): the magic word, the format
 /// version, the payload's size, the payload and its checksum. encode_checkpoint seals what it
 /// writes; the checkpoint fuzzer seals what it makes up, so that its inputs get past the

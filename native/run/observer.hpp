@@ -23,6 +23,10 @@ inline constexpr std::uint64_t never = std::numeric_limits<std::uint64_t>::max()
 /// of 0 (off). An interval beyond any run is cut to a count no run reaches.
 std::uint64_t steps_of(double interval, double dt);
 
+/// The steps until `time` (s) at a timestep `dt` (s), rounded up; a count beyond any run is cut
+/// to one no run reaches.
+std::uint64_t steps_until(double time, double dt);
+
 /// The first multiple of `every` after `step` (`never` when every is 0).
 inline std::uint64_t next_multiple(std::uint64_t step, std::uint64_t every) {
   return every == 0 ? never : (step / every + 1) * every;

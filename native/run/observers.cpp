@@ -13,6 +13,10 @@ std::uint64_t steps_of(double interval, double dt) {
       1, static_cast<std::uint64_t>(std::clamp(std::round(interval / dt), 0.0, 1e18)));
 }
 
+std::uint64_t steps_until(double time, double dt) {
+  return static_cast<std::uint64_t>(std::clamp(std::ceil(time / dt - 1e-9), 0.0, 1e18));
+}
+
 std::vector<std::unique_ptr<Observer>> observers_for(RunContext& c, RunProgress& progress,
                                                      SnapshotObserver*& snapshots) {
   std::vector<std::unique_ptr<Observer>> list;

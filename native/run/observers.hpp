@@ -164,6 +164,7 @@ public:
 private:
   bool condition_holds(const RunContext& c) const;
   void end_stage(RunContext& c, const char* why);
+  void write_row(const RunContext& c, const char* why); ///< stages.csv's row of the stage now
   std::uint64_t thermo_every_;
   std::ostream* log_ = nullptr;
   const RunContext* c_;

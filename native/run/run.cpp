@@ -17,11 +17,6 @@ namespace talus::run {
 
 namespace {
 
-// A count of steps from a time in steps, rounded up; one beyond any run is cut (see steps_of).
-std::uint64_t steps_until(double time, double dt) {
-  return static_cast<std::uint64_t>(std::clamp(std::ceil(time / dt - 1e-9), 0.0, 1e18));
-}
-
 // output.checkpoint_interval: a checkpoint now and then, after the other observers have looked.
 class CheckpointEvent final : public Observer {
 public:
@@ -43,12 +38,9 @@ Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunContr
       files_(std::move(dir), fresh),
       progress_(o_.quiet, s.simulation.duration, s.output.thermo_interval, sim_.config().timestep),
       c_{s_, sim_, book_, files_} {
-  const double dt = sim_.config().timestep;
   c_.quiet = o_.quiet;
   c_.progress_on_terminal = progress_.on_terminal();
-  c_.total_steps = steps_until(s.simulation.duration, dt);
-  c_.stop_step =
-      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
+  set_length();
   c_.session_wall = [this] { return wall_now() - session_wall_before_; };
   c_.change = [this](const std::vector<std::string>& set, const std::string& source) {
     change(set, source);
@@ -56,6 +48,24 @@ Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunContr
   checkpointed_ = !book_.file_bytes.empty(); // resumed: from a checkpoint
   checkpointed_snapshots_ = book_.snapshots;
   make_observers();
+}
+
+// The run's length in steps, and where this session stops, from the scenario as it stands.
+void Run::set_length() {
+  const double dt = sim_.config().timestep;
+  c_.total_steps = steps_until(s_.simulation.duration, dt);
+  c_.stop_step =
+      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
+  progress_.set_duration(s_.simulation.duration);
+}
+
+// After a change: the events and observers of the changed scenario, from their saved state.
+void Run::refresh_observers() {
+  make_observers();
+  for (auto& o : observers_) o->open(c_);
+  due_.clear();
+  for (const auto& o : observers_) due_.push_back(o->next_look(sim_.step_count()));
+  observers_stale_ = false;
 }
 
 void Run::make_observers() {
@@ -74,9 +84,7 @@ RunOutcome Run::go() {
     if (files_.fresh()) start();
     if (!o_.set_now.empty()) {
       change(o_.set_now, o_.set_now_source);
-      make_observers();
-      for (auto& o : observers_) o->open(c_);
-      observers_stale_ = false;
+      refresh_observers();
     }
     return steps();
   } catch (const WriteError& e) {
@@ -153,13 +161,7 @@ void Run::look_after_step() {
     due_[i] = observers_[i]->next_look(k);
     if (!c_.end.empty()) return; // an event ended the run: the end's records follow
   }
-  if (!observers_stale_) return;
-  // a change: the events and observers of the changed scenario, from their saved state
-  make_observers();
-  for (auto& o : observers_) o->open(c_);
-  due_.clear();
-  for (const auto& o : observers_) due_.push_back(o->next_look(k));
-  observers_stale_ = false;
+  if (observers_stale_) refresh_observers();
 }
 
 void Run::change(const std::vector<std::string>& set, const std::string& source) {
@@ -180,11 +182,7 @@ void Run::change(const std::vector<std::string>& set, const std::string& source)
     log << fmt::format("{:.9g},{},{},{}\n", sim_.time(), sim_.step_count(), quoted(source),
                        quoted(x));
   s_ = std::move(next);
-  const double dt = sim_.config().timestep;
-  c_.total_steps = steps_until(s_.simulation.duration, dt);
-  c_.stop_step =
-      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
-  progress_.set_duration(s_.simulation.duration);
+  set_length();
   observers_stale_ = true;
 }
 

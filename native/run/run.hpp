@@ -72,6 +72,8 @@ private:
   double wall_now() const;
 
   void make_observers();
+  void refresh_observers();
+  void set_length();
 
   Scenario s_;                   ///< the scenario as it stands now, with the changes made
   bool observers_stale_ = false; ///< a change was made: new observers after this look

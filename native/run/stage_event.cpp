@@ -11,7 +11,7 @@ namespace {
 
 // The step a stage that started at `start` reaches its duration, rounded up.
 std::uint64_t end_of(std::uint64_t start, double duration, double dt) {
-  return start + static_cast<std::uint64_t>(std::clamp(std::ceil(duration / dt - 1e-9), 1.0, 1e18));
+  return start + std::max<std::uint64_t>(1, steps_until(duration, dt));
 }
 
 } // namespace
@@ -75,9 +75,7 @@ void StageEvent::look(RunContext& c) {
 void StageEvent::end_stage(RunContext& c, const char* why) {
   const std::vector<StageSection>& stages = c.scenario.stages;
   const std::size_t k = c.book.stage;
-  const double dt = c.sim.config().timestep;
-  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, stages[k].name,
-                       static_cast<double>(c.book.stage_start) * dt, c.sim.time(), why);
+  write_row(c, why);
   c.book.stage = k + 1;
   c.book.stage_start = c.sim.step_count();
   if (!c.quiet && !c.progress_on_terminal)
@@ -97,9 +95,14 @@ void StageEvent::end_stage(RunContext& c, const char* why) {
 void StageEvent::finish(RunContext& c) {
   const std::size_t k = c.book.stage;
   if (k >= c.scenario.stages.size()) return; // its last row is written
-  const double dt = c.sim.config().timestep;
-  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, c.scenario.stages[k].name,
-                       static_cast<double>(c.book.stage_start) * dt, c.sim.time(), c.book.ended);
+  write_row(c, c.book.ended.c_str());
+}
+
+void StageEvent::write_row(const RunContext& c, const char* why) {
+  const std::size_t k = c.book.stage;
+  const double start = static_cast<double>(c.book.stage_start) * c.sim.config().timestep;
+  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, c.scenario.stages[k].name, start,
+                       c.sim.time(), why);
 }
 
 } // namespace talus::run

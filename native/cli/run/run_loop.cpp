@@ -46,13 +46,6 @@ void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBoo
   }
 }
 
-// FNV-1a: whether the run folder's scenario.toml is still the one the run started with.
-std::uint64_t text_hash(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ULL;
-  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ULL;
-  return h;
-}
-
 // Runs to the end (or a stop) in dir, answering SIGINT and SIGTERM with a checkpoint. `set`: the
 // changes this session makes as it starts (talus resume --set, --duration), from `source`.
 int go(const Scenario& s, Simulation sim, run::RunBook book, const fs::path& dir,
@@ -101,7 +94,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   const std::string text =
       to_toml(s) + describe_contact_pairs(built.world, built.pairs, built.config);
   write_file_atomically((folder.path() / "scenario.toml").string(), text);
-  book.scenario_hash = text_hash(text);
+  book.scenario_hash = fnv1a_hash(text);
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   run::report_opening(sim, o.quiet);
   return go(s, std::move(sim), std::move(book), folder.path(), o, true);
@@ -138,7 +131,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
                           (d / "scenario.toml").string() + " --out " + dir);
   if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
   run::RunBook book = run::RunBook::decode(c->run_data);
-  if (book.scenario_hash != 0 && text_hash(text) != book.scenario_hash)
+  if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
     throw InvalidArgument(
         "'" + scenario_file +
         "' was edited after the run started; a run goes on with the scenario it started with, "
