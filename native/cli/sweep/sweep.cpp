@@ -151,7 +151,9 @@ SweepPlan plan_sweep(const std::string& scenario, std::vector<std::string> sets,
       pick[a] = 0;
     }
   }
-  for (const SweepRun& r : p.runs) sweep_run_scenario(p, r); // every run's scenario must resolve
+  // every run's scenario must resolve; the index names the seed each run runs with (a varied
+  // simulation.seed, say, rather than the scenario's)
+  for (SweepRun& r : p.runs) r.seed = sweep_run_scenario(p, r).simulation.seed;
   return p;
 }
 
