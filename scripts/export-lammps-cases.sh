@@ -23,7 +23,7 @@ export_case() { # name, then the overrides
   local name=$1
   shift
   echo "== $name"
-  "$talus" export lammps "inputs/$name/scenario.toml" "inputs/$name/lammps" --quiet "$@"
+  "$talus" export lammps "inputs/$name/scenario.toml" "inputs/$name/lammps" --quiet --replace "$@"
 }
 
 export_case collisions

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One run folder, one process: a second talus run or resume on a folder in use is refused with the
 # holder's pid; two resumes at once leave one whole thermo.csv. A run killed while settling (no
-# checkpoint yet) is started again by the command resume names; one killed just after its start
-# resumes from the checkpoint every run writes at t = 0.
+# checkpoint yet) is started again by talus resume; one killed just after its start resumes from
+# the checkpoint every run writes at t = 0. talus export lammps never writes into a run folder.
 set -u
 talus="$1"
 dir="$(mktemp -d)"
@@ -25,12 +25,21 @@ echo "ok: a folder in use is refused, naming process $pid"
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
 [ -e "$dir/a/checkpoint.bin" ] && fail "killed too late: the run had started stepping"
-out=$("$talus" resume "$dir/a" 2>&1) && fail "resume of a run killed while settling succeeded"
-command=$(echo "$out" | sed -n 's/.*start it again with: //p')
-[ "$command" = "talus run $dir/a/scenario.toml --out $dir/a" ] || fail "resume said: $out"
-${command/talus/$talus} --quiet || fail "the command resume gave failed: $command"
+# a requeue that resumes after each kill: each resume starts the run again while settling, and
+# is killed there too, twice; the third finishes
+for kill in 1 2; do
+  "$talus" resume "$dir/a" > "$dir/resume$kill.txt" 2>&1 &
+  pid=$!
+  for _ in $(seq 1 400); do grep -q "settling: t" "$dir/resume$kill.txt" && break; sleep 0.05; done
+  grep -q "stopped before its first checkpoint (while settling, say): starting it again" \
+    "$dir/resume$kill.txt" || fail "resume $kill said: $(cat "$dir/resume$kill.txt")"
+  kill -KILL "$pid"
+  wait "$pid" 2>/dev/null
+  [ -e "$dir/a/checkpoint.bin" ] && fail "resume $kill killed too late: the run had started stepping"
+done
+"$talus" resume "$dir/a" --quiet || fail "the third resume of a run killed while settling"
 grep -q '"ended_by": "duration"' "$dir/a/run.json" || fail "the restarted run did not finish"
-echo "ok: a run killed while settling starts again with: $command"
+echo "ok: a run killed while settling, twice more while resumed, starts again and finishes"
 
 # killed at its very start, before it wrote its scenario: the lock file, the snapshots folder and
 # a half-written scenario.toml.tmp; talus run into it starts afresh, resume says so
@@ -77,3 +86,24 @@ grep -q "is in use by process [0-9]" "$dir/r1.txt" "$dir/r2.txt" || fail "no ref
 awk -F, 'NR > 1 { if ($1 + 0 < last) { print "time runs backwards at line " NR; exit 1 }
                   last = $1 + 0 }' "$dir/c/thermo.csv" || fail "thermo.csv"
 echo "ok: of two resumes at once one is refused; thermo.csv runs forward"
+
+# talus export lammps: a run folder (locked or not) and a non-empty folder are refused, nothing
+# written; --replace writes over a previous export only
+before=$(cd "$dir/b" && ls -la --time-style=+%s.%N | md5sum)
+out=$("$talus" export lammps collisions "$dir/b" --quiet 2>&1) && fail "an export into a run folder"
+echo "$out" | grep -q "holds a run or a sweep" || fail "export into a run folder said: $out"
+out=$("$talus" export lammps collisions "$dir/b" --quiet --replace 2>&1) && fail "--replace into a run folder"
+[ "$(cd "$dir/b" && ls -la --time-style=+%s.%N | md5sum)" = "$before" ] || fail "the refused export touched the run folder"
+"$talus" run "${settle[@]}" --out "$dir/e" > /dev/null &
+pid=$!
+wait_for "$dir/e/scenario.toml"
+out=$("$talus" export lammps collisions "$dir/e" --quiet 2>&1) && fail "an export into a folder in use"
+echo "$out" | grep -q "in use by process $pid" || fail "export into a folder in use said: $out"
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+mkdir -p "$dir/x" && echo note > "$dir/x/notes.txt"
+out=$("$talus" export lammps collisions "$dir/x" --quiet 2>&1) && fail "an export into a non-empty folder"
+echo "$out" | grep -q "already exists and is not empty.*--replace" || fail "export into a non-empty folder said: $out"
+"$talus" export lammps collisions "$dir/x2" --quiet || fail "an export into a new folder"
+"$talus" export lammps collisions "$dir/x2" --quiet --replace || fail "an export over an export"
+echo "ok: talus export lammps refuses run folders and non-empty folders"

@@ -1,9 +1,11 @@
 // `talus export lammps SCENARIO DIR`: a native scenario as a LAMMPS case for the talus package.
+#include <filesystem>
 #include <memory>
 
 #include <fmt/core.h>
 
 #include "cli/commands.hpp"
+#include "cli/run/run_folder.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "io/lammps_export.hpp"
 #include "scenario/build.hpp"
@@ -21,6 +23,40 @@ std::string command_line(const std::string& scenario, const std::string& dir,
   return out;
 }
 
+// A run or sweep folder's marks: an export never writes among them.
+bool holds_a_run(const std::filesystem::path& d) {
+  for (const char* mark :
+       {".lock", "checkpoint.bin", "checkpoint.prev.bin", "run.json", "sweep.json", "snapshots"})
+    if (std::filesystem::exists(d / mark)) return true;
+  return false;
+}
+
+// The folder must be new or empty, as talus run --out wants it; with --replace it may hold a
+// previous export, never a run's or a sweep's files (a run folder's scenario.toml is its record).
+void check_export_folder(const std::string& dir, bool replace) {
+  namespace fs = std::filesystem;
+  const fs::path d(dir);
+  if (!fs::exists(d)) return;
+  if (!fs::is_directory(d))
+    throw InvalidArgument("'" + dir + "' is a file, not a folder; choose another folder");
+  if (fs::is_empty(d)) return;
+  if (holds_a_run(d)) {
+    std::string holder;
+    if (in_use(d, holder))
+      throw InvalidArgument(
+          "'" + dir + "' is in use by " +
+          (holder.empty() ? std::string("another process") : "process " + holder) +
+          " (a run or a sweep); choose another folder");
+    throw InvalidArgument("'" + dir +
+                          "' holds a run or a sweep (its checkpoint, run.json, lock or snapshots), "
+                          "whose files an export would overwrite; choose another folder");
+  }
+  if (!replace)
+    throw InvalidArgument("'" + dir +
+                          "' already exists and is not empty; choose another folder, or give "
+                          "--replace to write over a previous export there");
+}
+
 } // namespace
 
 void add_export_command(CLI::App& app) {
@@ -28,6 +64,7 @@ void add_export_command(CLI::App& app) {
     std::string scenario, dir;
     std::vector<std::string> set;
     bool quiet = false;
+    bool replace = false;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand("export", "write a scenario for another engine");
@@ -41,8 +78,12 @@ void add_export_command(CLI::App& app) {
       ->required();
   lammps->add_option("--set", o->set, "override a key, e.g. --set geometry.walls=particles");
   lammps->add_flag("--quiet", o->quiet, "no progress output");
+  lammps->add_flag("--replace", o->replace,
+                   "DIR may hold a previous export, whose files are written over (never a run "
+                   "or a sweep folder)");
   lammps->callback([o] {
     const Scenario s = resolve_scenario(o->scenario, o->set);
+    check_export_folder(o->dir, o->replace); // before the settling, which can take minutes
     try {
       check_lammps_export(s);
     } catch (const InvalidArgument& e) {
@@ -70,6 +111,7 @@ void add_export_command(CLI::App& app) {
                  "talus export lammps: warning: {} did not settle within "
                  "packing.settle_max_time ({} s); the case starts from where it got\n",
                  s.name, s.packing.settle_max_time);
+    check_export_folder(o->dir, o->replace); // a run may have started there meanwhile
     write_lammps_case(c, o->dir);
     if (!o->quiet)
       fmt::print(

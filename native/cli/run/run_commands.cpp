@@ -78,38 +78,7 @@ void add_run_command(CLI::App& app) {
     if (!o->run.quiet)
       fmt::print("talus run {}: {}\n", s.name,
                  s.description.empty() ? "(no description)" : s.description);
-    BuiltScenario built;
-    try {
-      Scenario settle = s; // --threads applies to the settling too
-      if (o->run.threads >= 0) settle.simulation.threads = o->run.threads;
-      built = build_scenario(settle, [&](double t, double ke) {
-        if (o->run.quiet) return;
-        fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
-        std::fflush(stdout);
-      });
-    } catch (const ScenarioError& e) { // say which file the key is in; leave nothing behind
-      folder.discard();
-      throw ScenarioError(o->scenario + ": " + e.what());
-    } catch (...) {
-      folder.discard();
-      throw;
-    }
-    if (!o->run.quiet) {
-      std::size_t free = built.world.particles.count(Kind::free);
-      fmt::print("  {} grains, {} wall particles, {} wall segments; dt = {:.4g} s (collision time "
-                 "{:.4g} s){}\n",
-                 free, built.world.particles.size() - free, built.world.walls.size(),
-                 built.config.timestep, built.collision_time,
-                 built.settle_time > 0 ? fmt::format("; settled in {:.3f} s", built.settle_time)
-                                       : "");
-      if (const RestitutionError e = expected_restitution_error(built); !e.basis.empty())
-        fmt::print("  dt = collision time / {:.4g}: restitution error about {:.1e} ({}; "
-                   "docs/accuracy.md)\n",
-                   built.collision_time / built.config.timestep, e.error, e.basis);
-      if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
-      std::fflush(stdout);
-    }
-    exit_status() = start_run(s, std::move(built), std::move(folder), o->run);
+    exit_status() = settle_and_start(s, std::move(folder), o->run, o->scenario);
   });
 }
 

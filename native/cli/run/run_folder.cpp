@@ -49,9 +49,22 @@ int take_lock(const fs::path& dir, std::string& holder) {
   return fd;
 }
 
+bool in_use(const fs::path& dir, std::string& holder) {
+  const fs::path path = dir / lock_name;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false; // no lock file: no run holds it
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  ::close(fd);
+  if (held) {
+    std::ifstream in(path);
+    std::getline(in, holder);
+  }
+  return held;
+}
+
 namespace {
 
-[[noreturn]] void in_use(const fs::path& dir, const std::string& holder) {
+[[noreturn]] void refuse_in_use(const fs::path& dir, const std::string& holder) {
   throw InvalidArgument("run folder '" + dir.string() + "' is in use by " +
                         (holder.empty() ? std::string("another process") : "process " + holder) +
                         " (talus run or talus resume); wait for it to end, or stop it (a stopped "
@@ -82,7 +95,7 @@ RunFolder RunFolder::create(const std::string& dir, const Scenario& s) {
   fs::create_directories(d);
   std::string holder;
   const int fd = take_lock(d, holder);
-  if (fd < 0) in_use(d, holder);
+  if (fd < 0) refuse_in_use(d, holder);
   RunFolder folder(d, fd);
   folder.created_ = !existed;
   if (!empty_but_lock(d)) {
@@ -92,19 +105,23 @@ RunFolder RunFolder::create(const std::string& dir, const Scenario& s) {
                             "continue it with: talus resume " +
                             dir);
     // a run stopped before its first checkpoint: nothing in it can be continued
-    for (const auto& e : fs::directory_iterator(d))
-      if (e.path().filename() != lock_name) fs::remove_all(e.path());
   }
-  fs::create_directories(d / "snapshots");
-  write_file_atomically((d / "scenario.toml").string(), to_toml(s));
+  folder.start_afresh(s);
   return folder;
+}
+
+void RunFolder::start_afresh(const Scenario& s) {
+  for (const auto& e : fs::directory_iterator(dir_))
+    if (e.path().filename() != lock_name) fs::remove_all(e.path());
+  fs::create_directories(dir_ / "snapshots");
+  write_file_atomically((dir_ / "scenario.toml").string(), to_toml(s));
 }
 
 RunFolder RunFolder::open(const std::string& dir) {
   const fs::path d(dir);
   std::string holder;
   const int fd = take_lock(d, holder);
-  if (fd < 0) in_use(d, holder);
+  if (fd < 0) refuse_in_use(d, holder);
   return RunFolder(d, fd);
 }
 

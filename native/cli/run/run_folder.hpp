@@ -26,6 +26,9 @@ public:
   ~RunFolder();
 
   const std::filesystem::path& path() const { return dir_; }
+  /// Empties the folder but for its lock, makes snapshots/ and writes the scenario as
+  /// scenario.toml: a new run's start (a run stopped before its first checkpoint starts again).
+  void start_afresh(const Scenario& s);
   /// Removes what create() wrote (the scenario could not be built: nothing is left behind).
   void discard();
 
@@ -40,6 +43,10 @@ private:
 /// file descriptor, held until closed or the process ends, or -1 with the holder's pid in
 /// `holder` (empty if unknown).
 int take_lock(const std::filesystem::path& dir, std::string& holder);
+
+/// Whether a process holds dir's lock (its pid in `holder`, empty if unknown); looks without
+/// taking it or writing anything.
+bool in_use(const std::filesystem::path& dir, std::string& holder);
 
 /// Whether dir holds a run that never wrote a checkpoint (and has not ended): a folder talus made
 /// (it has the lock file or scenario.toml; not a sweep folder) with no checkpoint and no run.json.

@@ -86,6 +86,27 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
   return c;
 }
 
+// A run stopped before its first checkpoint (killed while settling, say) has nothing to
+// continue from: it starts again from its scenario.toml, which holds the whole resolved
+// scenario, so a requeue that resumes after each kill always gets somewhere. --set and
+// --duration apply from its start.
+int start_again(const std::string& text, const std::string& scenario_file, RunFolder& folder,
+                const RunOptions& o) {
+  std::vector<std::string> set = o.set;
+  for (const std::string& x : o.set)
+    if (!changeable_during_run(change_key(x)))
+      throw InvalidArgument("--set " + x + ": '" + change_key(x) +
+                            "' cannot change during a run; allowed: " + changeable_keys_text());
+  if (o.duration >= 0.0) set.push_back(fmt::format("simulation.duration={}", o.duration));
+  const Scenario s = load_scenario(text, scenario_file, set);
+  if (!o.quiet)
+    fmt::print("'{}' was stopped before its first checkpoint (while settling, say): starting it "
+               "again from its scenario.toml\n",
+               folder.path().string());
+  folder.start_afresh(s);
+  return settle_and_start(s, std::move(folder), o, scenario_file);
+}
+
 } // namespace
 
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
@@ -108,12 +129,13 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   const fs::path d(dir);
   if (!fs::exists(d / "scenario.toml") && !never_checkpointed(d))
     throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
-  const RunFolder folder = RunFolder::open(dir); // held until the run ends
-  if (!fs::exists(d / "scenario.toml"))          // killed before it wrote even its scenario
+  RunFolder folder = RunFolder::open(dir); // held until the run ends
+  if (!fs::exists(d / "scenario.toml"))    // killed before it wrote even its scenario
     throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped at its start; " +
                           "start it again with: talus run SCENARIO --out " + dir);
   const std::string scenario_file = (d / "scenario.toml").string();
   const std::string text = read_file(scenario_file);
+  if (never_checkpointed(d)) return start_again(text, scenario_file, folder, o);
   std::optional<Checkpoint> c;
   for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
     const fs::path p = d / name;
@@ -125,10 +147,6 @@ int resume_run(const std::string& dir, const RunOptions& o) {
       fmt::print(stderr, "talus: {}; trying the previous checkpoint\n", e.what());
     }
   }
-  if (!c && never_checkpointed(d))
-    throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped before its first " +
-                          "(while settling, say); start it again with: talus run " +
-                          (d / "scenario.toml").string() + " --out " + dir);
   if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
   run::RunBook book = run::RunBook::decode(c->run_data);
   if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)

@@ -27,6 +27,11 @@ inline constexpr int exit_stopped = 4;       ///< stopped by --stop-at after a c
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o);
 /// Starts a new run in `dir` (see RunFolder::create for what dir may hold) from a built scenario.
 int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o);
+/// Builds (settles) `s` in `folder` and starts the run, saying what was built unless quiet;
+/// `source` (the scenario as the user named it) prefixes a scenario error, after which the
+/// folder is left as it was found.
+int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
+                     const std::string& source);
 /// Continues the run in `dir` from its last good checkpoint.
 int resume_run(const std::string& dir, const RunOptions& o);
 
