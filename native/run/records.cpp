@@ -149,6 +149,24 @@ std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& bo
       ended);
 }
 
+std::string outputs_short_of(const fs::path& dir,
+                             const std::map<std::string, std::uint64_t>& file_bytes,
+                             std::uint64_t snapshots) {
+  for (const auto& [name, bytes] : file_bytes) {
+    std::error_code e;
+    const std::uint64_t size = fs::file_size(dir / name, e);
+    if (e) return fmt::format("{} is missing; it held {} bytes", (dir / name).string(), bytes);
+    if (size < bytes)
+      return fmt::format("{} holds {} bytes, fewer than the {} it held then (its tail was lost)",
+                         (dir / name).string(), size, bytes);
+  }
+  for (std::uint64_t k = 0; k < snapshots; ++k) {
+    const fs::path f = dir / "snapshots" / fmt::format("particles_{:06d}.vtp", k);
+    if (!fs::exists(f)) return f.string() + " is missing";
+  }
+  return {};
+}
+
 void cut_back_outputs(const fs::path& dir, const std::map<std::string, std::uint64_t>& file_bytes,
                       std::uint64_t snapshots, std::error_code& ec) {
   const auto keep = [&](std::error_code e) {

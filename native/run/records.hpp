@@ -42,6 +42,13 @@ void write_collections_of(const std::filesystem::path& dir, std::uint64_t snapsh
 std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& book, double wall,
                      double session_wall, std::uint64_t steps_done, const std::string& ended);
 
+/// What in dir's outputs falls short of what a checkpoint vouches for (empty: nothing): a file
+/// in `file_bytes` missing or shorter than its count (its tail lost: a crash before it reached
+/// the disk), or one of the first `snapshots` snapshots missing. A resume from such a
+/// checkpoint would leave a gap, so it is refused, never padded.
+std::string outputs_short_of(const std::filesystem::path& dir,
+                             const std::map<std::string, std::uint64_t>& file_bytes,
+                             std::uint64_t snapshots);
 /// Cuts the outputs in dir back to what a checkpoint counts: each file in `file_bytes` to its size
 /// there, and the snapshots from number `snapshots` on removed. Errors go to `ec`; it goes on past
 /// them.

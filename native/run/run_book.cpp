@@ -1,6 +1,11 @@
 // The run's bookkeeping (RunBook) as the text saved inside every checkpoint: one line per
 // item, numbers at full precision so a resume continues exactly.
+#include <chrono>
+#include <cstdio>
+#include <random>
 #include <sstream>
+
+#include <fmt/core.h>
 
 #include "run/run_book.hpp"
 
@@ -96,7 +101,8 @@ std::string RunBook::encode() const {
   write_numbers(o << "\nledger_state ", ledger_state);
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
-  o << "stage " << stage << " " << stage_start << "\nscenario_hash " << scenario_hash << "\n";
+  o << "stage " << stage << " " << stage_start << "\nscenario_hash " << scenario_hash << "\nrun_id "
+    << run_id << "\n";
   for (const RunChange& c : changes) {
     o << "change " << c.step << " " << c.time << " " << escaped(c.source) << " " << c.set.size();
     for (const std::string& x : c.set) o << " " << escaped(x);
@@ -146,6 +152,8 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.stage >> b.stage_start;
     else if (key == "scenario_hash")
       l >> b.scenario_hash;
+    else if (key == "run_id")
+      l >> b.run_id;
     else if (key == "change") {
       RunChange c;
       std::string word;
@@ -175,6 +183,22 @@ RunBook RunBook::decode(const std::string& text) {
     }
   }
   return b;
+}
+
+std::uint64_t new_run_id() {
+  std::random_device device;
+  const auto now = std::chrono::system_clock::now().time_since_epoch().count();
+  std::uint64_t id = (std::uint64_t{device()} << 32) ^ device() ^ static_cast<std::uint64_t>(now);
+  return id == 0 ? 1 : id;
+}
+
+std::string run_id_line(std::uint64_t id) {
+  return fmt::format("# talus run {:016x}: this run's scenario, as it started\n", id);
+}
+
+std::uint64_t run_id_in(const std::string& scenario_text) {
+  unsigned long long id = 0;
+  return std::sscanf(scenario_text.c_str(), "# talus run %16llx:", &id) == 1 ? id : 0;
 }
 
 } // namespace talus::run

@@ -39,6 +39,7 @@ struct RunBook {
   std::uint64_t stage_start = 0;   ///< the step it started at
   std::vector<RunChange> changes;  ///< in the order they were made
   std::uint64_t scenario_hash = 0; ///< of the run folder's scenario.toml (0: not recorded)
+  std::uint64_t run_id = 0;        ///< the run's identity (run_id_line; 0: not recorded)
   /// Every change's "key=value" in order: the scenario of the run now is its folder's
   /// scenario.toml with these.
   std::vector<std::string> overrides() const;
@@ -47,5 +48,13 @@ struct RunBook {
   std::string encode() const;
   static RunBook decode(const std::string& text);
 };
+
+/// A new run's identity: random, so two runs (of one scenario too) never share it.
+std::uint64_t new_run_id();
+/// The first line of a run folder's scenario.toml: a comment naming the run, which binds the
+/// folder to the checkpoints its run writes.
+std::string run_id_line(std::uint64_t id);
+/// The run named by a scenario.toml's first line (0: none).
+std::uint64_t run_id_in(const std::string& scenario_text);
 
 } // namespace talus::run

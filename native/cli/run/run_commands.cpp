@@ -131,8 +131,9 @@ void add_checkpoint_command(CLI::App& app) {
                     "(two runs with the same hash have bit-identical states)");
   cmd->add_option("dir", *dir, "the run folder")->required()->check(CLI::ExistingDirectory);
   cmd->callback([dir] {
-    const std::string file = (fs::path(*dir) / "checkpoint.bin").string();
-    const Checkpoint c = decode_checkpoint(read_file(file), file);
+    // the checkpoint talus resume would continue from
+    const fs::path d(*dir);
+    const auto [c, book] = checkpoint_to_resume(d, read_file((d / "scenario.toml").string()));
     const Particles& p = c.state.world.particles;
     std::uint64_t h = 1469598103934665603ULL;
     const auto mix = [&h](const void* data, std::size_t bytes) {

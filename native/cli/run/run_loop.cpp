@@ -112,8 +112,9 @@ int start_again(const std::string& text, const std::string& scenario_file, RunFo
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
   run::RunBook book = run::RunBook::of(built);
   // the resolved scenario, now with the dampers derived for the built grains
-  const std::string text =
-      to_toml(s) + describe_contact_pairs(built.world, built.pairs, built.config);
+  book.run_id = run::new_run_id();
+  const std::string text = run::run_id_line(book.run_id) + to_toml(s) +
+                           describe_contact_pairs(built.world, built.pairs, built.config);
   write_file_atomically((folder.path() / "scenario.toml").string(), text);
   book.scenario_hash = fnv1a_hash(text);
   Simulation sim(std::move(built.world), with_threads(built.config, o));
@@ -123,6 +124,54 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
 
 int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
   return start_run(s, std::move(built), RunFolder::create(dir, s), o);
+}
+
+std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const fs::path& d,
+                                                         const std::string& text) {
+  const std::string dir = d.string(), scenario_file = (d / "scenario.toml").string();
+  std::vector<std::string> why;
+  for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
+    const fs::path p = d / name;
+    if (!fs::exists(p)) continue;
+    if (!why.empty()) fmt::print(stderr, "talus: {}; trying the previous checkpoint\n", why.back());
+    Checkpoint c;
+    try {
+      c = decode_checkpoint(read_file(p.string()), p.string());
+    } catch (const CheckpointError& e) {
+      why.push_back(e.what());
+      continue;
+    }
+    run::RunBook book = run::RunBook::decode(c.run_data);
+    const std::uint64_t folder_run = run::run_id_in(text);
+    if (book.run_id != 0 && folder_run != 0 && book.run_id != folder_run) {
+      why.push_back(fmt::format("{} belongs to another run ({:016x}, {} particles at t = {:.6g} "
+                                "s) than '{}' ({:016x}); a checkpoint continues only the run "
+                                "that wrote it",
+                                p.string(), book.run_id, c.state.world.particles.size(),
+                                c.state.time, scenario_file, folder_run));
+      continue;
+    }
+    if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
+      throw InvalidArgument(
+          "'" + scenario_file +
+          "' was edited after the run started; a run goes on with the scenario it started with, "
+          "so the edit would not apply. Undo it, and change the run from its resume point with "
+          "talus resume " +
+          dir + " --set KEY=VALUE (or --duration T)");
+    if (const std::string short_of = run::outputs_short_of(d, book.file_bytes, book.snapshots);
+        !short_of.empty()) {
+      why.push_back(fmt::format("the outputs fall short of {} (t = {:.6g} s): {}", p.string(),
+                                c.state.time, short_of));
+      continue;
+    }
+    return {std::move(c), std::move(book)};
+  }
+  if (why.empty()) throw InvalidArgument("no checkpoint in '" + dir + "'");
+  std::string all;
+  for (const std::string& w : why) all += (all.empty() ? "" : "; ") + w;
+  throw InvalidArgument("'" + dir + "' cannot be resumed: " + all +
+                        ". Put back the run's own files, or start it again with: talus run " +
+                        scenario_file + " --out NEW_FOLDER");
 }
 
 int resume_run(const std::string& dir, const RunOptions& o) {
@@ -136,26 +185,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   const std::string scenario_file = (d / "scenario.toml").string();
   const std::string text = read_file(scenario_file);
   if (never_checkpointed(d)) return start_again(text, scenario_file, folder, o);
-  std::optional<Checkpoint> c;
-  for (const char* name : {"checkpoint.bin", "checkpoint.prev.bin"}) {
-    const fs::path p = d / name;
-    if (!fs::exists(p)) continue;
-    try {
-      c = decode_checkpoint(read_file(p.string()), p.string());
-      break;
-    } catch (const CheckpointError& e) {
-      fmt::print(stderr, "talus: {}; trying the previous checkpoint\n", e.what());
-    }
-  }
-  if (!c) throw InvalidArgument("no usable checkpoint in '" + dir + "'");
-  run::RunBook book = run::RunBook::decode(c->run_data);
-  if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
-    throw InvalidArgument(
-        "'" + scenario_file +
-        "' was edited after the run started; a run goes on with the scenario it started with, "
-        "so the edit would not apply. Undo it, and change the run from its resume point with "
-        "talus resume " +
-        dir + " --set KEY=VALUE (or --duration T)");
+  auto [c, book] = checkpoint_to_resume(d, text);
   // the run's scenario now: the file with the changes made so far (stages, resumes)
   const Scenario s = load_scenario(text, scenario_file, book.overrides());
   std::vector<std::string> set = o.set;
@@ -173,10 +203,10 @@ int resume_run(const std::string& dir, const RunOptions& o) {
                           "): --set changes it from there on; give --duration T too, to run it "
                           "on to T s");
   }
-  if (o.duration >= 0.0 && !(o.duration > c->state.time))
+  if (o.duration >= 0.0 && !(o.duration > c.state.time))
     throw InvalidArgument(fmt::format("--duration {:g}: the run is at t = {:.9g} s already; "
                                       "allowed: a longer whole length",
-                                      o.duration, c->state.time));
+                                      o.duration, c.state.time));
   if (!set.empty()) { // the values checked before anything is touched
     std::vector<std::string> all = book.overrides();
     all.insert(all.end(), set.begin(), set.end());
@@ -187,7 +217,7 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   if (cut)
     throw WriteError("cannot cut the outputs of '" + dir +
                      "' back to its checkpoint: " + cut.message());
-  Simulation sim = Simulation::restore(std::move(c->state), with_threads(c->config, o));
+  Simulation sim = Simulation::restore(std::move(c.state), with_threads(c.config, o));
   run::report_opening(sim, o.quiet);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());

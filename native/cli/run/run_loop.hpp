@@ -1,10 +1,14 @@
 #pragma once
 // `talus run` and `talus resume`: a run (run/run.hpp) in a run folder made and locked here,
 // with the signals that stop it at a checkpoint.
+#include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/run/run_folder.hpp"
+#include "io/checkpoint.hpp"
+#include "run/run_book.hpp"
 #include "scenario/build.hpp"
 #include "scenario/scenario.hpp"
 
@@ -32,6 +36,12 @@ int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, co
 /// folder is left as it was found.
 int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
                      const std::string& source);
+/// The checkpoint a resume of run folder `d` continues from, with its book: the newest that
+/// belongs to the folder's run (run::run_id_line), of its unedited scenario (`scenario_text`),
+/// whose outputs are whole (run::outputs_short_of); the previous one when the newest is not.
+/// Throws InvalidArgument with every reason when none is.
+std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const std::filesystem::path& d,
+                                                         const std::string& scenario_text);
 /// Continues the run in `dir` from its last good checkpoint.
 int resume_run(const std::string& dir, const RunOptions& o);
 
