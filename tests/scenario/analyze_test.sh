@@ -18,4 +18,10 @@ if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   [ -s "$dir/run/analysis/thermo.png" ] && [ -s "$dir/run/analysis/forces.png" ] || { echo "charts missing"; exit 1; }
 fi
 "$talus" analyze "$dir/run" nonsense 2> /dev/null && { echo "a bad analysis name was accepted"; exit 1; }
+# a chart that fails (a damaged thermo.csv) makes the command fail, naming the chart
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  printf 'not,a,number\0\0\0\n' >> "$dir/run/thermo.csv"
+  "$talus" analyze "$dir/run" thermo > "$dir/out.txt" 2>&1 && { cat "$dir/out.txt"; echo "a failed chart exited 0"; exit 1; }
+  grep -q "the chart .*thermo.png failed" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+fi
 exit 0

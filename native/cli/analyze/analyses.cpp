@@ -83,8 +83,16 @@ bool plot(const fs::path& out, const std::string& kind, const fs::path& csv, con
                   png.string(), json.empty() ? std::string() : fmt::format("'{}'", json.string()));
   const bool ok = std::system(cmd.c_str()) == 0;
   fs::remove(script);
-  if (!ok) fmt::print("  (the chart failed: {})\n", cmd);
+  if (!ok) {
+    fmt::print(stderr, "talus analyze: the chart {} failed: {}\n", png.string(), cmd);
+    ++failed_charts();
+  }
   return ok;
+}
+
+int& failed_charts() {
+  static int failed = 0;
+  return failed;
 }
 
 Section analyze_thermo(RunData& run) {

@@ -64,10 +64,14 @@ std::string csv_number(double v);
 std::vector<double> freeze_times(const std::filesystem::path& file);
 
 /// Draws a chart with the compiled-in matplotlib script; false (with a note) when matplotlib is
-/// missing or the script fails, so the CSV files still stand.
+/// missing or the script fails, so the CSV files still stand. A script that fails is counted in
+/// failed_charts().
 bool plot(const std::filesystem::path& out, const std::string& kind,
           const std::filesystem::path& csv, const std::filesystem::path& png,
           const std::filesystem::path& json = {});
+
+/// Charts whose script failed in this process: talus analyze then exits non-zero.
+int& failed_charts();
 
 Section analyze_thermo(RunData& run);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);

@@ -9,11 +9,11 @@
 #include <fmt/core.h>
 
 #include "cli/analyze/analyses.hpp"
-#include "cli/sweep/analyze_sweep.hpp"
 #include "cli/commands.hpp"
+#include "cli/sweep/analyze_sweep.hpp"
 #include "cli/sweep/sweep.hpp"
-#include "scenario/geometry.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/geometry.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;
@@ -160,6 +160,12 @@ void add_analyze_command(CLI::App& app) {
       analyze_segregation(run, o->a);
     } else {
       analyze_frost(run);
+    }
+    if (failed_charts() > 0) {
+      fmt::print(stderr,
+                 "talus analyze: {} chart(s) failed (above); the CSV and JSON files stand\n",
+                 failed_charts());
+      exit_status() = 1;
     }
   });
 }
