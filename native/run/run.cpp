@@ -153,7 +153,16 @@ std::uint64_t Run::steps_to_next_look() const {
   return next - k;
 }
 
+void Run::check_folder() const {
+  if (!o_.folder_gone) return;
+  if (const std::string why = o_.folder_gone(); !why.empty())
+    throw FolderGone(fmt::format("{} at t = {:.6g} s; the run stops and writes nothing more, so "
+                                 "that no other run's files are written into",
+                                 why, sim_.time()));
+}
+
 void Run::look_after_step() {
+  check_folder();
   const std::uint64_t k = sim_.step_count();
   for (std::size_t i = 0; i < observers_.size(); ++i) {
     if (due_[i] != k) continue;
@@ -209,6 +218,7 @@ void Run::checkpoint() {
 }
 
 void Run::checkpoint_at(double wall) {
+  check_folder();
   files_.flush();
   book_.file_bytes = files_.sizes();
   book_.wall_seconds = wall;
@@ -226,6 +236,7 @@ void Run::checkpoint_at(double wall) {
 // checkpoint holds, so the folder reads as the run stopped there and resume continues it.
 void Run::stop_on_write_failure(const WriteError& e) {
   files_.close();
+  check_folder(); // a folder deleted under the run is the true cause, and nothing is cut back
   const fs::path& dir = files_.dir();
   if (!checkpointed_) // nothing to continue from: the command that starts it again
     throw std::runtime_error(std::string(e.what()) +
@@ -247,6 +258,7 @@ void Run::stop_on_write_failure(const WriteError& e) {
 }
 
 void Run::write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {
+  check_folder();
   write_file_atomically(
       (files_.dir() / "run.json").string(),
       run_json(s_, sim_, book_, wall, wall - session_wall_before_, steps_done, ended));

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,15 @@ struct RunControl {
   /// Changes made as this session starts (talus resume --set, --duration), with their source.
   std::vector<std::string> set_now;
   std::string set_now_source;
+  /// Why the run folder is no longer this run's (deleted, or replaced by another run's), or
+  /// empty while it is: checked before the run writes, so it never writes into another folder.
+  std::function<std::string()> folder_gone;
+};
+
+/// The run folder was deleted or replaced under a running run (RunControl::folder_gone).
+class FolderGone : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
 };
 
 /// How a call of Run::go ended.
@@ -67,6 +77,7 @@ private:
   void follow_renumbering();
   void finish(const std::string& why);
   void checkpoint_at(double wall);
+  void check_folder() const; ///< throws FolderGone when RunControl::folder_gone says why
   [[noreturn]] void stop_on_write_failure(const WriteError& e);
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
   double wall_now() const;

@@ -107,3 +107,35 @@ echo "$out" | grep -q "already exists and is not empty.*--replace" || fail "expo
 "$talus" export lammps collisions "$dir/x2" --quiet || fail "an export into a new folder"
 "$talus" export lammps collisions "$dir/x2" --quiet --replace || fail "an export over an export"
 echo "ok: talus export lammps refuses run folders and non-empty folders"
+
+# a run whose folder is deleted under it stops saying so, and writes nothing into the folder of
+# another run started there; deleted and not replaced, it makes nothing again
+long=(drum --quiet --set particles.count=150 --set packing.settle_max_time=0.05
+      --set simulation.duration=50 --set output.snapshot_interval=0.005)
+"$talus" run "${long[@]}" --out "$dir/del" 2> "$dir/del.txt" &
+pid=$!
+wait_for "$dir/del/snapshots/particles_000002.vtp"
+until rm -rf "$dir/del" 2> /dev/null; do :; done # the run may add a snapshot meanwhile
+"$talus" run "${settle[@]}" --out "$dir/del" > /dev/null 2>&1 &
+other=$!
+wait_for "$dir/del/scenario.toml"
+wait "$pid"
+status=$?
+[ "$status" -eq 1 ] || fail "a run whose folder was replaced exited $status: $(cat "$dir/del.txt")"
+grep -q "'$dir/del' was replaced under the running run.*writes nothing more" "$dir/del.txt" ||
+  grep -q "'$dir/del' was deleted under the running run.*writes nothing more" "$dir/del.txt" ||
+  fail "a run whose folder was replaced said: $(cat "$dir/del.txt")"
+[ -z "$(ls "$dir/del/snapshots")" ] || fail "the replaced run wrote into the new run's folder"
+kill -KILL "$other"
+wait "$other" 2>/dev/null
+"$talus" run "${long[@]}" --out "$dir/gone" 2> "$dir/gone.txt" &
+pid=$!
+wait_for "$dir/gone/snapshots/particles_000002.vtp"
+until rm -rf "$dir/gone" 2> /dev/null; do :; done
+wait "$pid"
+status=$?
+[ "$status" -eq 1 ] || fail "a run whose folder was deleted exited $status: $(cat "$dir/gone.txt")"
+grep -q "'$dir/gone' was deleted under the running run" "$dir/gone.txt" ||
+  fail "a run whose folder was deleted said: $(cat "$dir/gone.txt")"
+[ -e "$dir/gone" ] && fail "a run whose folder was deleted made it again"
+echo "ok: a run whose folder is deleted or replaced stops, writing nothing there"

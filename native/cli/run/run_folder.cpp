@@ -7,6 +7,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "io/checkpoint.hpp"
@@ -123,6 +124,19 @@ RunFolder RunFolder::open(const std::string& dir) {
   const int fd = take_lock(d, holder);
   if (fd < 0) refuse_in_use(d, holder);
   return RunFolder(d, fd);
+}
+
+std::string RunFolder::gone() const {
+  struct stat held {};
+  struct stat there {};
+  if (::fstat(fd_, &held) != 0) return {};
+  const fs::path lock = dir_ / lock_name;
+  if (held.st_nlink == 0 || ::stat(lock.c_str(), &there) != 0)
+    return "the run folder '" + dir_.string() + "' was deleted under the running run";
+  if (held.st_dev != there.st_dev || held.st_ino != there.st_ino)
+    return "the run folder '" + dir_.string() +
+           "' was replaced under the running run (another run's folder is there now)";
+  return {};
 }
 
 RunFolder::RunFolder(RunFolder&& other) noexcept

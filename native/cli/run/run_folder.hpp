@@ -29,6 +29,10 @@ public:
   /// Empties the folder but for its lock, makes snapshots/ and writes the scenario as
   /// scenario.toml: a new run's start (a run stopped before its first checkpoint starts again).
   void start_afresh(const Scenario& s);
+  /// Why the folder at path() is no longer the one this object locked (deleted, moved, or
+  /// replaced by another run's folder), or empty while it is: the lock file there must be the
+  /// one whose lock is held.
+  std::string gone() const;
   /// Removes what create() wrote (the scenario could not be built: nothing is left behind).
   void discard();
 

@@ -48,10 +48,12 @@ void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBoo
 
 // Runs to the end (or a stop) in dir, answering SIGINT and SIGTERM with a checkpoint. `set`: the
 // changes this session makes as it starts (talus resume --set, --duration), from `source`.
-int go(const Scenario& s, Simulation sim, run::RunBook book, const fs::path& dir,
+int go(const Scenario& s, Simulation sim, run::RunBook book, const RunFolder& folder,
        const RunOptions& o, bool fresh, std::vector<std::string> set = {},
        std::string source = {}) {
+  const fs::path& dir = folder.path();
   run::RunControl control;
+  control.folder_gone = [&folder] { return folder.gone(); };
   control.stop_at = o.stop_at;
   control.quiet = o.quiet;
   const std::string scenario_file = (dir / "scenario.toml").string();
@@ -119,7 +121,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   book.scenario_hash = fnv1a_hash(text);
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   run::report_opening(sim, o.quiet);
-  return go(s, std::move(sim), std::move(book), folder.path(), o, true);
+  return go(s, std::move(sim), std::move(book), folder, o, true);
 }
 
 int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, const RunOptions& o) {
@@ -221,7 +223,8 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   run::report_opening(sim, o.quiet);
   if (!o.quiet)
     fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
-  return go(s, std::move(sim), std::move(book), d, o, false, std::move(set), std::move(source));
+  return go(s, std::move(sim), std::move(book), folder, o, false, std::move(set),
+            std::move(source));
 }
 
 } // namespace talus::cli
