@@ -12,6 +12,7 @@
 
 #include "scenario/file/toml_reader.hpp"
 #include "talus/closed_forms.hpp"
+#include "talus/material_keys.hpp"
 
 namespace talus {
 
@@ -55,10 +56,19 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file, Afte
     throw ScenarioError(file + ":" + std::to_string(line_no) + ": " + what);
   };
   ThesisFile f;
+  f.file = file;
   long n = 0;
   next("the particle count (line 1)");
-  if (!(std::istringstream(line) >> n) || n < 0)
-    fail("line 1 must be the number of particles N >= 0");
+  std::string count, rest;
+  std::istringstream(line) >> count >> rest;
+  std::size_t used = 0;
+  try {
+    n = std::stol(count, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != count.size() || !rest.empty() || n < 1)
+    fail("line 1 must be the number of particles N, a whole number >= 1 (it is '" + line + "')");
   next("the force law tag (line 2)");
   if (!(std::istringstream(line) >> f.force_law) || !law_of_thesis_tag(f.force_law))
     fail(
@@ -71,6 +81,11 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file, Afte
   next("the gravity vector (line 5)");
   if (!(std::istringstream(line) >> f.gravity[0] >> f.gravity[1] >> f.gravity[2]))
     fail("line 5 must be the gravity vector: three numbers x y z");
+  if (f.gravity[2] != 0.0)
+    fail(fmt::format("line 5: gravity z = {:g}: the disks move in the x-y plane, so a z "
+                     "component would be dropped; allowed: z = 0 (turn the vector into the "
+                     "plane)",
+                     f.gravity[2]));
   static const char* columns[13] = {"x",      "y",    "angle", "vx",      "vy", "omega", "mass",
                                     "radius", "type", "mu",    "gamma_t", "Y",  "A"};
   for (long k = 0; k < n; ++k) {
@@ -94,7 +109,7 @@ ThesisFile read_thesis_in(const std::string& text, const std::string& file, Afte
       fail("particle line: column 9 (type) must be 0, 1, 2 or 3");
     const int type = static_cast<int>(v[8]);
     f.particles.push_back(
-        {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], type, v[9], v[10], v[11], v[12]});
+        {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], type, v[9], v[10], v[11], v[12], line_no});
   }
   // nothing but blank lines may follow the N particle lines: a surplus line means N is wrong
   while (after == After::nothing && std::getline(in, line)) {
@@ -151,6 +166,12 @@ Scenario scenario_from_thesis(const ThesisFile& f, const std::string& name) {
         m.normal_stiffness = 1.0; // unused by the Hertz law
       }
       m.restitution = 1.0;
+      // a value out of range is the particle line's, not the converted scenario's
+      if (const std::string e = material_key_error(m); !e.empty())
+        throw ScenarioError(fmt::format(
+            "{}:{}: particle line: its mu, gamma_t, Y and A (columns 10 to 13) give a material "
+            "whose {}",
+            f.file.empty() ? std::string("thesis file") : f.file, p.line, e));
       s.materials.push_back(m);
       materials[key] = m.name;
     }

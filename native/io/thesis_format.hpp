@@ -15,6 +15,7 @@ struct ThesisParticle {
   double x, y, angle, vx, vy, omega, mass, radius;
   int type;
   double mu, gamma_t, young, damping;
+  int line = 0; ///< its line in the file (0: not read from one)
 };
 
 struct ThesisFile {
@@ -23,6 +24,7 @@ struct ThesisFile {
   double dt = 1e-6;
   double gravity[3] = {0.0, -9.81, 0.0};
   std::vector<ThesisParticle> particles;
+  std::string file; ///< the file it was read from (empty: not read from one)
 };
 
 /// Whether text may follow the N particle lines: an .in file ends there; a .out file holds more

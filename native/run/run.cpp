@@ -240,8 +240,8 @@ void Run::stop_on_write_failure(const WriteError& e) {
   const fs::path& dir = files_.dir();
   if (!checkpointed_) // nothing to continue from: the command that starts it again
     throw std::runtime_error(std::string(e.what()) +
-                             " (disk full or a file size limit?) before the run's first "
-                             "checkpoint; make room, then start it again with: talus run " +
+                             ", before the run's first checkpoint; make room, then start it "
+                             "again with: talus run " +
                              (dir / "scenario.toml").string() + " --out " + dir.string());
   std::error_code ignored;
   cut_back_outputs(dir, book_.file_bytes, checkpointed_snapshots_, ignored);
@@ -252,8 +252,8 @@ void Run::stop_on_write_failure(const WriteError& e) {
   } catch (const WriteError&) {
   }
   throw std::runtime_error(std::string(e.what()) +
-                           " (disk full or a file size limit?); the outputs are cut back to the "
-                           "last checkpoint, which is kept; make room, then: talus resume " +
+                           "; the outputs are cut back to the last checkpoint, which is kept; "
+                           "make room, then: talus resume " +
                            dir.string());
 }
 

@@ -143,6 +143,11 @@ GrainSizes draw_grain_sizes(const Scenario& s, RandomStream& rng) {
     if (e.kind == "free") g.r_min = std::min(g.r_min, e.radius);
   if (g.radii.size() + s.particles.list.size() == 0)
     throw ScenarioError("key 'particles.count': a scenario needs grains (count > 0 or a list)");
+  if (g.r_min == std::numeric_limits<double>::max()) // every grain listed, none of them free
+    throw ScenarioError(
+        "key 'particles.list': every grain's kind is \"fixed\" or \"moved\", so nothing can "
+        "move under the contact forces and no timestep fits them; give one a kind = \"free\", or "
+        "particles.count > 0");
   // the sizes a grain can have (not only those drawn this time) decide what a gap lets through
   double r_small = std::numeric_limits<double>::max(), r_large = 0.0;
   if (s.particles.count > 0) std::tie(r_small, r_large) = radius_range(s.particles.size);

@@ -139,3 +139,10 @@ grep -q "'$dir/gone' was deleted under the running run" "$dir/gone.txt" ||
   fail "a run whose folder was deleted said: $(cat "$dir/gone.txt")"
 [ -e "$dir/gone" ] && fail "a run whose folder was deleted made it again"
 echo "ok: a run whose folder is deleted or replaced stops, writing nothing there"
+
+# a failed checkpoint write can leave only checkpoint.prev.bin: talus checkpoint reads what
+# resume reads
+mv "$dir/b/checkpoint.bin" "$dir/b-checkpoint.bin"
+[ -e "$dir/b/checkpoint.prev.bin" ] || cp "$dir/b-checkpoint.bin" "$dir/b/checkpoint.prev.bin"
+"$talus" checkpoint "$dir/b" | grep -q "^state_hash" || fail "talus checkpoint with checkpoint.prev.bin only"
+echo "ok: talus checkpoint reads the previous checkpoint when it is the only one"

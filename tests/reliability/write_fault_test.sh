@@ -11,7 +11,7 @@ trap 'rm -rf "$dir"' EXIT
     --set output.thermo_interval=0.00005 --set output.checkpoint_interval=0.01 ) 2> "$dir/err.txt"
 status=$?
 [ "$status" -ne 0 ] || { echo "a full disk went unnoticed"; exit 1; }
-grep -q "cannot write" "$dir/err.txt" || { echo "unclear message:"; cat "$dir/err.txt"; exit 1; }
+grep -q "cannot write $dir/full/.*: File too large" "$dir/err.txt" || { echo "unclear message:"; cat "$dir/err.txt"; exit 1; }
 if [ -f "$dir/full/checkpoint.bin" ]; then
   "$talus" checkpoint "$dir/full" > /dev/null || { echo "the checkpoint left behind is corrupt"; exit 1; }
 fi

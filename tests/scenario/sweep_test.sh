@@ -30,6 +30,9 @@ wait "$pid"
 status=$?
 [ "$status" -eq 130 ] || { cat "$dir/log"; fail "exit status $status after SIGTERM, expected 130"; }
 grep -q "continue with: talus resume $sweep" "$dir/log" || { cat "$dir/log"; fail "no resume hint"; }
+# a run's time is the process's, its settling too: never "in 0 s" for runs of a second or so
+grep -q '^\[1/4\] .*: finished at t = 0.5 s in [0-9.]* s' "$dir/log" || { cat "$dir/log"; fail "no time for a finished run"; }
+grep -q ' in 0 s' "$dir/log" && { cat "$dir/log"; fail "a run's time given as 0 s"; }
 done_before=$(grep -c ',finished,' "$sweep/index.csv")
 [ "$done_before" -ge 1 ] && [ "$done_before" -lt 4 ] || { cat "$sweep/index.csv"; fail "$done_before runs finished before the resume"; }
 first=$(grep -l '"ended_by": "duration"' "$sweep"/run-*/run.json | head -1)

@@ -12,15 +12,26 @@ namespace talus::cli {
 
 int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
                      const std::string& source) {
+  struct Interrupted {
+    double time;
+  };
+  catch_stop_signals();
   BuiltScenario built;
   try {
     Scenario settle = s; // --threads applies to the settling too
     if (o.threads >= 0) settle.simulation.threads = o.threads;
     built = build_scenario(settle, [&](double t, double ke) {
+      if (stop_signal()) throw Interrupted{t};
       if (o.quiet) return;
       fmt::print("  settling: t = {:.4f} s, E_kin = {:.4e} J\n", t, ke);
       std::fflush(stdout);
     });
+  } catch (const Interrupted& i) { // the folder stays: resume starts the run again
+    fmt::print(stderr,
+               "talus: interrupted while settling, at t = {:.4g} s of it, before the run's first "
+               "checkpoint; start it again with: talus resume {}\n",
+               i.time, folder.path().string());
+    return exit_interrupted;
   } catch (const ScenarioError& e) { // say which file the key is in; leave nothing behind
     folder.discard();
     throw ScenarioError(source + ": " + e.what());

@@ -28,6 +28,19 @@ void on_signal(int) {
   stop_requested = 1;
 }
 
+} // namespace
+
+void catch_stop_signals() {
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+}
+
+bool stop_signal() {
+  return stop_requested != 0;
+}
+
+namespace {
+
 // The pictures and the movie the scenario asks for (output.pictures, output.movie).
 void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBook& book,
                        bool quiet) {
@@ -65,9 +78,7 @@ int go(const Scenario& s, Simulation sim, run::RunBook book, const RunFolder& fo
   control.stop_requested = [] { return stop_requested != 0; };
   control.end_pictures = [&](const run::RunBook& b) { scenario_pictures(s, dir, b, o.quiet); };
   run::Run r(s, std::move(sim), std::move(book), dir, std::move(control), fresh);
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
-  stop_requested = 0;
+  catch_stop_signals(); // a signal caught while settling stays caught
   switch (r.go()) {
   case run::RunOutcome::completed:
     return exit_completed;

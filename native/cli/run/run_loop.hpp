@@ -27,6 +27,11 @@ inline constexpr int exit_completed = 0;
 inline constexpr int exit_interrupted = 130; ///< stopped by SIGINT/SIGTERM after a checkpoint
 inline constexpr int exit_stopped = 4;       ///< stopped by --stop-at after a checkpoint
 
+/// From now on SIGINT and SIGTERM set a flag (stop_signal) instead of ending the process: a
+/// run answers them with a checkpoint, a settling by stopping with a word.
+void catch_stop_signals();
+bool stop_signal();
+
 /// Starts a new run in a run folder made (and locked) by RunFolder::create.
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o);
 /// Starts a new run in `dir` (see RunFolder::create for what dir may hold) from a built scenario.

@@ -111,12 +111,17 @@ struct Pool {
   const SweepOptions& o;
   std::vector<SweepResult> results;
   std::map<pid_t, std::size_t> running; // pid -> run index
+  std::map<pid_t, std::chrono::steady_clock::time_point> started;
   std::size_t finished = 0;
   bool failed = false;
 
   void ended(pid_t pid, int status) {
     const std::size_t i = running.at(pid);
     running.erase(pid);
+    // the process's whole time, its settling too (run.json's wall_seconds counts the steps only)
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started.at(pid)).count();
+    started.erase(pid);
     const SweepRun& r = plan.runs[i];
     results[i] = read_result(dir, r);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -133,11 +138,15 @@ struct Pool {
       failed = true;
     write_index(dir, plan, results);
     if (o.quiet) return;
+    report(i, seconds);
+  }
+
+  void report(std::size_t i, double seconds) const {
+    const SweepRun& r = plan.runs[i];
     const SweepResult& x = results[i];
     std::string what = x.status;
     if (x.status == "finished")
-      what += fmt::format(" at t = {:.4g} s in {:.0f} s", x.numbers.at("time"),
-                          x.numbers.at("wall_seconds"));
+      what += fmt::format(" at t = {:.4g} s in {:.3g} s", x.numbers.at("time"), seconds);
     if (x.numbers.count("rate"))
       what += fmt::format("; discharge {:.4g} +- {:.2g} grains/s", x.numbers.at("rate"),
                           x.numbers.at("rate_error"));
@@ -173,7 +182,7 @@ int run_sweep(const fs::path& dir, const SweepPlan* new_plan, const SweepOptions
     throw InvalidArgument("sweep folder '" + dir.string() + "' is in use by " +
                           (holder.empty() ? std::string("another process") : "process " + holder));
   const SweepPlan plan = new_plan ? *new_plan : read_plan(dir);
-  Pool pool{dir, plan, o, {}, {}, 0, false};
+  Pool pool{dir, plan, o, {}, {}, {}, 0, false};
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < plan.runs.size(); ++i) {
     pool.results.push_back(read_result(dir, plan.runs[i]));
@@ -195,7 +204,9 @@ int run_sweep(const fs::path& dir, const SweepPlan* new_plan, const SweepOptions
   while ((next < todo.size() && !sweep_stop) || !pool.running.empty()) {
     while (!sweep_stop && next < todo.size() && pool.running.size() < jobs) {
       const std::size_t i = todo[next++];
-      pool.running[launch(dir, plan.runs[i])] = i;
+      const pid_t pid = launch(dir, plan.runs[i]);
+      pool.running[pid] = i;
+      pool.started[pid] = std::chrono::steady_clock::now();
     }
     if (sweep_stop && !passed_on) { // pass the signal on: each run stops at a checkpoint
       for (const auto& [pid, _] : pool.running) ::kill(pid, SIGTERM);

@@ -322,6 +322,19 @@ void section(TableReader& top, const char* name, const std::string& file, F&& re
 
 } // namespace
 
+namespace {
+
+// Where the value at a dotted path was given: its --set, or the file and line.
+std::string source_of(const toml::table& root, const std::string& path, const std::string& file) {
+  const toml::node_view<const toml::node> node = toml::at_path(root, path);
+  if (!node) return file;
+  const toml::source_region& r = node.node()->source();
+  if (r.path && r.path->starts_with("--set ")) return *r.path;
+  return r.begin.line > 0 ? fmt::format("{}:{}", file, r.begin.line) : file;
+}
+
+} // namespace
+
 std::uint16_t material_index(const Scenario& s, const std::string& name, const std::string& key) {
   if (name.empty()) return 0;
   std::string names;
@@ -410,11 +423,21 @@ Scenario load_root(const toml::table& root, const std::string& file, bool check_
   top.finish();
   settle_stages(s, root, file, check_stages);
 
-  // references between sections
-  material_index(s, s.particles.material, "particles.material");
-  material_index(s, s.geometry.wall_material, "geometry.wall_material");
-  material_index(s, s.frost.thawed_material, "frost.thawed_material");
-  for (const auto& e : s.particles.list) material_index(s, e.material, "particles.list.material");
+  // references between sections, each error naming where the reference was given
+  const auto check_material = [&](const std::string& name, const std::string& key,
+                                  const std::string& path) {
+    try {
+      material_index(s, name, key);
+    } catch (const ScenarioError& e) {
+      throw ScenarioError(source_of(root, path, file) + ": " + e.what());
+    }
+  };
+  check_material(s.particles.material, "particles.material", "particles.material");
+  check_material(s.geometry.wall_material, "geometry.wall_material", "geometry.wall_material");
+  check_material(s.frost.thawed_material, "frost.thawed_material", "frost.thawed_material");
+  for (std::size_t i = 0; i < s.particles.list.size(); ++i)
+    check_material(s.particles.list[i].material, "particles.list.material",
+                   fmt::format("particles.list[{}].material", i));
   for (std::size_t m = 0; m < s.materials.size(); ++m)
     for (std::size_t n = m + 1; n < s.materials.size(); ++n)
       if (s.materials[m].name == s.materials[n].name)

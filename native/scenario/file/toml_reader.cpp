@@ -62,6 +62,9 @@ std::string TableReader::where(const toml::node* node) const {
   // a value given on the command line (load.cpp, apply_override) names its --set
   if (node && node->source().path && node->source().path->starts_with("--set "))
     return *node->source().path;
+  // a key missing from a table the command line gave: that --set
+  if (!node && table_.source().path && table_.source().path->starts_with("--set "))
+    return *table_.source().path;
   const auto line = node ? node->source().begin.line : table_.source().begin.line;
   std::string out = file_;
   if (line > 0) out.append(":").append(std::to_string(line));
