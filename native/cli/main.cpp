@@ -38,8 +38,9 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "talus: the run went unstable: {}\n", e.what());
     return 3;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "talus: error: out of memory (a run keeps its last checkpoint; fewer "
-                       "particles, or more memory, then talus resume)\n");
+    fmt::print(stderr, "talus: error: out of memory: this process could not get the memory it "
+                       "asked for (a limit such as ulimit -v, or other processes' use); fewer "
+                       "particles, or more memory\n");
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "talus: error: {}\n", e.what());

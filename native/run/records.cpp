@@ -5,10 +5,12 @@
 #include <utility>
 
 #include <fmt/core.h>
+#include <sys/resource.h>
 
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/vtk.hpp"
+#include "scenario/build_checks.hpp"
 #include "scenario/file/load.hpp"
 
 namespace fs = std::filesystem;
@@ -129,6 +131,17 @@ void write_collections_of(const fs::path& dir, std::uint64_t snapshots, std::uin
   write_file_atomically((dir / "contacts.pvd").string(), pvd_collection(contacts));
 }
 
+namespace {
+
+// This process's peak resident memory so far.
+std::uint64_t peak_memory_bytes() {
+  rusage usage{};
+  if (::getrusage(RUSAGE_SELF, &usage) != 0) return 0;
+  return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024; // Linux gives kilobytes
+}
+
+} // namespace
+
 std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& book, double wall,
                      double session_wall, std::uint64_t steps_done, const std::string& ended) {
   const std::size_t n = sim.world().particles.size();
@@ -141,12 +154,12 @@ std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& bo
       "  \"collision_time\": {:.9g},\n  \"integrator\": \"{}\",\n  \"threads\": {},\n"
       "  \"threads_asked\": {},\n  \"step\": \"{}\",\n"
       "  \"settle_time\": {:.6g},\n  \"wall_seconds\": {:.6f},\n"
-      "  \"particle_steps_per_second\": {:.6g},\n  \"freezes\": {},\n  \"ended_by\": "
-      "\"{}\"\n}}\n",
+      "  \"particle_steps_per_second\": {:.6g},\n  \"memory_estimate_bytes\": {:.0f},\n"
+      "  \"peak_memory_bytes\": {},\n  \"freezes\": {},\n  \"ended_by\": \"{}\"\n}}\n",
       TALUS_VERSION, s.name, s.simulation.seed, n, sim.step_count(), sim.time(),
       sim.config().timestep, book.collision_time, to_string(sim.config().integrator), sim.threads(),
-      sim.config().threads, sim.step_description(), book.settle_time, wall, rate, book.freezes,
-      ended);
+      sim.config().threads, sim.step_description(), book.settle_time, wall, rate,
+      memory_estimate(n), peak_memory_bytes(), book.freezes, ended);
 }
 
 std::string outputs_short_of(const fs::path& dir,

@@ -9,6 +9,7 @@
 #include "run/observers.hpp"
 #include "run/records.hpp"
 #include "run/scenario_change.hpp"
+#include "scenario/build_checks.hpp"
 #include "scenario/file/toml_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -92,7 +93,24 @@ RunOutcome Run::go() {
   } catch (const InstabilityError&) {
     write_run_json(book_.wall_seconds, 0, "unstable"); // the last checkpoint stays as it was
     throw;
+  } catch (const std::bad_alloc&) {
+    out_of_memory();
   }
+}
+
+// The process could not get memory (a limit, or other processes' use): say what was kept.
+void Run::out_of_memory() const {
+  const std::string dir = files_.dir().string();
+  if (!checkpointed_)
+    throw std::runtime_error(fmt::format(
+        "out of memory at t = {:.6g} s, before the run's first checkpoint, so nothing was kept "
+        "to resume; with more memory (about {} are expected), or fewer particles, start it again "
+        "with: talus run {}/scenario.toml --out {}",
+        sim_.time(), readable_bytes(memory_estimate(sim_.world().particles.size())), dir, dir));
+  throw std::runtime_error(fmt::format(
+      "out of memory at t = {:.6g} s; the last checkpoint is kept: with more memory (about {} "
+      "are expected), continue with: talus resume {}",
+      sim_.time(), readable_bytes(memory_estimate(sim_.world().particles.size())), dir));
 }
 
 void Run::start() {

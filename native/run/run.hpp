@@ -77,6 +77,7 @@ private:
   void follow_renumbering();
   void finish(const std::string& why);
   void checkpoint_at(double wall);
+  [[noreturn]] void out_of_memory() const;
   void check_folder() const; ///< throws FolderGone when RunControl::folder_gone says why
   [[noreturn]] void stop_on_write_failure(const WriteError& e);
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);

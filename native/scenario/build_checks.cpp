@@ -8,34 +8,49 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <fmt/core.h>
+
 #include "scenario/file/toml_reader.hpp"
 
 namespace talus {
 
+double memory_estimate(std::size_t particles) {
+  // the process itself (code, libraries), then the particles: their arrays, the neighbour list
+  // and contact history, and the checkpoint's copy of the state as it is written, which makes
+  // the peak (fitted to the peaks measured in docs/performance.md, "Memory")
+  return 10e6 + 1150.0 * static_cast<double>(particles);
+}
+
+std::string readable_bytes(double bytes) {
+  if (bytes >= 1e9) return fmt::format("{:.3g} GB", bytes / 1e9);
+  if (bytes >= 1e6) return fmt::format("{:.3g} MB", bytes / 1e6);
+  return fmt::format("{:.3g} kB", bytes / 1e3);
+}
+
 // Refuses what the machine, or this process' limits (ulimit -v, -d), cannot hold, before
-// allocating it: a generous bound per particle on the neighbour list, contact history and the
-// run's buffers (docs/performance.md, "Memory").
+// allocating it.
 void check_memory(std::size_t particles) {
-  const double need = 700.0 * static_cast<double>(particles);
+  const double need = memory_estimate(particles);
   const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
   const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
   double room = pages > 0 && page > 0 ? 0.8 * pages * page : HUGE_VAL;
-  std::string what = "this machine has " + std::to_string(room / 0.8 / 1e9) + " GB";
+  std::string what = "this machine has " + readable_bytes(room / 0.8);
   for (const auto& [resource, name] :
        {std::pair{RLIMIT_AS, "ulimit -v"}, {RLIMIT_DATA, "ulimit -d"}}) {
     rlimit limit{};
     if (::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) continue;
-    // the process itself (code, libraries, threads' stacks) takes some of a limit
+    // an address-space limit counts the libraries' and threads' mappings too, beyond what is
+    // resident
     const double usable = 0.8 * static_cast<double>(limit.rlim_cur) - 200e6;
     if (usable < room) {
       room = usable;
-      what = "this process may use " + std::to_string(static_cast<double>(limit.rlim_cur) / 1e9) +
-             " GB (" + name + ")";
+      what = fmt::format("this process may use {} ({})",
+                         readable_bytes(static_cast<double>(limit.rlim_cur)), name);
     }
   }
   if (need > room)
-    throw ScenarioError("key 'particles.count': " + std::to_string(particles) +
-                        " particles need about " + std::to_string(need / 1e9) + " GB; " + what);
+    throw ScenarioError(fmt::format("key 'particles.count': {} particles need about {}; {}",
+                                    particles, readable_bytes(need), what));
 }
 
 // Double precision resolves a coordinate x to about |x| 2^-52. Beyond some distance from the

@@ -2,12 +2,17 @@
 // What a scenario must satisfy to be built: checks that refuse it, with a ScenarioError naming the
 // key and the allowed values, before anything is allocated or run.
 #include <cstddef>
+#include <string>
 
 #include "scenario/scenario.hpp"
 #include "simulation/world.hpp"
 
 namespace talus {
 
+/// The peak memory (bytes, resident) of a run of `particles` particles, the process included.
+double memory_estimate(std::size_t particles);
+/// "1.16 GB", "21.5 MB": bytes for a message.
+std::string readable_bytes(double bytes);
 /// Refuses what the machine, or this process' limits (ulimit -v, -d), cannot hold.
 void check_memory(std::size_t particles);
 /// Refuses a scene reaching so far from the origin that positions there cannot resolve a
