@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/run/run_loop.hpp"
+#include "cli/run/scenario_edits.hpp"
 #include "io/checkpoint.hpp"
 #include "run/run_book.hpp"
 #include "scenario/file/load.hpp"
@@ -269,11 +270,48 @@ TEST(Stages, ChangesThatCannotBeAreRefused) {
   refused({"simulation.gravity=[0,-1]"}, -1.0, "has ended (duration)");
   refused({}, 0.004, "the run is at t = ");
   const std::string text = file(dir / "scenario.toml");
+  std::string wider = text;
+  wider.replace(wider.find("\nwidth = ") + 1, 8, "width = 1.5 # was ");
+  write_file_atomically((dir / "scenario.toml").string(), wider);
+  refused({}, 0.01,
+          "was edited after the run started in keys that cannot change during a run: "
+          "geometry.width;");
+  fs::rename(cli::started_copy(dir), dir / "kept");
   write_file_atomically((dir / "scenario.toml").string(), text + "# edited\n");
-  refused({}, 0.01, "was edited after the run started");
-  write_file_atomically((dir / "scenario.toml").string(), text);
-  EXPECT_EQ(resume(dir, -1.0, {}, 0.01), cli::exit_completed); // as it was: it goes on
+  refused({}, 0.01, "the copy of it as it started is missing");
+  fs::rename(dir / "kept", cli::started_copy(dir));
+  // a comment is no change: the file is put back as it started, and the run goes on
+  EXPECT_EQ(resume(dir, -1.0, {}, 0.01), cli::exit_completed);
+  EXPECT_EQ(file(dir / "scenario.toml"), text);
   fs::remove_all(dir);
+}
+
+// An edit of scenario.toml in keys a run may change is the change resume --set makes, from the
+// resume point, to the bit; changes.csv records it and the file is put back as the run started.
+TEST(Stages, AnEditOfChangeableKeysIsAChangeFromTheResumePoint) {
+  const std::string two = std::string(staged).substr(0, std::string(staged).find("[[stages]]"));
+  const Scenario plain = load_scenario(two, "plain.toml", {"simulation.duration=0.01"});
+  const fs::path edited = fresh_dir("stages_edited"), set = fresh_dir("stages_set");
+  ASSERT_EQ(start(plain, edited), cli::exit_completed);
+  ASSERT_EQ(start(plain, set), cli::exit_completed);
+  ASSERT_EQ(resume(set, -1.0, {"simulation.gravity=[1.0,-9.0]"}, 0.02), cli::exit_completed);
+  const std::string text = file(edited / "scenario.toml");
+  std::string changed = text;
+  const auto line = [&](const char* key, const char* value) {
+    const std::size_t at = changed.find(std::string("\n") + key + " = ") + 1;
+    changed.replace(at, changed.find('\n', at) - at, std::string(key) + " = " + value);
+  };
+  line("duration", "0.02");
+  line("gravity", "[1.0, -9.0]");
+  write_file_atomically((edited / "scenario.toml").string(), changed);
+  ASSERT_EQ(resume(edited, -1.0, {}, -1.0), cli::exit_completed);
+  EXPECT_EQ(final_state(set), final_state(edited));
+  EXPECT_EQ(file(edited / "scenario.toml"), text);
+  const std::string changes = file(edited / "changes.csv");
+  EXPECT_NE(changes.find("\"scenario.toml edited\""), std::string::npos) << changes;
+  EXPECT_NE(changes.find("simulation.gravity=[ 1.0, -9.0 ]"), std::string::npos) << changes;
+  fs::remove_all(edited);
+  fs::remove_all(set);
 }
 
 // Bad stages are refused as the scenario loads, naming the stage and the key.

@@ -9,6 +9,7 @@
 
 #include "cli/pictures/pictures.hpp"
 #include "cli/run/run_folder.hpp"
+#include "cli/run/scenario_edits.hpp"
 #include "io/checkpoint.hpp"
 #include "run/progress.hpp"
 #include "run/records.hpp"
@@ -129,6 +130,7 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   const std::string text = run::run_id_line(book.run_id) + to_toml(s) +
                            describe_contact_pairs(built.world, built.pairs, built.config);
   write_file_atomically((folder.path() / "scenario.toml").string(), text);
+  write_file_atomically(started_copy(folder.path()).string(), text);
   book.scenario_hash = fnv1a_hash(text);
   Simulation sim(std::move(built.world), with_threads(built.config, o));
   run::report_opening(sim, o.quiet);
@@ -164,13 +166,6 @@ std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const fs::path& d,
                                 c.state.time, scenario_file, folder_run));
       continue;
     }
-    if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
-      throw InvalidArgument(
-          "'" + scenario_file +
-          "' was edited after the run started; a run goes on with the scenario it started with, "
-          "so the edit would not apply. Undo it, and change the run from its resume point with "
-          "talus resume " +
-          dir + " --set KEY=VALUE (or --duration T)");
     if (const std::string short_of = run::outputs_short_of(d, book.file_bytes, book.snapshots);
         !short_of.empty()) {
       why.push_back(fmt::format("the outputs fall short of {} (t = {:.6g} s): {}", p.string(),
@@ -199,31 +194,51 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   const std::string text = read_file(scenario_file);
   if (never_checkpointed(d)) return start_again(text, scenario_file, folder, o);
   auto [c, book] = checkpoint_to_resume(d, text);
-  // the run's scenario now: the file with the changes made so far (stages, resumes)
-  const Scenario s = load_scenario(text, scenario_file, book.overrides());
-  std::vector<std::string> set = o.set;
+  // an edit of scenario.toml: the keys a run may change, changed from here as --set does
+  std::string started = text;
+  std::vector<std::string> set;
+  if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
+    set = scenario_edits(d, text, book, started);
+  std::string source = set.empty() ? "" : "scenario.toml edited";
+  double duration = o.duration;
+  for (const std::string& x : set)
+    if (change_key(x) == "simulation.duration" && duration < 0.0)
+      duration = std::stod(x.substr(x.find('=') + 1));
+  // the run's scenario now: the file as it started with the changes made so far
+  const Scenario s = load_scenario(started, scenario_file, book.overrides());
   for (const std::string& x : o.set)
     if (!changeable_during_run(change_key(x)))
       throw InvalidArgument("--set " + x + ": '" + change_key(x) +
                             "' cannot change during a run; allowed: " + changeable_keys_text());
-  std::string source = o.set.empty() ? "" : "resume --set";
+  set.insert(set.end(), o.set.begin(), o.set.end());
+  std::string resume_words = o.set.empty() ? "" : "resume --set";
   if (o.duration >= 0.0) {
-    source += source.empty() ? "resume --duration" : " --duration";
+    resume_words += resume_words.empty() ? "resume --duration" : " --duration";
     set.push_back(fmt::format("simulation.duration={}", o.duration));
-    book.ended.clear(); // a finished run goes on
-  } else if (!book.ended.empty() && !o.set.empty()) {
-    throw InvalidArgument("the run in '" + dir + "' has ended (" + book.ended +
-                          "): --set changes it from there on; give --duration T too, to run it "
-                          "on to T s");
   }
-  if (o.duration >= 0.0 && !(o.duration > c.state.time))
-    throw InvalidArgument(fmt::format("--duration {:g}: the run is at t = {:.9g} s already; "
-                                      "allowed: a longer whole length",
-                                      o.duration, c.state.time));
+  if (!resume_words.empty()) source += (source.empty() ? "" : ", ") + resume_words;
+  if (duration >= 0.0) {
+    if (!(duration > c.state.time))
+      throw InvalidArgument(fmt::format("a duration of {:g} s: the run is at t = {:.9g} s already; "
+                                        "allowed: a longer whole length",
+                                        duration, c.state.time));
+    book.ended.clear(); // a finished run goes on
+  } else if (!book.ended.empty() && !set.empty()) {
+    throw InvalidArgument("the run in '" + dir + "' has ended (" + book.ended + "): " + source +
+                          " changes it from there on; give --duration T too (or edit "
+                          "simulation.duration), to run it on to T s");
+  }
   if (!set.empty()) { // the values checked before anything is touched
     std::vector<std::string> all = book.overrides();
     all.insert(all.end(), set.begin(), set.end());
-    load_scenario(text, scenario_file, all);
+    load_scenario(started, scenario_file, all);
+  }
+  if (started != text) { // the edits are changes now (changes.csv); the file is as it started
+    write_file_atomically(scenario_file, started);
+    if (!o.quiet)
+      fmt::print("{}: the edits are changes from t = {:.6g} s on (changes.csv); the file is put "
+                 "back as the run started\n",
+                 scenario_file, c.state.time);
   }
   std::error_code cut;
   run::cut_back_outputs(d, book.file_bytes, book.snapshots, cut);

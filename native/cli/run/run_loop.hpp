@@ -42,7 +42,7 @@ int start_run(const Scenario& s, BuiltScenario built, const std::string& dir, co
 int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
                      const std::string& source);
 /// The checkpoint a resume of run folder `d` continues from, with its book: the newest that
-/// belongs to the folder's run (run::run_id_line), of its unedited scenario (`scenario_text`),
+/// belongs to the folder's run (run::run_id_line; `scenario_text` is its scenario.toml),
 /// whose outputs are whole (run::outputs_short_of); the previous one when the newest is not.
 /// Throws InvalidArgument with every reason when none is.
 std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const std::filesystem::path& d,
