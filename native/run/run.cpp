@@ -91,7 +91,8 @@ RunOutcome Run::go() {
   } catch (const WriteError& e) {
     stop_on_write_failure(e);
   } catch (const InstabilityError&) {
-    write_run_json(book_.wall_seconds, 0, "unstable"); // the last checkpoint stays as it was
+    // the last checkpoint stays as it was; the rate is this session's, to where it went unstable
+    write_run_json(wall_now(), sim_.step_count() - c_.first_step, "unstable");
     throw;
   } catch (const std::bad_alloc&) {
     out_of_memory();

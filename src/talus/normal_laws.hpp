@@ -20,6 +20,12 @@ namespace talus {
 struct LinearSpringDashpot {
   static constexpr std::string_view name = "linear";
   static constexpr int thesis_force_law = 1; ///< its number in the thesis' input files
+  /// The material key that sets its stiffness, and how the peak overlap of an impact goes with
+  /// it: overlap ~ key^(-1 / stiffness_power).
+  static constexpr double Material::*stiffness_key = &Material::normal_stiffness;
+  static constexpr const char* stiffness_name = "normal_stiffness";
+  static constexpr const char* stiffness_unit = "N/m";
+  static constexpr double stiffness_power = 2.0;
   static constexpr bool uses_r_eff = false;
   /// Whether the stiffness k_n changes with the overlap (a spring following it then rescales).
   static constexpr bool stiffness_follows_overlap = false;
@@ -85,6 +91,10 @@ struct LinearSpringDashpot {
 struct HertzViscoelastic {
   static constexpr std::string_view name = "hertz";
   static constexpr int thesis_force_law = 0;
+  static constexpr double Material::*stiffness_key = &Material::young;
+  static constexpr const char* stiffness_name = "young";
+  static constexpr const char* stiffness_unit = "Pa";
+  static constexpr double stiffness_power = 2.5; ///< overlap ~ E^(-2/5)
   static constexpr bool uses_r_eff = true;
   static constexpr bool stiffness_follows_overlap = true;
   /// sqrt(5/6): Tsuji et al. 1992's factor for a dashpot beside a Hertzian spring.

@@ -380,6 +380,44 @@ TEST(ScenarioBuild, AccidentalGapsInHandMadeWallsAreRefused) {
   const std::string opening = grains + "[[geometry.segments]]\na = [0.0, 0.0]\nb = [0.04, 0.0]\n"
                                        "[[geometry.segments]]\na = [0.06, 0.0]\nb = [0.1, 0.0]\n";
   EXPECT_NO_THROW(build_scenario(load_scenario(opening, "t")));
+  // two free ends 4 mm apart at a corner below a third segment that closes the gap: accepted
+  const std::string closed = gap + "[[geometry.segments]]\na = [0.045, 0.0]\nb = [0.06, 0.0]\n";
+  EXPECT_NO_THROW(build_scenario(load_scenario(closed, "t")));
+}
+
+// What users met: three joined 4 mm floor segments, and a rough base of 55
+// overlapping wall particles (r = 2 mm, 3.64 mm apart) under grains of 3.2 to 3.6 mm diameter;
+// next-but-one wall particles are 3.28 mm apart, but the one between closes the gap.
+TEST(ScenarioBuild, GapsThatAreClosedAreNotRefused) {
+  const std::string grains =
+      "[particles]\ncount = 4\nsize = { mean_radius = 0.0017, spread = 0.0001 }\n"
+      "[packing]\nregion = [0.0, 0.01, 0.1, 0.1]\n";
+  // grains of 3 to 5 mm diameter: each segment's far end is 4 mm from the next one's near end
+  std::string floor = "[particles]\ncount = 4\nsize = { mean_radius = 0.002, spread = 0.0005 }\n"
+                      "[packing]\nregion = [0.0, 0.01, 0.012, 0.1]\n";
+  for (int k = 0; k < 3; ++k)
+    floor += "[[geometry.segments]]\na = [" + std::to_string(0.004 * k) + ", 0.0]\nb = [" +
+             std::to_string(0.004 * (k + 1)) + ", 0.0]\n";
+  EXPECT_NO_THROW(build_scenario(load_scenario(floor, "t")));
+  std::string base = grains;
+  for (int k = 0; k < 55; ++k)
+    base += "[[particles.list]]\nposition = [" + std::to_string(0.00364 * k - 0.05) +
+            ", -0.002]\nradius = 0.002\nkind = \"fixed\"\n";
+  EXPECT_NO_THROW(build_scenario(load_scenario(base, "t")));
+  // the same base with one wall particle taken out leaves a real gap: refused, naming the two
+  std::string holed = grains;
+  for (int k = 0; k < 55; ++k)
+    if (k != 20)
+      holed += "[[particles.list]]\nposition = [" + std::to_string(0.00364 * k - 0.05) +
+               ", -0.002]\nradius = 0.002\nkind = \"fixed\"\n";
+  try {
+    build_scenario(load_scenario(holed, "t"));
+    FAIL() << "accepted a base with a hole";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("wall particles 19 and 20 leave a gap of 0.003280"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include "cli/run/run_loop.hpp"
 #include "scenario/file/toml_reader.hpp"
+#include "scenario/soft_contacts.hpp"
 #include "scenario/timestep_accuracy.hpp"
 
 namespace talus::cli {
@@ -54,6 +55,8 @@ int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
     if (!built.settled) fmt::print("  warning: not settled within packing.settle_max_time\n");
     std::fflush(stdout);
   }
+  if (const std::string w = soft_contact_warning(s, built); !w.empty())
+    fmt::print(stderr, "talus: warning: {}\n", w);
   return start_run(s, std::move(built), std::move(folder), o);
 }
 
