@@ -227,8 +227,10 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
       "# The native scenario's system: its grains after the packing, materials, laws, timestep,\n"
       "# gravity, wall particles, wall segments and drivers. LAMMPS' atom ids are the native\n"
       "# ids + 1. LAMMPS integrates with velocity Verlet (the scenario: {}); compute\n"
-      "# erotate/sphere counts 2/5 m r^2 for every atom (the native disks have 1/2 m r^2).\n",
-      to_string(b.config.integrator));
+      "# erotate/sphere counts 2/5 m r^2 for every atom ({}).\n",
+      to_string(b.config.integrator),
+      s.particles.shape == Shape::disk ? "the native grains are disks, of 1/2 m r^2"
+                                       : "the native grains are spheres too");
   if (b.config.integrator == Integrator::verlet)
     out +=
         b.config.verlet_velocity == VerletVelocity::half_step
@@ -241,14 +243,13 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
 
 std::string pair_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
   // a Hertz damping left to be derived is derived by LAMMPS as natively, per contact
-  std::string out = fmt::format("pair_style granthesis {} {}{}\n", name_of(s.simulation.normal_law),
-                                name_of(s.simulation.tangential_law),
-                                with_normal_law(s.simulation.normal_law,
-                                                []<class N>() {
-                                                  return N::damping_needs_impact_speed;
-                                                })
-                                    ? fmt::format(" impact_speed {}", s.simulation.impact_speed)
-                                    : std::string());
+  std::string out =
+      fmt::format("pair_style granthesis {} {}{}\n", name_of(s.simulation.normal_law),
+                  name_of(s.simulation.tangential_law),
+                  with_normal_law(s.simulation.normal_law,
+                                  []<class N>() { return N::damping_needs_impact_speed; })
+                      ? fmt::format(" impact_speed {}", s.simulation.impact_speed)
+                      : std::string());
   for (std::size_t k = 0; k < t.key_of.size(); ++k)
     out += fmt::format(
         "pair_coeff {0} {0} {1}\n", k + 1,

@@ -70,6 +70,15 @@ TEST(MessageSources, SetValuesAndReferencesNameTheirSource) {
   EXPECT_NE(why.find("s.toml:5: key 'particles.material'"), std::string::npos) << why;
 }
 
+// A key the file leaves out is still a key of its table, for the hint of a misspelt one.
+TEST(MessageSources, AnUnknownKeysHintNamesKeysTheFileLeavesOut) {
+  const std::string why =
+      refusal([] { load_scenario("[simulation]\nduration = 1.0\ntimestepp = 1e-5\n", "h.toml"); });
+  EXPECT_NE(why.find("h.toml:3: key 'simulation.timestepp': unknown key; did you mean 'timestep'?"),
+            std::string::npos)
+      << why;
+}
+
 // Every grain fixed, with an explicit timestep: no bare "stiffness and mass must be > 0".
 TEST(MessageSources, AScenarioWithNoFreeGrainSaysSo) {
   const Scenario s = load_scenario("[simulation]\ntimestep = 1e-5\n[particles]\nshape = "

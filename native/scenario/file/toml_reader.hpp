@@ -31,7 +31,7 @@ public:
   /// `path` is the dotted name of the table ("" for the root, "simulation", "materials.0").
   TableReader(const toml::table& table, std::string file, std::string path);
 
-  bool has(std::string_view key) const;
+  bool has(std::string_view key);
   double number(std::string_view key, double fallback, double min, double max, const char* allowed);
   std::optional<double> optional_number(std::string_view key, double min, double max,
                                         const char* allowed);
