@@ -22,6 +22,12 @@ struct Domain {
     return p;
   }
 
+  /// The unwrapped position of p that has crossed `image` periodic boundaries.
+  template <class I> Vec2 unwrapped(Vec2 p, const I& image) const {
+    const Vec2 l = size();
+    return {p.x + l.x * image.x, p.y + l.y * image.y};
+  }
+
   /// The shortest vector from b to a, taking periodic images into account.
   Vec2 minimum_image(Vec2 a, Vec2 b) const {
     Vec2 d = a - b;

@@ -153,8 +153,14 @@ void write_particles(Writer& w, const Particles& p) {
   p.for_each_field([&](const auto& v) { w.vec(v); });
 }
 
-void read_particles(Reader& r, Particles& p) {
-  p.for_each_field([&](auto& v) { r.vec(v); });
+void read_particles(Reader& r, Particles& p, std::uint32_t version) {
+  p.for_each_field([&](auto& v) {
+    // the image counts came with format 10: before, no boundary had been counted
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::vector<Image>>)
+      if (version < 10) return;
+    r.vec(v);
+  });
+  if (version < 10) p.image.assign(p.position.size(), {});
   // every field read is checked: one of another length would be read out of its bounds later
   const std::size_t n = p.position.size();
   p.for_each_state_field([&](const auto& v) {
@@ -288,7 +294,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   Reader r(bytes, head, head + size, source);
   Checkpoint c;
   World& world = c.state.world;
-  read_particles(r, world.particles);
+  read_particles(r, world.particles, version);
   if (version == 7) {
     r.vec(world.walls);
   } else {

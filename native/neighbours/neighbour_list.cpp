@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <limits>
 
 #include "neighbours/cell_grid.hpp"
@@ -313,8 +314,15 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
                           const Domain& domain, double skin, int threads) {
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   if (domain.any_periodic()) {
+    const Vec2 l = domain.size();
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::ptrdiff_t i = 0; i < n; ++i) p.position[i] = domain.wrap(p.position[i]);
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const Vec2 was = p.position[i];
+      p.position[i] = domain.wrap(was);
+      // the boundaries crossed, counted for the unwrapped position (Domain::unwrapped)
+      p.image[i].x += static_cast<std::int32_t>(std::nearbyint((was.x - p.position[i].x) / l.x));
+      p.image[i].y += static_cast<std::int32_t>(std::nearbyint((was.y - p.position[i].y) / l.y));
+    }
   }
   list.skin = skin;
   build_pairs(list, p, domain, skin, threads);

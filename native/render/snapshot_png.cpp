@@ -171,15 +171,19 @@ void draw_tracks(const Canvas& cv, const PictureOptions& o) {
   cairo_t* cr = cv.cr;
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  // a path broken at a periodic boundary comes as several lines of one id: one colour, one dot
+  std::size_t colour = 0;
   for (std::size_t k = 0; k < o.tracks.size(); ++k) {
+    if (k > 0 && o.tracks[k].id != o.tracks[k - 1].id) ++colour;
     const auto& points = o.tracks[k].points;
     if (points.empty()) continue;
-    const Rgb c = track_colours[k % 6];
+    const Rgb c = track_colours[colour % 6];
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_set_line_width(cr, 2.5);
     cairo_move_to(cr, cv.X(points.front().x), cv.Y(points.front().y));
     for (const Vec2& q : points) cairo_line_to(cr, cv.X(q.x), cv.Y(q.y));
     cairo_stroke(cr);
+    if (k + 1 < o.tracks.size() && o.tracks[k + 1].id == o.tracks[k].id) continue;
     cairo_arc(cr, cv.X(points.back().x), cv.Y(points.back().y), 5.0, 0.0, 2.0 * std::numbers::pi);
     cairo_fill(cr);
   }

@@ -39,7 +39,7 @@ void TrackObserver::open(RunContext& c) {
 }
 
 void TrackObserver::start(RunContext& c) {
-  *out_ << "time,id,x,y,angle,vx,vy,omega\n";
+  *out_ << "time,id,x,y,angle,vx,vy,omega,xu,yu\n";
   record(c);
 }
 

@@ -90,13 +90,16 @@ std::string group_force_columns(const Simulation& sim, const RunBook& book) {
 
 std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& tracked) {
   const Particles& p = sim.world().particles;
+  const Domain& domain = sim.world().domain;
   std::string out;
-  for (const auto i : tracked)
+  for (const auto i : tracked) {
     // every number as the shortest text that reads back to the engine's double: the tracks
     // compare with another engine's to rounding
-    out += fmt::format("{},{},{},{},{},{},{},{}\n", sim.time(), p.id[i], p.position[i].x,
+    const Vec2 u = domain.unwrapped(p.position[i], p.image[i]);
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", sim.time(), p.id[i], p.position[i].x,
                        p.position[i].y, p.angle[i], p.velocity[i].x, p.velocity[i].y,
-                       p.angular_velocity[i]);
+                       p.angular_velocity[i], u.x, u.y);
+  }
   return out;
 }
 

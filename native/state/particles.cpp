@@ -55,6 +55,7 @@ void Particles::reserve(std::size_t n) {
   material.reserve(n);
   kind.reserve(n);
   id.reserve(n);
+  image.reserve(n);
 }
 
 std::size_t Particles::add(const ParticleSpec& s) {
@@ -77,6 +78,7 @@ std::size_t Particles::add(const ParticleSpec& s) {
   material.push_back(s.material);
   kind.push_back(s.kind);
   id.push_back(static_cast<std::uint32_t>(id.size()));
+  image.push_back({});
   gear = {}; // derivatives are (re)initialised by the integrator
   return size() - 1;
 }

@@ -32,6 +32,13 @@ struct GearDerivatives {
   bool empty() const { return r2.empty(); }
 };
 
+/// The periodic images a particle has crossed into, per direction: its unwrapped position is
+/// its position plus these times the box's lengths (LAMMPS' image flags).
+struct Image {
+  std::int32_t x = 0, y = 0;
+  bool operator==(const Image&) const = default;
+};
+
 /// What it takes to add one particle.
 struct ParticleSpec {
   Vec2 position;
@@ -61,6 +68,7 @@ struct Particles {
   std::vector<std::uint16_t> material;
   std::vector<Kind> kind;
   std::vector<std::uint32_t> id; ///< stable identity: survives any reordering
+  std::vector<Image> image;      ///< periodic boundaries crossed (all 0 without them)
   GearDerivatives gear;
   std::vector<Vec2> force_previous;    ///< velocity Verlet: F(t) while F(t + dt) is computed
   std::vector<double> torque_previous; ///< velocity Verlet: the same for the torque
@@ -107,7 +115,7 @@ private:
   template <class P, class F> static void fields_of_state(P& p, F& f) {
     f(p.position), f(p.velocity), f(p.force), f(p.angle), f(p.angular_velocity), f(p.torque);
     f(p.radius), f(p.mass), f(p.inertia), f(p.inv_mass), f(p.inv_inertia), f(p.material);
-    f(p.kind), f(p.id);
+    f(p.kind), f(p.id), f(p.image);
   }
   template <class P, class F> static void fields_of_integrator(P& p, F& f) {
     f(p.gear.r2), f(p.gear.r3), f(p.gear.r4), f(p.gear.phi2), f(p.gear.phi3), f(p.gear.phi4);

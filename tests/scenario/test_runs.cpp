@@ -206,6 +206,27 @@ TEST(Resume, AFormat8CheckpointIsReadToTheSameState) {
 // A checkpoint whose checksum holds but whose arrays disagree in length (written by a defective
 // build, say) is refused when read, whichever per-particle field is off: read on, the short
 // array would be indexed beyond its end.
+// Format 9 had no image counts: they read as none crossed, and the state is this talus' own.
+TEST(Resume, AFormat9CheckpointIsReadToTheSameState) {
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/drum-format9.ckpt";
+  const std::string bytes = read_file(file);
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 8, sizeof(version));
+  ASSERT_EQ(version, 9u);
+  const Checkpoint old = decode_checkpoint(bytes, file);
+  EXPECT_EQ(old.state.world.particles.image.size(), old.state.world.particles.size());
+  const fs::path dir = fresh_dir("format9");
+  ASSERT_EQ(run(builtin("drum", {"particles.count=20", "simulation.duration=0.002",
+                                 "packing.settle_max_time=0.01"}),
+                dir),
+            cli::exit_completed);
+  const Checkpoint now = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "now");
+  EXPECT_EQ(encode_checkpoint({old.state, old.config, ""}),
+            encode_checkpoint({now.state, now.config, ""}));
+  EXPECT_NO_THROW(Simulation::restore(old.state, old.config));
+  fs::remove_all(dir);
+}
+
 TEST(Resume, ArraysOfDifferentLengthsAreRefused) {
   const Scenario s = builtin("collisions", {"simulation.duration=0.002"});
   const fs::path dir = fresh_dir("lengths");

@@ -209,19 +209,22 @@ Section analyze_tracks(RunData& run) {
     throw InvalidArgument("'" + run.dir().string() +
                           "' has no track.csv: the scenario tracks no particles");
   const auto tracks = read_tracks(track.string());
-  std::string csv = "time,id,x,y,vx,vy,speed\n";
+  std::string csv = "time,id,x,y,vx,vy,speed,xu,yu\n";
   Section s{"Tracked particles", {}, {}, {}};
-  s.summary = "Positions and velocities of the tracked particles against time (track.csv).";
+  s.summary = "Positions and velocities of the tracked particles against time (track.csv); "
+              "across periodic boundaries the positions are unwrapped.";
   std::string json = "{\"tracks\": [";
   for (const auto& [id, points] : tracks) {
     double path = 0.0;
     for (std::size_t k = 0; k < points.size(); ++k) {
       const TrackPoint& p = points[k];
-      csv += fmt::format("{:.9g},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g}\n", p.time, id, p.position.x,
-                         p.position.y, p.velocity.x, p.velocity.y, norm(p.velocity));
-      if (k) path += norm(p.position - points[k - 1].position);
+      csv += fmt::format("{:.9g},{},{:.9g},{:.9g},{:.6g},{:.6g},{:.6g},{:.9g},{:.9g}\n", p.time, id,
+                         p.position.x, p.position.y, p.velocity.x, p.velocity.y, norm(p.velocity),
+                         p.unwrapped.x, p.unwrapped.y);
+      // unwrapped: a grain that crossed a periodic boundary went on, it did not jump back
+      if (k) path += norm(p.unwrapped - points[k - 1].unwrapped);
     }
-    const Vec2 net = points.back().position - points.front().position;
+    const Vec2 net = points.back().unwrapped - points.front().unwrapped;
     const double span = points.back().time - points.front().time;
     json += fmt::format("{}{{\"id\": {}, \"path_length\": {}, \"displacement\": [{}, {}], "
                         "\"mean_speed\": {}}}",

@@ -125,9 +125,11 @@ elif kind == "tracks":
     fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
     for pid, rs in by_id(rows).items():
         t = col("time", rs)
-        for a, key in zip(axes.flat, ["x", "y", "vx", "vy"]):
+        # unwrapped positions: no sawtooth where a grain crosses a periodic boundary
+        for a, key in zip(axes.flat, ["xu", "yu", "vx", "vy"]):
             a.plot(t, col(key, rs), label=f"id {pid}")
-    for a, label in zip(axes.flat, ["x [m]", "y [m]", "v_x [m/s]", "v_y [m/s]"]):
+    for a, label in zip(axes.flat, ["x (unwrapped) [m]", "y (unwrapped) [m]", "v_x [m/s]",
+                                    "v_y [m/s]"]):
         a.set_ylabel(label)
     axes[1][0].set_xlabel("time [s]")
     axes[1][1].set_xlabel("time [s]")

@@ -63,8 +63,18 @@ std::vector<TrackLine> lines_until(const Tracks& tracks, double t) {
   std::vector<TrackLine> out;
   for (const auto& [id, points] : tracks) {
     TrackLine line{id, {}};
-    for (const TrackPoint& p : points)
-      if (p.time <= t * (1.0 + 1e-9) + 1e-12) line.points.push_back(p.position);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const TrackPoint& p = points[k];
+      if (p.time > t * (1.0 + 1e-9) + 1e-12) break;
+      // across a periodic boundary the path goes on from the other side: no line across the box
+      if (k > 0 &&
+          norm((p.position - points[k - 1].position) - (p.unwrapped - points[k - 1].unwrapped)) >
+              1e-9 * (1.0 + norm(p.unwrapped))) {
+        out.push_back(std::move(line));
+        line = TrackLine{id, {}};
+      }
+      line.points.push_back(p.position);
+    }
     out.push_back(std::move(line));
   }
   return out;
