@@ -14,6 +14,10 @@ cat "$dir/out.txt"
 head -1 "$dir/run/analysis/forces.csv" | grep -q "^f_over_mean,probability_density,count$" || exit 1
 grep -q '"beta"' "$dir/run/analysis/forces.json" || exit 1
 grep -q "carry less than the mean force" "$dir/out.txt" || exit 1
+# what does not apply is skipped, saying why: the drum's grains are of one size, about
+grep -q "segregation: skipped (the grains' radii span .* too alike to sort by size" "$dir/out.txt" || { echo "segregation not skipped"; exit 1; }
+# profiles leave the start-up out unless --from says otherwise
+grep -q "profiles: .* from t = .* (the first quarter of the run left out as its start-up" "$dir/out.txt" || { echo "profiles from the start"; exit 1; }
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   [ -s "$dir/run/analysis/thermo.png" ] && [ -s "$dir/run/analysis/forces.png" ] || { echo "charts missing"; exit 1; }
 fi

@@ -38,11 +38,12 @@ private:
 };
 
 struct AnalysisOptions {
-  std::string frames = "all";                      ///< forces: all or last
-  std::optional<std::pair<double, double>> band;   ///< profiles: y0, y1 in m
-  std::size_t bins = 0;                            ///< profiles: bins across (0: automatic)
-  double from = 0.0;                               ///< s: ignore snapshots before this
-  double cell = 0.0;                               ///< speed map cell, m (0: automatic)
+  std::string frames = "all";                    ///< forces: all or last
+  std::optional<std::pair<double, double>> band; ///< profiles: y0, y1 in m
+  std::size_t bins = 0;                          ///< profiles: bins across (0: automatic)
+  double from = -1.0; ///< s: ignore snapshots before this; < 0: each analysis' default
+                      ///< (profiles leave the start-up out, start_up_end; the others none)
+  double cell = 0.0;  ///< speed map cell, m (0: automatic)
   std::optional<std::pair<double, double>> window; ///< discharge: t0, t1 in s (none: steady)
 };
 
@@ -72,6 +73,10 @@ bool plot(const std::filesystem::path& out, const std::string& kind,
 
 /// Charts whose script failed in this process: talus analyze then exits non-zero.
 int& failed_charts();
+
+/// Where a run's start-up ends, for analyses of its steady state: the first quarter of the time
+/// its snapshots span (a drum spinning up, a silo's first outflow).
+double start_up_end(RunData& run);
 
 Section analyze_thermo(RunData& run);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);

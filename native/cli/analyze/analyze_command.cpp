@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -34,6 +35,18 @@ std::pair<double, double> parse_pair(const std::string& option, const std::strin
   return {a, b};
 }
 
+// Below this ratio of the largest to the smallest free grain's radius a bed is taken as of one
+// size (a spread of a few tens of percent keeps grains from crystallising; size segregation
+// studies use ratios of 1.5 and more).
+constexpr double segregation_size_ratio = 1.5;
+
+std::pair<double, double> free_radius_range(const Frame& f) {
+  double lo = std::numeric_limits<double>::max(), hi = 0.0;
+  for (std::size_t i = 0; i < f.radius.size(); ++i)
+    if (f.kind[i] == 0) lo = std::min(lo, f.radius[i]), hi = std::max(hi, f.radius[i]);
+  return {lo, hi};
+}
+
 // Every analysis that applies to the run; one that cannot run says why and the others go on.
 std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
   std::vector<Section> out;
@@ -55,7 +68,15 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     bool driven = false;
     for (const DriverSection& d : s.drivers) driven = driven || d.type == "vibrate";
     driven = driven || s.geometry.builder == "drum";
-    if (driven) attempt("segregation", [&] { return analyze_segregation(run, o); });
+    // and of sizes far enough apart for sorting by size to mean something
+    const auto [r_small, r_large] = free_radius_range(run.frames(0.0).front());
+    if (driven && r_large < segregation_size_ratio * r_small)
+      fmt::print("segregation: skipped (the grains' radii span {:.3g} to {:.3g} m, a ratio of "
+                 "{:.2f} < {}: too alike to sort by size; `talus analyze DIR segregation` runs it "
+                 "anyway)\n",
+                 r_small, r_large, r_large / r_small, segregation_size_ratio);
+    else if (driven)
+      attempt("segregation", [&] { return analyze_segregation(run, o); });
     if (fs::exists(run.dir() / "frost.csv")) attempt("frost", [&] { return analyze_frost(run); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
@@ -110,8 +131,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "last"}));
-  cmd->add_option("--from", o->a.from, "s: leave out snapshots before this time")
-      ->capture_default_str()
+  cmd->add_option("--from", o->a.from,
+                  "s: leave out snapshots before this time (default: profiles leave out the "
+                  "first quarter of the run as its start-up, the others nothing)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--band", o->band,
                   "profiles: Y0,Y1 in m (default: just above an orifice, else the middle of the "

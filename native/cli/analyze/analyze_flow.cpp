@@ -145,9 +145,16 @@ void write_speed_map(const fs::path& out, const std::vector<Frame>& frames, cons
 
 } // namespace
 
+double start_up_end(RunData& run) {
+  const auto& all = run.frames(0.0);
+  return all.empty() ? 0.0 : all.front().time + 0.25 * (all.back().time - all.front().time);
+}
+
 Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   const Scenario& sc = run.scenario();
-  const auto& frames = run.frames(o.from);
+  const bool start_up_left_out = o.from < 0.0;
+  const double from = start_up_left_out ? start_up_end(run) : o.from;
+  const auto& frames = run.frames(from);
   const double d = 2.0 * run.mean_radius();
   Rect seen = empty_rect; // where the grains went, over all frames
   for (const Frame& f : frames) take_in(seen, f);
@@ -179,9 +186,13 @@ Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
       "\"edge_vy\": {}",
       json_number(y0), json_number(y1), bins, frames.size(), json_number(frames.front().time),
       json_number(centre), json_number(edges));
-  fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots; v_y centre {:.4g} m/s, "
-             "edges {:.4g} m/s\n",
-             y0, y1, bins, frames.size(), centre, edges);
+  fmt::print("profiles: band {:.4g} to {:.4g} m, {} bins, {} snapshots from t = {:.3g} s{}; v_y "
+             "centre {:.4g} m/s, edges {:.4g} m/s\n",
+             y0, y1, bins, frames.size(), frames.front().time,
+             start_up_left_out ? " (the first quarter of the run left out as its start-up; "
+                                 "--from T sets where to start)"
+                               : "",
+             centre, edges);
   // cells of two mean diameters by default
   write_speed_map(out, frames, seen, o.cell > 0.0 ? o.cell : 2.0 * d);
 

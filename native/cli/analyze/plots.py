@@ -49,11 +49,15 @@ if kind == "thermo":
         c.plot(t, col("energy_imbalance"), "k--", label="imbalance (the integration's error)")
         c.set_ylabel("energy [J]")
         c.legend(fontsize=8)
-    b.plot(t, col("coordination"), label="coordination number Z")
-    b.plot(t, col("packing_fraction"), label="packing fraction")
+    # each quantity on its own axis: Z runs to 3 or more, the packing fraction below 1
+    b.plot(t, col("coordination"), color="C0", label="coordination number Z")
     b.set_xlabel("time [s]")
-    b.set_ylabel("Z, packing fraction [-]")
-    b.legend(fontsize=8)
+    b.set_ylabel("coordination number Z [-]", color="C0")
+    b2 = b.twinx()
+    b2.plot(t, col("packing_fraction"), color="C1", label="packing fraction")
+    b2.set_ylabel("packing fraction [-]", color="C1")
+    lines = b.get_lines() + b2.get_lines()
+    b.legend(lines, [l.get_label() for l in lines], fontsize=8)
 elif kind == "forces":
     used = [r for r in rows if int(r["count"]) > 0]
     fig, a = plt.subplots(figsize=(7, 5))
@@ -122,18 +126,29 @@ elif kind == "speed_map":
     a.set_ylabel("y [m]")
     a.set_title(f"mean speed over {extra['snapshots']} snapshots (blank: rarely visited)")
 elif kind == "tracks":
-    fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
-    for pid, rs in by_id(rows).items():
+    tracks = by_id(rows)
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True,
+                             layout="constrained" if len(tracks) > 10 else None)
+    many = len(tracks) > 10  # a legend that long would cover the panels: a colour scale instead
+    cmap = plt.get_cmap("viridis")
+    ids = sorted(int(pid) for pid in tracks)
+    norm = plt.Normalize(ids[0], max(ids[-1], ids[0] + 1))
+    for k, (pid, rs) in enumerate(tracks.items()):
         t = col("time", rs)
+        colour = cmap(norm(int(pid))) if many else f"C{k % 10}"
         # unwrapped positions: no sawtooth where a grain crosses a periodic boundary
         for a, key in zip(axes.flat, ["xu", "yu", "vx", "vy"]):
-            a.plot(t, col(key, rs), label=f"id {pid}")
+            a.plot(t, col(key, rs), label=f"id {pid}", color=colour, lw=0.6 if many else 1.5)
     for a, label in zip(axes.flat, ["x (unwrapped) [m]", "y (unwrapped) [m]", "v_x [m/s]",
                                     "v_y [m/s]"]):
         a.set_ylabel(label)
     axes[1][0].set_xlabel("time [s]")
     axes[1][1].set_xlabel("time [s]")
-    axes[0][0].legend(fontsize=7)
+    if many:
+        m = plt.cm.ScalarMappable(cmap=cmap, norm=norm)
+        fig.colorbar(m, ax=axes, label=f"particle id ({len(ids)} tracked)")
+    else:
+        axes[0][0].legend(fontsize=7)
 elif kind == "segregation":
     t = col("time")
     ledger = "energy_imbalance" in rows[0]  # output.energy_ledger
@@ -273,5 +288,6 @@ elif kind == "beverloo":
     a.legend(fontsize=8)
 else:
     sys.exit(f"unknown chart {kind}")
-fig.tight_layout()
+if fig.get_layout_engine() is None:  # a figure with a colour bar lays itself out
+    fig.tight_layout()
 fig.savefig(target, dpi=110)
