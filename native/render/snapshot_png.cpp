@@ -42,6 +42,12 @@ Rgb category(std::size_t k) {
   return palette[k % 8];
 }
 
+// Grains fade under force chains or tracks, so that those stand out; their colour key fades
+// alike.
+double grain_alpha(const PictureOptions& o) {
+  return o.chains || !o.tracks.empty() ? 0.25 : 1.0;
+}
+
 bool continuous(SnapshotColour c) {
   return c == SnapshotColour::speed || c == SnapshotColour::size || c == SnapshotColour::force;
 }
@@ -129,25 +135,29 @@ void draw_particles(const Canvas& cv, const Frame& f, const PictureOptions& o, d
       c = f.kind[i] == 0 ? category(f.material[i]) : c;
     else if (f.kind[i] == 0)
       c = ramp((field(f, i, o.colour) - vmin) / span);
-    if (o.chains || !o.tracks.empty())
-      cairo_set_source_rgba(cv.cr, c.r, c.g, c.b, 0.25); // faded under the chains or tracks
-    else
-      cairo_set_source_rgb(cv.cr, c.r, c.g, c.b);
+    cairo_set_source_rgba(cv.cr, c.r, c.g, c.b, grain_alpha(o));
     cairo_fill(cv.cr);
   }
 }
 
-// Thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force.
-void draw_chains(const Canvas& cv, const Frame& f, const PictureOptions& o) {
+// Thesis figs. 1.1, 4.2, 4.13: width and darkness grow with the normal force, up to f_max.
+void chain_pen(cairo_t* cr, double u) {
+  cairo_set_source_rgb(cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
+  cairo_set_line_width(cr, 0.5 + 5.5 * u);
+}
+
+double chain_force_scale(const Frame& f, const PictureOptions& o) {
   double f_max = 0.0;
   for (const auto& ch : f.chains) f_max = std::max(f_max, ch.force);
-  if (o.chain_scale) f_max = *o.chain_scale;
+  return o.chain_scale ? *o.chain_scale : f_max;
+}
+
+void draw_chains(const Canvas& cv, const Frame& f, const PictureOptions& o) {
+  const double f_max = chain_force_scale(f, o);
   cairo_set_line_cap(cv.cr, CAIRO_LINE_CAP_ROUND);
   for (const auto& ch : f.chains) {
     if (f_max <= 0.0 || ch.force <= 0.0) continue;
-    const double u = std::min(1.0, ch.force / f_max);
-    cairo_set_source_rgb(cv.cr, 0.8 * (1.0 - u) + 0.6 * u, 0.1 * (1.0 - u), 0.1 * (1.0 - u));
-    cairo_set_line_width(cv.cr, 0.5 + 5.5 * u);
+    chain_pen(cv.cr, std::min(1.0, ch.force / f_max));
     cairo_move_to(cv.cr, cv.X(ch.from.x), cv.Y(ch.from.y));
     cairo_line_to(cv.cr, cv.X(ch.to.x), cv.Y(ch.to.y));
     cairo_stroke(cv.cr);
@@ -189,15 +199,19 @@ void draw_tracks(const Canvas& cv, const PictureOptions& o) {
   }
 }
 
-// The colour bar of a continuous colouring, with its range and unit, from (bx, by), bh high.
+// The colour bar of a continuous colouring, with its range and unit, from (bx, by), bh high;
+// faded as the grains are under chains or tracks (`alpha`), so that the bar reads them.
 void draw_colour_bar(cairo_t* cr, SnapshotColour colour, double vmin, double vmax, double bx,
-                     double by, double bh) {
+                     double by, double bh, double alpha) {
+  cairo_push_group(cr); // drawn whole, then faded: its overlapping strips must not add up
   for (int k = 0; k < 100; ++k) {
     const Rgb c = ramp(1.0 - k / 99.0);
     cairo_set_source_rgb(cr, c.r, c.g, c.b);
     cairo_rectangle(cr, bx, by + bh * k / 100.0, 18.0, bh / 100.0 + 1.0);
     cairo_fill(cr);
   }
+  cairo_pop_group_to_source(cr);
+  cairo_paint_with_alpha(cr, alpha);
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   const double unit = colour == SnapshotColour::size ? 1e3 : 1.0;
   const char* label = colour == SnapshotColour::speed  ? "|v| m/s"
@@ -214,7 +228,8 @@ void draw_colour_bar(cairo_t* cr, SnapshotColour colour, double vmin, double vma
 }
 
 // A legend of the categories (kinds or materials) present, from (bx, by).
-void draw_legend(cairo_t* cr, const Frame& f, SnapshotColour colour, double bx, double by) {
+void draw_legend(cairo_t* cr, const Frame& f, SnapshotColour colour, double bx, double by,
+                 double alpha) {
   std::vector<std::size_t> present;
   for (std::size_t i = 0; i < f.position.size(); ++i) {
     const std::size_t k = colour == SnapshotColour::kind ? f.kind[i] : f.material[i];
@@ -224,7 +239,7 @@ void draw_legend(cairo_t* cr, const Frame& f, SnapshotColour colour, double bx, 
   static constexpr const char* kinds[3] = {"free", "fixed", "moved"};
   for (std::size_t m = 0; m < present.size() && m < 20; ++m) {
     const Rgb c = category(present[m]);
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
     cairo_rectangle(cr, bx - 10.0, by + 20.0 * static_cast<double>(m), 14.0, 14.0);
     cairo_fill(cr);
     cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
@@ -233,6 +248,50 @@ void draw_legend(cairo_t* cr, const Frame& f, SnapshotColour colour, double bx, 
                                  : fmt::format("{}", present[m]);
     cairo_move_to(cr, bx + 8.0, by + 20.0 * static_cast<double>(m) + 12.0);
     cairo_show_text(cr, name.c_str());
+  }
+}
+
+// A length scale in the top strip from (x, y): a bar of a round length near a fifth of the
+// picture, with its length.
+double draw_scale_bar(const Canvas& cv, double width_m, double x, double y) {
+  const double target = 0.2 * width_m;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double length = decade;
+  for (const double m : {2.0, 5.0})
+    if (m * decade <= target) length = m * decade;
+  const double px = length * cv.scale;
+  cairo_set_source_rgb(cv.cr, 0.0, 0.0, 0.0);
+  cairo_set_line_width(cv.cr, 2.0);
+  cairo_move_to(cv.cr, x, y - 6.0);
+  cairo_line_to(cv.cr, x, y);
+  cairo_line_to(cv.cr, x + px, y);
+  cairo_line_to(cv.cr, x + px, y - 6.0);
+  cairo_stroke(cv.cr);
+  const std::string label = length >= 1.0    ? fmt::format("{:g} m", length)
+                            : length >= 1e-2 ? fmt::format("{:g} cm", length * 1e2)
+                            : length >= 1e-3 ? fmt::format("{:g} mm", length * 1e3)
+                                             : fmt::format("{:g} um", length * 1e6);
+  cairo_move_to(cv.cr, x + px + 6.0, y);
+  cairo_show_text(cv.cr, label.c_str());
+  return x + px + 60.0;
+}
+
+// What a chain's width says: samples at a quarter, half and all of the force scale.
+void draw_chain_key(const Canvas& cv, double f_max, double x, double y) {
+  cairo_set_source_rgb(cv.cr, 0.0, 0.0, 0.0);
+  cairo_move_to(cv.cr, x, y);
+  cairo_show_text(cv.cr, "chains, normal force:");
+  x += 130.0;
+  for (const double u : {0.25, 0.5, 1.0}) {
+    chain_pen(cv.cr, u);
+    cairo_move_to(cv.cr, x, y - 4.0);
+    cairo_line_to(cv.cr, x + 22.0, y - 4.0);
+    cairo_stroke(cv.cr);
+    cairo_set_source_rgb(cv.cr, 0.0, 0.0, 0.0);
+    const std::string label = fmt::format("{:.3g} N", u * f_max);
+    cairo_move_to(cv.cr, x + 27.0, y);
+    cairo_show_text(cv.cr, label.c_str());
+    x += 100.0;
   }
 }
 
@@ -245,7 +304,8 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
 
   const double margin = 0.03 * (hi.x - lo.x);
   const double scale = (o.width_px - Canvas::bar_px) / (hi.x - lo.x + 2.0 * margin);
-  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 40;
+  // a strip of 40 px on top (time and count; length scale and chain key) and 20 px below
+  int height_px = static_cast<int>(std::ceil((hi.y - lo.y + 2.0 * margin) * scale)) + 60;
   height_px += height_px % 2; // even sizes: what video encoders want
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, o.width_px, height_px);
   cairo_t* cr = cairo_create(surface);
@@ -261,15 +321,18 @@ void write_frame_png(const Frame& f, const std::string& path, const PictureOptio
 
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 12.0);
-  const double bx = o.width_px - Canvas::bar_px + 15.0, by = 30.0, bh = height_px - 80.0;
+  const double bx = o.width_px - Canvas::bar_px + 15.0, by = 50.0, bh = height_px - 100.0;
   if (continuous(o.colour))
-    draw_colour_bar(cr, o.colour, vmin, vmax, bx, by, bh);
+    draw_colour_bar(cr, o.colour, vmin, vmax, bx, by, bh, grain_alpha(o));
   else
-    draw_legend(cr, f, o.colour, bx, by);
+    draw_legend(cr, f, o.colour, bx, by, grain_alpha(o));
   cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
   const std::string stamp = fmt::format("t = {:.4f} s   N = {}", f.time, f.position.size());
   cairo_move_to(cr, 10.0, 16.0);
   cairo_show_text(cr, stamp.c_str());
+  const double key_x = draw_scale_bar(cv, hi.x - lo.x, 10.0, 34.0);
+  if (o.chains && chain_force_scale(f, o) > 0.0)
+    draw_chain_key(cv, chain_force_scale(f, o), key_x, 34.0);
 
   cairo_destroy(cr);
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());

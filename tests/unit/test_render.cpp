@@ -131,8 +131,18 @@ TEST(SnapshotPng, ForceChainIsDrawnDarkerThanTheFadedGrains) {
   const int cy = static_cast<int>(height - 20.0 - (0.0 - b.lo.y + margin) * scale);
   const auto chain = rgb(cx, cy);
   EXPECT_GT(chain[0], 2 * chain[1]) << "the chain pixel is not red"; // red dominates
-  const auto grain = rgb(cx, static_cast<int>(cy - 0.008 * scale));  // inside a grain
+  // inside the first grain, clear of the chain: (0, 0.006) m
+  const auto grain =
+      rgb(static_cast<int>((0.0 - b.lo.x + margin) * scale), static_cast<int>(cy - 0.006 * scale));
+  EXPECT_LT(grain[0] + grain[1] + grain[2], 3 * 255) << "the grain is not drawn there";
   EXPECT_GT(grain[1], chain[1] + 60) << "the faded grain is not lighter than the chain";
+  // the colour bar fades as the grains do: the bottom of the bar (the lowest speed, which both
+  // grains at rest have) is the grains' colour, to a few levels of rounding
+  const auto bar = rgb(600 - 70 + 15 + 9, height - 52);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(bar[k], grain[k], 3) << "channel " << k;
+  // a length scale in the top strip: a black bar from x = 10 px at y = 34 px
+  const auto scale_bar = rgb(30, 34);
+  EXPECT_LT(scale_bar[0] + scale_bar[1] + scale_bar[2], 3 * 60) << "no length scale";
   cairo_surface_destroy(img);
   std::filesystem::remove(path);
 }

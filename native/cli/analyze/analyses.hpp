@@ -42,7 +42,8 @@ struct AnalysisOptions {
   std::optional<std::pair<double, double>> band; ///< profiles: y0, y1 in m
   std::size_t bins = 0;                          ///< profiles: bins across (0: automatic)
   double from = -1.0; ///< s: ignore snapshots before this; < 0: each analysis' default
-                      ///< (profiles leave the start-up out, start_up_end; the others none)
+                      ///< (profiles of a driven flow leave the start-up out, start_up_end;
+                      ///< the others nothing)
   double cell = 0.0;  ///< speed map cell, m (0: automatic)
   std::optional<std::pair<double, double>> window; ///< discharge: t0, t1 in s (none: steady)
 };

@@ -132,8 +132,9 @@ void add_analyze_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"all", "last"}));
   cmd->add_option("--from", o->a.from,
-                  "s: leave out snapshots before this time (default: profiles leave out the "
-                  "first quarter of the run as its start-up, the others nothing)")
+                  "s: leave out snapshots before this time (default: profiles of a flow kept "
+                  "going by an orifice, a turning drum or a driven wall leave out the first "
+                  "quarter of the run as its start-up; the others nothing)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--band", o->band,
                   "profiles: Y0,Y1 in m (default: just above an orifice, else the middle of the "

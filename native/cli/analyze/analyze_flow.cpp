@@ -152,8 +152,12 @@ double start_up_end(RunData& run) {
 
 Section analyze_profiles(RunData& run, const AnalysisOptions& o) {
   const Scenario& sc = run.scenario();
-  const bool start_up_left_out = o.from < 0.0;
-  const double from = start_up_left_out ? start_up_end(run) : o.from;
+  // a flow kept going (an orifice, a turning drum, a driven wall) has a start-up before its
+  // steady state; a bed that settles, heaves or is pressed has none to leave out
+  const bool driven_flow =
+      has_orifice(sc) || sc.geometry.angular_velocity != 0.0 || !sc.drivers.empty();
+  const bool start_up_left_out = o.from < 0.0 && driven_flow;
+  const double from = start_up_left_out ? start_up_end(run) : std::max(0.0, o.from);
   const auto& frames = run.frames(from);
   const double d = 2.0 * run.mean_radius();
   Rect seen = empty_rect; // where the grains went, over all frames

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "cli/analyze/analyses.hpp"
+#include "cli/analyze/report_tables.hpp"
 #include "io/checkpoint.hpp"
 
 namespace fs = std::filesystem;
@@ -53,6 +54,13 @@ std::string image(const fs::path& png) {
                      escape(png.filename().string()), base64(bytes));
 }
 
+std::string table(const Rows& rows) {
+  std::string html = "<table>\n";
+  for (const auto& [k, v] : rows)
+    html += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", escape(k), escape(v));
+  return html + "</table>\n";
+}
+
 } // namespace
 
 fs::path write_report(RunData& run, const std::vector<Section>& sections) {
@@ -65,9 +73,14 @@ fs::path write_report(RunData& run, const std::vector<Section>& sections) {
       "padding:2px 8px}}figure{{margin:1em 0}}figcaption{{color:#666;font-size:80%}}</style>\n"
       "</head><body>\n<h1>{0}</h1>\n<p>{1}</p>\n<p>Run folder: <code>{2}</code></p>\n",
       escape(s.name), escape(s.description), escape(fs::absolute(run.dir()).string()));
-  if (std::ifstream json(run.dir() / "run.json"); json)
-    html += "<h2>Run</h2>\n<pre>" + escape(std::string{std::istreambuf_iterator<char>(json), {}}) +
-            "</pre>\n";
+  html += "<h2>Scenario</h2>\n" + table(scenario_rows(s));
+  if (std::ifstream in(run.dir() / "run.json"); in) {
+    try {
+      html += "<h2>Run</h2>\n" + table(run_rows(nlohmann::json::parse(in)));
+    } catch (const nlohmann::json::exception& e) {
+      html += "<h2>Run</h2>\n<p>run.json cannot be read: " + escape(e.what()) + "</p>\n";
+    }
+  }
   std::vector<fs::path> pictures;
   if (fs::exists(run.dir() / "final.png")) pictures.push_back(run.dir() / "final.png");
   if (fs::is_directory(run.dir() / "pictures"))
@@ -80,12 +93,7 @@ fs::path write_report(RunData& run, const std::vector<Section>& sections) {
   }
   for (const Section& sec : sections) {
     html += fmt::format("<h2>{}</h2>\n<p>{}</p>\n", escape(sec.title), escape(sec.summary));
-    if (!sec.numbers.empty()) {
-      html += "<table>\n";
-      for (const auto& [k, v] : sec.numbers)
-        html += fmt::format("<tr><td>{}</td><td>{}</td></tr>\n", escape(k), escape(v));
-      html += "</table>\n";
-    }
+    if (!sec.numbers.empty()) html += table(sec.numbers);
     for (const auto& c : sec.charts) html += image(c);
   }
   html += "<p>Made by <code>talus analyze</code>; the CSV files beside this page hold the numbers "
