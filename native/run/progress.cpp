@@ -16,11 +16,19 @@ void report_opening(const Simulation& sim, bool quiet) {
   // the engine uses fewer threads than asked where a thread would have too few particles to
   // repay its cost: say so rather than leave the user to wonder
   const int asked = sim.config().threads;
-  if (asked > 0 && sim.threads() < asked)
+  if (asked > 0 && sim.max_threads() < asked)
     fmt::print("  {} of the {} threads asked: {} particles, and a thread needs about {} to pay "
                "for itself\n",
-               sim.threads(), asked, sim.world().particles.size(),
+               sim.max_threads(), asked, sim.world().particles.size(),
                sim.config().min_particles_per_thread);
+  else if (asked == 0)
+    fmt::print("  threads: {} ({} particles; a thread needs about {} to pay for itself)\n",
+               sim.max_threads(), sim.world().particles.size(),
+               sim.config().min_particles_per_thread);
+  if (sim.max_threads() > 1)
+    fmt::print("  the run times its steps on {} threads and on 1 now and then, and goes on with "
+               "the faster (a busy machine can make threads slower than one)\n",
+               sim.max_threads());
   // the step specialised to the scene: what it leaves out (simulation/step_features.hpp)
   if (sim.step_description() == "general")
     fmt::print("  step: the general one (the scene uses every feature it has)\n");

@@ -38,7 +38,7 @@ Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunContr
     : s_(s), sim_(std::move(sim)), book_(std::move(book)), o_(std::move(o)),
       files_(std::move(dir), fresh),
       progress_(o_.quiet, s.simulation.duration, s.output.thermo_interval, sim_.config().timestep),
-      c_{s_, sim_, book_, files_} {
+      threads_(sim_.max_threads()), c_{s_, sim_, book_, files_} {
   c_.quiet = o_.quiet;
   c_.progress_on_terminal = progress_.on_terminal();
   set_length();
@@ -129,7 +129,7 @@ RunOutcome Run::steps() {
   due_.clear();
   for (const auto& o : observers_) due_.push_back(o->next_look(sim_.step_count()));
   while (!finished_before && sim_.step_count() < c_.stop_step) {
-    sim_.run(steps_to_next_look());
+    run_stretch(steps_to_next_look());
     follow_renumbering();
     look_after_step();
     if (!c_.end.empty()) {
@@ -158,6 +158,20 @@ RunOutcome Run::steps() {
                ended == "stop_at" ? "stopped (--stop-at)" : "finished",
                progress_.time_text(sim_.time()), sim_.step_count(), files_.dir().string());
   return ended == "stop_at" ? RunOutcome::stopped_at : RunOutcome::completed;
+}
+
+// The steps on the threads the chooser gives, timed for it; a change of its choice is said.
+void Run::run_stretch(std::uint64_t steps) {
+  sim_.use_threads(threads_.threads());
+  const auto start = std::chrono::steady_clock::now();
+  sim_.run(steps);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (threads_.took(seconds, steps, wall_now()) && !o_.quiet && !c_.progress_on_terminal)
+    fmt::print("threads: {} from t = {:.6g} s ({:.3g} us a step on {}, {:.3g} on 1: the machine "
+               "is {})\n",
+               threads_.threads(), sim_.time(), 1e6 * threads_.time_all(), sim_.max_threads(),
+               1e6 * threads_.time_one(), threads_.threads() == 1 ? "busy" : "free again");
 }
 
 // Steps to the next one after which an observer looks, at most 1000 so that a stop request is

@@ -18,6 +18,7 @@
 #include "run/run_files.hpp"
 #include "scenario/scenario.hpp"
 #include "simulation/simulation.hpp"
+#include "simulation/thread_chooser.hpp"
 
 namespace talus::run {
 
@@ -86,6 +87,7 @@ private:
   void make_observers();
   void refresh_observers();
   void set_length();
+  void run_stretch(std::uint64_t steps);
 
   Scenario s_;                   ///< the scenario as it stands now, with the changes made
   bool observers_stale_ = false; ///< a change was made: new observers after this look
@@ -94,6 +96,7 @@ private:
   RunControl o_;
   RunFiles files_;
   RunProgress progress_;
+  ThreadChooser threads_;
   RunContext c_;
   std::vector<std::unique_ptr<Observer>> observers_;
   std::vector<std::uint64_t> due_; ///< the step each observer looks at next

@@ -1,10 +1,12 @@
 #include "scenario/sediment.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "analysis/observables.hpp"
 #include "scenario/file/toml_reader.hpp"
+#include "simulation/thread_chooser.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -30,9 +32,17 @@ void sediment(const Scenario& s, const std::vector<SegmentSpec>& gate, std::uint
       max_time < 0.005 ? std::ceil(max_time / c.timestep) : std::floor(0.005 / c.timestep);
   const auto chunk = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(chunk_steps));
   out.settled = false;
+  ThreadChooser threads(sim.max_threads()); // a busy machine: one thread may settle faster
+  const auto began = std::chrono::steady_clock::now();
+  const auto seconds_since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   try {
     while (sim.time() < s.packing.settle_max_time) {
+      sim.use_threads(threads.threads());
+      const auto start = std::chrono::steady_clock::now();
       sim.run(chunk);
+      threads.took(seconds_since(start), chunk, seconds_since(began));
       const double ke = energies(sim).kinetic();
       if (progress) progress(sim.time(), ke);
       if (sim.time() > 0.05 && ke < s.packing.settle_energy * scale) {

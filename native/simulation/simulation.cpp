@@ -85,7 +85,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   const std::size_t per_thread = std::max<std::size_t>(1, config_.min_particles_per_thread);
   const auto useful = static_cast<int>(std::min<std::size_t>(
       world_.particles.size() / per_thread + 1, static_cast<std::size_t>(wanted)));
-  threads_ = std::max(1, useful);
+  threads_ = max_threads_ = std::max(1, useful);
   if (restoring) { // a saved state is indexed without checks from here on: it must fit
     const std::string list =
         neighbour_list_problem(list_, world_.particles.size(), world_.walls.size());

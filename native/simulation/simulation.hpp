@@ -1,5 +1,6 @@
 #pragma once
 // The facade a user drives: owns the World, runs the stages of a step, calls observers.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
@@ -113,6 +114,11 @@ public:
   const PairTable& pairs() const { return pairs_; }
   const NeighbourList& neighbours() const { return list_; }
   int threads() const { return threads_; }
+  /// The threads the system's size pays for (the most use_threads takes).
+  int max_threads() const { return max_threads_; }
+  /// Between steps: the threads of the steps from now on, 1 to max_threads(). The results are
+  /// the same bits whatever the count, so a run may change it as it goes (simulation/thread_chooser.hpp).
+  void use_threads(int n) { threads_ = std::clamp(n, 1, max_threads_); }
   /// Between steps: edits of single particles that a model makes (frost holds grains, moves
   /// held ones and thaws them), with what the next steps must know of them.
   ParticleEdits edit_particles();
@@ -196,6 +202,7 @@ private:
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
   int threads_ = 1;
+  int max_threads_ = 1;
   bool finite_ = true;                ///< every position and velocity finite after the last step
   std::vector<std::uint32_t> driven_; ///< moved particles, by drivers or held (drift checked)
   std::uint64_t renumberings_ = 0;

@@ -58,6 +58,12 @@ grep -q "^| 1 | .* | 1.00 | 1.00 |$" "$dir/threads.txt" || { echo "no row for 1 
 grep -q "^| 2 | " "$dir/threads.txt" || { echo "no row for 2 threads"; exit 1; }
 grep -q "bit-identical for every thread count: yes" "$dir/threads.txt" || exit 1
 [ "$(grep -c ',dense2d_threads,' "$csv")" -eq 2 ] || { echo "expected two threads rows"; exit 1; }
+# beside a busy process: the same states, and the busy process gone afterwards
+"$talus" bench threads --busy --n 100 --threads 1,2 --steps 20 --rounds 2 --cache "$dir/cache" \
+  --results "$dir/results" > "$dir/busy.txt" || { cat "$dir/busy.txt"; exit 1; }
+grep -q "beside another process that keeps one core busy" "$dir/busy.txt" || { cat "$dir/busy.txt"; exit 1; }
+grep -q "bit-identical for every thread count: yes" "$dir/busy.txt" || exit 1
+[ "$(grep -c ',dense2d_threads_busy,' "$csv")" -eq 2 ] || { echo "expected two busy rows"; exit 1; }
 "$talus" bench linear --tiles 0 --cache "$dir/cache" 2> "$dir/err.txt" &&
   { echo "--tiles 0 was accepted"; exit 1; }
 grep -q -- "--tiles" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }

@@ -3,8 +3,13 @@
 // the copies stay in the same state, since results do not depend on the thread count (checked
 // here at the end, bit for bit), and a drift of the machine's speed slows them alike.
 #include <algorithm>
+#include <csignal>
 #include <memory>
 #include <vector>
+
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
@@ -23,7 +28,22 @@ struct ThreadsOptions {
   std::uint64_t steps = 1000; // per copy and round
   int rounds = 5;
   std::string results = "bench/results";
+  bool busy = false; ///< time beside another process that keeps a core busy
 };
+
+// A process that keeps one core busy until it is killed (and ends with its parent).
+pid_t start_busy_process() {
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  require(pid >= 0, "bench threads --busy: fork failed");
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(0);
+    volatile std::uint64_t spins = 0; // volatile: the loop is not optimised away
+    for (;;) spins = spins + 1;
+  }
+  return pid;
+}
 
 // Every field that decides how a run goes on, bit for bit.
 bool same_state(const Simulation& a, const Simulation& b) {
@@ -55,8 +75,14 @@ void run_threads(const ThreadsOptions& o) {
   }
   fmt::print("bench threads: {} disks ({} x {}), {} steps per round, {} round(s)\n",
              base.world().particles.size(), nx, ny, o.steps, o.rounds);
-  fmt::print("  (each round: {} thread(s))\n", fmt::join(o.threads, ", "));
+  fmt::print("  (each round: {} thread(s)){}\n", fmt::join(o.threads, ", "),
+             o.busy ? "; beside another process that keeps one core busy" : "");
+  const pid_t busy = o.busy ? start_busy_process() : 0;
   time_in_turns(runs, o.rounds);
+  if (busy > 0) {
+    ::kill(busy, SIGKILL);
+    ::waitpid(busy, nullptr, 0);
+  }
   const double first = median(runs.front().ns);
   // Two figures for the speed-up: the ratio of the medians, and the median of the rounds' own
   // ratios (each round's copies ran within seconds of each other, so a slow minute of the host
@@ -75,7 +101,7 @@ void run_threads(const ThreadsOptions& o) {
                *std::min_element(z.ns.begin(), z.ns.end()),
                *std::max_element(z.ns.begin(), z.ns.end()), first / m, median(speed_up));
     csv = append_result(
-        o.results, {.benchmark = "dense2d_threads",
+        o.results, {.benchmark = o.busy ? "dense2d_threads_busy" : "dense2d_threads",
                     .n = base.world().particles.size(),
                     .steps = z.steps,
                     .threads = z.sim->threads(),
@@ -121,6 +147,9 @@ void add_bench_threads_command(CLI::App& bench) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   add_shared_bench_options(*cmd, o->system, o->results);
+  cmd->add_flag("--busy", o->busy,
+                "time beside another process that keeps one core busy (a shared machine); a run "
+                "then takes the faster of its threads and one");
   cmd->callback([o] { run_threads(*o); });
 }
 
