@@ -9,8 +9,8 @@
 
 #include "materials/timestep.hpp"
 #include "scenario/build_checks.hpp"
-#include "scenario/geometry.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/geometry.hpp"
 #include "scenario/packing.hpp"
 #include "scenario/sediment.hpp"
 #include "scenario/size_distribution.hpp"

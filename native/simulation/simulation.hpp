@@ -117,7 +117,8 @@ public:
   /// The threads the system's size pays for (the most use_threads takes).
   int max_threads() const { return max_threads_; }
   /// Between steps: the threads of the steps from now on, 1 to max_threads(). The results are
-  /// the same bits whatever the count, so a run may change it as it goes (simulation/thread_chooser.hpp).
+  /// the same bits whatever the count, so a run may change it as it goes
+  /// (simulation/thread_chooser.hpp).
   void use_threads(int n) { threads_ = std::clamp(n, 1, max_threads_); }
   /// Between steps: edits of single particles that a model makes (frost holds grains, moves
   /// held ones and thaws them), with what the next steps must know of them.

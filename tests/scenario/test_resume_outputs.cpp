@@ -12,6 +12,7 @@
 #include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
+#include "support/run_scenario.hpp"
 
 namespace fs = std::filesystem;
 
@@ -22,16 +23,11 @@ using testing::builtin;
 using testing::fresh_dir;
 
 int run(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
-  cli::RunOptions o;
-  o.quiet = true;
-  o.stop_at = stop_at;
-  return cli::start_run(s, build_scenario(s), dir.string(), o);
+  return testing::run_quietly(s, dir, stop_at);
 }
 
 int resume(const fs::path& dir) {
-  cli::RunOptions o;
-  o.quiet = true;
-  return cli::resume_run(dir.string(), o);
+  return testing::resume_quietly(dir);
 }
 
 std::string resume_error(const fs::path& dir) {

@@ -14,6 +14,7 @@
 #include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
+#include "support/run_scenario.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,10 +26,7 @@ using testing::fresh_dir;
 using testing::builtin;
 
 int run(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
-  cli::RunOptions o;
-  o.quiet = true;
-  o.stop_at = stop_at;
-  return cli::start_run(s, build_scenario(s), dir.string(), o);
+  return testing::run_quietly(s, dir, stop_at);
 }
 
 // Each built-in scenario builds and runs a few milliseconds with fewer grains.
@@ -161,18 +159,21 @@ TEST(Resume, TruncatedCheckpointIsDetected) {
   fs::remove_all(dir);
 }
 
-// A run checkpointed by the talus of checkpoint format 7 (tests/data/README.md says how the file
-// was made) is read by this one to the very state this one reaches on the same run: format 8
-// changed only the checksum's basis and dropped the padding bytes of three structs.
-TEST(Resume, AFormat7CheckpointIsReadToTheSameState) {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/collisions-format7.ckpt";
+// A checkpoint a talus of an earlier format wrote (tests/data/README.md says how each was made),
+// of format `version`.
+Checkpoint old_checkpoint(const char* name, std::uint32_t version) {
+  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/" + name;
   const std::string bytes = read_file(file);
-  std::uint32_t version = 0;
-  std::memcpy(&version, bytes.data() + 8, sizeof(version));
-  ASSERT_EQ(version, 7u);
-  const Checkpoint old = decode_checkpoint(bytes, file);
-  const fs::path dir = fresh_dir("format7");
-  ASSERT_EQ(run(builtin("collisions", {"simulation.duration=0.002"}), dir), cli::exit_completed);
+  std::uint32_t written = 0;
+  std::memcpy(&written, bytes.data() + 8, sizeof(written));
+  EXPECT_EQ(written, version) << name;
+  return decode_checkpoint(bytes, file);
+}
+
+// The old checkpoint holds the very state this talus reaches on the same run, and restores.
+void expect_the_state_of(const Checkpoint& old, const Scenario& s, const char* dir_name) {
+  const fs::path dir = fresh_dir(dir_name);
+  ASSERT_EQ(run(s, dir), cli::exit_completed);
   const Checkpoint now = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "now");
   EXPECT_EQ(old.state.steps, now.state.steps);
   EXPECT_EQ(encode_checkpoint({old.state, old.config, ""}),
@@ -181,52 +182,36 @@ TEST(Resume, AFormat7CheckpointIsReadToTheSameState) {
   fs::remove_all(dir);
 }
 
-// A checkpoint of format 8, with a driver (the grain press' lid), is read by this talus to the
-// state it reaches on the same run: format 9 added only the driver's start time, 0 for every
-// driver of format 8.
+// Format 8 changed only the checksum's basis and dropped the padding bytes of three structs.
+TEST(Resume, AFormat7CheckpointIsReadToTheSameState) {
+  expect_the_state_of(old_checkpoint("collisions-format7.ckpt", 7),
+                      builtin("collisions", {"simulation.duration=0.002"}), "format7");
+}
+
+// A checkpoint of format 8, with a driver (the grain press' lid): format 9 added only the
+// driver's start time, 0 for every driver of format 8.
 TEST(Resume, AFormat8CheckpointIsReadToTheSameState) {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/force_network-format8.ckpt";
-  const std::string bytes = read_file(file);
-  std::uint32_t version = 0;
-  std::memcpy(&version, bytes.data() + 8, sizeof(version));
-  ASSERT_EQ(version, 8u);
-  const Checkpoint old = decode_checkpoint(bytes, file);
+  const Checkpoint old = old_checkpoint("force_network-format8.ckpt", 8);
   ASSERT_EQ(old.state.world.drivers.size(), 1u);
   EXPECT_EQ(old.state.world.drivers[0].start_time, 0.0);
-  const fs::path dir = fresh_dir("format8");
-  ASSERT_EQ(run(builtin("force_network", {"particles.count=20", "simulation.duration=0.002"}), dir),
-            cli::exit_completed);
-  const Checkpoint now = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "now");
-  EXPECT_EQ(encode_checkpoint({old.state, old.config, ""}),
-            encode_checkpoint({now.state, now.config, ""}));
-  EXPECT_NO_THROW(Simulation::restore(old.state, old.config));
-  fs::remove_all(dir);
+  expect_the_state_of(old,
+                      builtin("force_network", {"particles.count=20", "simulation.duration=0.002"}),
+                      "format8");
+}
+
+// Format 9 had no image counts: they read as none crossed.
+TEST(Resume, AFormat9CheckpointIsReadToTheSameState) {
+  const Checkpoint old = old_checkpoint("drum-format9.ckpt", 9);
+  EXPECT_EQ(old.state.world.particles.image.size(), old.state.world.particles.size());
+  expect_the_state_of(old,
+                      builtin("drum", {"particles.count=20", "simulation.duration=0.002",
+                                       "packing.settle_max_time=0.01"}),
+                      "format9");
 }
 
 // A checkpoint whose checksum holds but whose arrays disagree in length (written by a defective
 // build, say) is refused when read, whichever per-particle field is off: read on, the short
 // array would be indexed beyond its end.
-// Format 9 had no image counts: they read as none crossed, and the state is this talus' own.
-TEST(Resume, AFormat9CheckpointIsReadToTheSameState) {
-  const std::string file = std::string(TALUS_SOURCE_DIR) + "/tests/data/drum-format9.ckpt";
-  const std::string bytes = read_file(file);
-  std::uint32_t version = 0;
-  std::memcpy(&version, bytes.data() + 8, sizeof(version));
-  ASSERT_EQ(version, 9u);
-  const Checkpoint old = decode_checkpoint(bytes, file);
-  EXPECT_EQ(old.state.world.particles.image.size(), old.state.world.particles.size());
-  const fs::path dir = fresh_dir("format9");
-  ASSERT_EQ(run(builtin("drum", {"particles.count=20", "simulation.duration=0.002",
-                                 "packing.settle_max_time=0.01"}),
-                dir),
-            cli::exit_completed);
-  const Checkpoint now = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "now");
-  EXPECT_EQ(encode_checkpoint({old.state, old.config, ""}),
-            encode_checkpoint({now.state, now.config, ""}));
-  EXPECT_NO_THROW(Simulation::restore(old.state, old.config));
-  fs::remove_all(dir);
-}
-
 TEST(Resume, ArraysOfDifferentLengthsAreRefused) {
   const Scenario s = builtin("collisions", {"simulation.duration=0.002"});
   const fs::path dir = fresh_dir("lengths");

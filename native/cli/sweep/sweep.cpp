@@ -12,8 +12,8 @@
 #include "cli/analyze/analyses.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "io/checkpoint.hpp"
-#include "scenario/geometry.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/geometry.hpp"
 #include "talus/error.hpp"
 
 namespace fs = std::filesystem;
