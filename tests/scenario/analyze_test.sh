@@ -14,6 +14,10 @@ cat "$dir/out.txt"
 head -1 "$dir/run/analysis/forces.csv" | grep -q "^f_over_mean,probability_density,count$" || exit 1
 grep -q '"beta"' "$dir/run/analysis/forces.json" || exit 1
 grep -q "carry less than the mean force" "$dir/out.txt" || exit 1
+# the report page shows the scenario and run.json as tables
+for words in "<h2>Scenario</h2>" "<td>normal law</td><td>linear</td>" "<td>material 0 'grain'</td><td>density = 2650 kg/m^3" "<h2>Run</h2>" "<td>particle-steps per second (last session)</td>"; do
+  grep -qF "$words" "$dir/run/analysis/report.html" || { echo "report.html lacks: $words"; exit 1; }
+done
 # what does not apply is skipped, saying why: the drum's grains are of one size, about
 grep -q "segregation: skipped (the grains' radii span .* too alike to sort by size" "$dir/out.txt" || { echo "segregation not skipped"; exit 1; }
 # profiles leave the start-up out unless --from says otherwise
