@@ -103,18 +103,25 @@ std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& 
   return out;
 }
 
+namespace {
+
+// Snapshot n's file of one kind ("particles", "walls", "contacts") in the snapshots folder: the
+// name the writer, the collections and the resume's check all use.
+std::string snapshot_name(const char* kind, std::uint64_t n, const char* ext = "vtp") {
+  return fmt::format("{}_{:06d}.{}", kind, n, ext);
+}
+
+} // namespace
+
 void write_snapshot_files(const fs::path& dir, const Simulation& sim, std::uint64_t n,
                           bool with_contacts_csv) {
   const fs::path snapshots = dir / "snapshots";
-  write_file_atomically((snapshots / fmt::format("particles_{:06d}.vtp", n)).string(),
-                        vtp_particles(sim));
+  write_file_atomically((snapshots / snapshot_name("particles", n)).string(), vtp_particles(sim));
   if (!sim.world().walls.empty())
-    write_file_atomically((snapshots / fmt::format("walls_{:06d}.vtp", n)).string(),
-                          vtp_walls(sim));
-  write_file_atomically((snapshots / fmt::format("contacts_{:06d}.vtp", n)).string(),
-                        vtp_contacts(sim));
+    write_file_atomically((snapshots / snapshot_name("walls", n)).string(), vtp_walls(sim));
+  write_file_atomically((snapshots / snapshot_name("contacts", n)).string(), vtp_contacts(sim));
   if (with_contacts_csv)
-    write_file_atomically((snapshots / fmt::format("contacts_{:06d}.csv", n)).string(),
+    write_file_atomically((snapshots / snapshot_name("contacts", n, "csv")).string(),
                           contacts_csv(sim));
 }
 
@@ -125,9 +132,9 @@ void write_collections_of(const fs::path& dir, std::uint64_t snapshots, std::uin
   for (std::uint64_t k = 0; k < snapshots; ++k) {
     const bool end = end_step && k + 1 == snapshots;
     const double t = static_cast<double>(end ? end_step : k * every) * dt;
-    particles.emplace_back(t, fmt::format("snapshots/particles_{:06d}.vtp", k));
-    wall_files.emplace_back(t, fmt::format("snapshots/walls_{:06d}.vtp", k));
-    contacts.emplace_back(t, fmt::format("snapshots/contacts_{:06d}.vtp", k));
+    particles.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("particles", k)));
+    wall_files.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("walls", k)));
+    contacts.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("contacts", k)));
   }
   write_file_atomically((dir / "particles.pvd").string(), pvd_collection(particles));
   if (walls) write_file_atomically((dir / "walls.pvd").string(), pvd_collection(wall_files));
@@ -177,7 +184,7 @@ std::string outputs_short_of(const fs::path& dir,
                          (dir / name).string(), size, bytes);
   }
   for (std::uint64_t k = 0; k < snapshots; ++k) {
-    const fs::path f = dir / "snapshots" / fmt::format("particles_{:06d}.vtp", k);
+    const fs::path f = dir / "snapshots" / snapshot_name("particles", k);
     if (!fs::exists(f)) return f.string() + " is missing";
   }
   return {};

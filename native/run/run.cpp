@@ -102,16 +102,17 @@ RunOutcome Run::go() {
 // The process could not get memory (a limit, or other processes' use): say what was kept.
 void Run::out_of_memory() const {
   const std::string dir = files_.dir().string();
+  const std::string expected = readable_bytes(memory_estimate(sim_.world().particles.size()));
   if (!checkpointed_)
     throw std::runtime_error(fmt::format(
         "out of memory at t = {:.6g} s, before the run's first checkpoint, so nothing was kept "
         "to resume; with more memory (about {} are expected), or fewer particles, start it again "
         "with: talus run {}/scenario.toml --out {}",
-        sim_.time(), readable_bytes(memory_estimate(sim_.world().particles.size())), dir, dir));
+        sim_.time(), expected, dir, dir));
   throw std::runtime_error(fmt::format(
       "out of memory at t = {:.6g} s; the last checkpoint is kept: with more memory (about {} "
       "are expected), continue with: talus resume {}",
-      sim_.time(), readable_bytes(memory_estimate(sim_.world().particles.size())), dir));
+      sim_.time(), expected, dir));
 }
 
 void Run::start() {

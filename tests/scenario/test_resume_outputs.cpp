@@ -21,18 +21,12 @@ namespace {
 
 using testing::builtin;
 using testing::fresh_dir;
-
-int run(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
-  return testing::run_quietly(s, dir, stop_at);
-}
-
-int resume(const fs::path& dir) {
-  return testing::resume_quietly(dir);
-}
+using testing::resume_quietly;
+using testing::run_quietly;
 
 std::string resume_error(const fs::path& dir) {
   try {
-    resume(dir);
+    resume_quietly(dir);
   } catch (const InvalidArgument& e) {
     return e.what();
   }
@@ -56,8 +50,8 @@ std::uint64_t vouched(const fs::path& dir, const char* checkpoint) {
 // never stopped; cut below both, the resume is refused and the file left as it was.
 TEST(ResumeOutputs, AFileShorterThanItsCheckpointIsNeverPadded) {
   const fs::path whole = fresh_dir("outputs_whole"), dir = fresh_dir("outputs_short");
-  ASSERT_EQ(run(collisions(), whole), cli::exit_completed);
-  ASSERT_EQ(run(collisions(), dir, 0.01), cli::exit_stopped);
+  ASSERT_EQ(run_quietly(collisions(), whole), cli::exit_completed);
+  ASSERT_EQ(run_quietly(collisions(), dir, 0.01), cli::exit_stopped);
   const std::uint64_t last = vouched(dir, "checkpoint.bin");
   const std::uint64_t previous = vouched(dir, "checkpoint.prev.bin");
   ASSERT_LT(previous + 10, last);
@@ -65,7 +59,7 @@ TEST(ResumeOutputs, AFileShorterThanItsCheckpointIsNeverPadded) {
   fs::copy(dir, copy, fs::copy_options::recursive);
 
   fs::resize_file(dir / "thermo.csv", last - 5);
-  ASSERT_EQ(resume(dir), cli::exit_completed);
+  ASSERT_EQ(resume_quietly(dir), cli::exit_completed);
   EXPECT_EQ(read_file((whole / "thermo.csv").string()), read_file((dir / "thermo.csv").string()));
 
   fs::resize_file(copy / "thermo.csv", previous - 5);
@@ -86,8 +80,8 @@ TEST(ResumeOutputs, AFileShorterThanItsCheckpointIsNeverPadded) {
 TEST(ResumeOutputs, ACheckpointOfAnotherRunIsRefusedNamingBoth) {
   const fs::path mine = fresh_dir("foreign_mine"), other = fresh_dir("foreign_other");
   const fs::path kept = fresh_dir("foreign_kept");
-  ASSERT_EQ(run(collisions("1"), mine, 0.01), cli::exit_stopped);
-  ASSERT_EQ(run(collisions("5"), other, 0.01), cli::exit_stopped);
+  ASSERT_EQ(run_quietly(collisions("1"), mine, 0.01), cli::exit_stopped);
+  ASSERT_EQ(run_quietly(collisions("5"), other, 0.01), cli::exit_stopped);
   fs::create_directories(kept);
   for (const char* f : {"checkpoint.bin", "checkpoint.prev.bin"}) {
     fs::copy_file(mine / f, kept / f);
@@ -102,7 +96,7 @@ TEST(ResumeOutputs, ACheckpointOfAnotherRunIsRefusedNamingBoth) {
   EXPECT_NE(why.find(fmt::format("({})", id_of(mine))), std::string::npos) << why;
   for (const char* f : {"checkpoint.bin", "checkpoint.prev.bin"})
     fs::copy_file(kept / f, mine / f, fs::copy_options::overwrite_existing);
-  EXPECT_EQ(resume(mine), cli::exit_completed);
+  EXPECT_EQ(resume_quietly(mine), cli::exit_completed);
   for (const fs::path& d : {mine, other, kept}) fs::remove_all(d);
 }
 

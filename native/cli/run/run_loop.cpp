@@ -104,13 +104,43 @@ SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
 // continue from: it starts again from its scenario.toml, which holds the whole resolved
 // scenario, so a requeue that resumes after each kill always gets somewhere. --set and
 // --duration apply from its start.
-int start_again(const std::string& text, const std::string& scenario_file, RunFolder& folder,
-                const RunOptions& o) {
-  std::vector<std::string> set = o.set;
-  for (const std::string& x : o.set)
+// --set of a key a run cannot change is refused, naming the keys that can.
+void refuse_unchangeable(const std::vector<std::string>& set) {
+  for (const std::string& x : set)
     if (!changeable_during_run(change_key(x)))
       throw InvalidArgument("--set " + x + ": '" + change_key(x) +
                             "' cannot change during a run; allowed: " + changeable_keys_text());
+}
+
+// What this session changes from its resume point: the edits of scenario.toml, then --set and
+// --duration, with their source for changes.csv and the run's new whole length (-1: as it was).
+struct SessionChanges {
+  std::vector<std::string> set;
+  std::string source;
+  double duration = -1.0;
+};
+
+SessionChanges session_changes(std::vector<std::string> edits, const RunOptions& o) {
+  refuse_unchangeable(o.set);
+  SessionChanges c{std::move(edits), {}, o.duration};
+  if (!c.set.empty()) c.source = "scenario.toml edited";
+  for (const std::string& x : c.set)
+    if (change_key(x) == "simulation.duration" && c.duration < 0.0)
+      c.duration = std::stod(x.substr(x.find('=') + 1));
+  c.set.insert(c.set.end(), o.set.begin(), o.set.end());
+  std::string resume_words = o.set.empty() ? "" : "resume --set";
+  if (o.duration >= 0.0) {
+    resume_words += resume_words.empty() ? "resume --duration" : " --duration";
+    c.set.push_back(fmt::format("simulation.duration={}", o.duration));
+  }
+  if (!resume_words.empty()) c.source += (c.source.empty() ? "" : ", ") + resume_words;
+  return c;
+}
+
+int start_again(const std::string& text, const std::string& scenario_file, RunFolder& folder,
+                const RunOptions& o) {
+  refuse_unchangeable(o.set);
+  std::vector<std::string> set = o.set;
   if (o.duration >= 0.0) set.push_back(fmt::format("simulation.duration={}", o.duration));
   const Scenario s = load_scenario(text, scenario_file, set);
   if (!o.quiet)
@@ -196,27 +226,12 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   auto [c, book] = checkpoint_to_resume(d, text);
   // an edit of scenario.toml: the keys a run may change, changed from here as --set does
   std::string started = text;
-  std::vector<std::string> set;
+  std::vector<std::string> edits;
   if (book.scenario_hash != 0 && fnv1a_hash(text) != book.scenario_hash)
-    set = scenario_edits(d, text, book, started);
-  std::string source = set.empty() ? "" : "scenario.toml edited";
-  double duration = o.duration;
-  for (const std::string& x : set)
-    if (change_key(x) == "simulation.duration" && duration < 0.0)
-      duration = std::stod(x.substr(x.find('=') + 1));
+    edits = scenario_edits(d, text, book, started);
   // the run's scenario now: the file as it started with the changes made so far
   const Scenario s = load_scenario(started, scenario_file, book.overrides());
-  for (const std::string& x : o.set)
-    if (!changeable_during_run(change_key(x)))
-      throw InvalidArgument("--set " + x + ": '" + change_key(x) +
-                            "' cannot change during a run; allowed: " + changeable_keys_text());
-  set.insert(set.end(), o.set.begin(), o.set.end());
-  std::string resume_words = o.set.empty() ? "" : "resume --set";
-  if (o.duration >= 0.0) {
-    resume_words += resume_words.empty() ? "resume --duration" : " --duration";
-    set.push_back(fmt::format("simulation.duration={}", o.duration));
-  }
-  if (!resume_words.empty()) source += (source.empty() ? "" : ", ") + resume_words;
+  auto [set, source, duration] = session_changes(std::move(edits), o);
   if (duration >= 0.0) {
     if (!(duration > c.state.time))
       throw InvalidArgument(fmt::format("a duration of {:g} s: the run is at t = {:.9g} s already; "
