@@ -19,6 +19,7 @@
 #include "pair_coefficients.hpp"
 #include "pair_granthesis.h"
 #include "talus/contact_force.hpp"
+#include "talus/rolling_resistance.hpp"
 #include "talus/vibration.hpp"
 #include "update.h"
 
@@ -121,6 +122,7 @@ int FixSegmentWalls::read_motion(int narg, char** arg, int k) {
 
 FixSegmentWalls::~FixSegmentWalls() {
   if (history_ && modify->find_fix(history_id_) >= 0) modify->delete_fix(history_id_);
+  if (rolling_ && modify->find_fix(rolling_id_) >= 0) modify->delete_fix(rolling_id_);
 }
 
 void FixSegmentWalls::fail(const std::string& message) const {
@@ -145,14 +147,23 @@ void FixSegmentWalls::init() {
     if (walls_[s].type > atom->ntypes)
       fail("segment " + std::to_string(s + 1) + ": type " + std::to_string(walls_[s].type) +
            " does not exist; allowed: 1 to " + std::to_string(atom->ntypes));
-  history_ = nullptr;
-  if (keeps_history(pair_->tangential_law())) make_history();
+  history_ = rolling_ = nullptr;
+  make_history();
 }
 
-// The springs of the wall contacts, per atom and segment (numbered from 1).
+// The springs of the wall contacts, per atom and segment (numbered from 1): the tangential
+// law's, and the rolling resistance's where a pair has some.
 void FixSegmentWalls::make_history() {
-  history_id_ = std::string(id) + "_HISTORY";
-  history_ = FixContactHistory::find_or_make(lmp, history_id_, pair_->history_slots(), style_name);
+  if (keeps_history(pair_->tangential_law())) {
+    history_id_ = std::string(id) + "_HISTORY";
+    history_ =
+        FixContactHistory::find_or_make(lmp, history_id_, pair_->history_slots(), style_name);
+  }
+  if (host_keeps_springs && pair_->rolling()) { // else the pair style stops the run
+    rolling_id_ = std::string(id) + "_ROLLING";
+    rolling_ =
+        FixContactHistory::find_or_make(lmp, rolling_id_, pair_->history_slots(), style_name);
+  }
 }
 
 // Where the pair style is known already (always after read_restart, which brings it back), the
@@ -160,7 +171,7 @@ void FixSegmentWalls::make_history() {
 // read_restart gets its atoms' values from the restart file.
 void FixSegmentWalls::post_constructor() {
   pair_ = dynamic_cast<PairGranthesis*>(force->pair_match("granthesis", 1));
-  if (pair_ && keeps_history(pair_->tangential_law())) make_history();
+  if (pair_) make_history();
 }
 
 void FixSegmentWalls::setup(int vflag) {
@@ -216,6 +227,7 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   force_[0] = force_[1] = 0.0;
   double power = 0.0;
   if constexpr (T::has_history) history_->begin_pass();
+  if (rolling_) rolling_->begin_pass();
   // read only after this step's forces (thermo, dumps), so it need not move with the atoms
   contacts_.assign(static_cast<std::size_t>(std::max(atom->nmax, 1)), 0.0);
   vector_atom = contacts_.data();
@@ -263,6 +275,17 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       force_[1] -= c.force_y;
       power += c.force_x * wx + c.force_y * wy;
       energy_ += contact_elastic_energy<N, T>(p, g, spring);
+      if (rolling_ && p.rolling_friction > 0.0) {
+        double& theta = rolling_->spring(i, static_cast<LAMMPS_NS::tagint>(s + 1));
+        double turned = theta;
+        const double moment =
+            RollingLaw::torque<N>(p, g, c.normal_force, atom->omega[i][2] - walls_[s].omega,
+                                  rolling_inertia(pair_->rim_inertia(i)), turned, dt);
+        if (advance) theta = turned;
+        torque[i][2] += moment;
+        power += moment * walls_[s].omega; // the turning wall's work through the torque
+        energy_ += RollingLaw::elastic_energy<N>(p, g, turned);
+      }
       const double contact[local_columns] = {static_cast<double>(atom->tag[i]),
                                              static_cast<double>(s + 1),
                                              c.normal_force,
@@ -275,6 +298,7 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
   }
   publish_local();
   if constexpr (T::has_history) history_->end_pass(atom->nlocal);
+  if (rolling_) rolling_->end_pass(atom->nlocal);
   if (advance) work_ += power * dt;
 }
 

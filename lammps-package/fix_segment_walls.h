@@ -78,6 +78,8 @@ private:
   PairGranthesis* pair_ = nullptr;
   FixContactHistory* history_ = nullptr;
   std::string history_id_;
+  FixContactHistory* rolling_ = nullptr; ///< the rolling springs, where a pair has some
+  std::string rolling_id_;
   double energy_ = 0.0;          ///< J: elastic energy in the wall contacts (this rank's atoms)
   double work_ = 0.0;            ///< J: work the walls did on this rank's atoms so far
   double force_[2] = {};         ///< N: force of this rank's atoms on the walls, last step

@@ -18,6 +18,7 @@
 #include "talus/contact_force.hpp"
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
+#include "talus/rolling_resistance.hpp"
 #include "update.h"
 
 namespace talus::lammps {
@@ -26,6 +27,10 @@ namespace {
 
 constexpr const char* style_name = "pair granthesis";
 constexpr const char* history_fix_id = "GRANTHESIS_HISTORY";
+constexpr const char* rolling_fix_id = "GRANTHESIS_ROLLING";
+// the first int of the settings in a restart file: its format (one with rolling resistance's
+// keys); files from before it began with a law's number, 0 or more
+constexpr int restart_format = -2;
 
 } // namespace
 
@@ -40,6 +45,7 @@ PairGranthesis::PairGranthesis(LAMMPS_NS::LAMMPS* instance) : HostPair(instance)
 PairGranthesis::~PairGranthesis() {
   svector = nullptr; // ours, not allocated by Pair
   if (history_) remove_springs_fix(history_fix_id);
+  if (rolling_fix_) remove_springs_fix(rolling_fix_id);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -67,16 +73,17 @@ const PairParameters& PairGranthesis::parameters(int i, int j) const {
   return pair_[slot(i, j)];
 }
 
-// pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]
+// pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K] [inertia I]
 void PairGranthesis::settings(int narg, char** arg) {
   const std::string tangential_names = host_tangential_law_names();
   const std::string usage =
-      "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K]; "
-      "NORMAL: " +
+      "usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] [history_slots K] "
+      "[inertia disc|sphere]; NORMAL: " +
       law_names<NormalLaw>() + "; TANGENTIAL: " + tangential_names +
       "; V: the impact speed (m/s, > 0, default 1) at which a Hertz damping left to be derived "
       "(hertz_damping -1) reaches the restitution; K: the contacts an atom may have at once with "
-      "a law that keeps a spring (1 to 1000, default 16)";
+      "a law that keeps a spring (1 to 1000, default 16); inertia: the grains' moment of "
+      "inertia for the rolling resistance's damping (default disc in 2d, sphere in 3d)";
   if (narg < 2 || narg % 2 != 0) fail(usage);
   try {
     normal_ = parse_normal_law(arg[0]);
@@ -91,10 +98,14 @@ void PairGranthesis::settings(int narg, char** arg) {
          host_tangential_law_names());
   impact_speed_ = 1.0;
   history_slots_ = 16;
+  inertia_ = 0;
   for (int k = 2; k < narg; k += 2) {
     const std::string key = arg[k];
     const std::optional<double> v = finite_number(arg[k + 1]);
-    if (key == "impact_speed" && v && *v > 0.0)
+    if (key == "inertia" &&
+        (std::string(arg[k + 1]) == "disc" || std::string(arg[k + 1]) == "sphere"))
+      inertia_ = std::string(arg[k + 1]) == "disc" ? 1 : 2;
+    else if (key == "impact_speed" && v && *v > 0.0)
       impact_speed_ = *v;
     else if (key == "history_slots" && v && *v >= 1.0 && *v <= 1000.0 && *v == int(*v))
       history_slots_ = static_cast<int>(*v);
@@ -156,6 +167,8 @@ void PairGranthesis::init_style() {
              "contact out of it stops the run",
          __FILE__, __LINE__);
   if (keeps_history(tangential_)) init_history();
+  inertia_factor_ = inertia_ == 1 || (inertia_ == 0 && domain->dimension == 2) ? 0.5 : 0.4;
+  init_rolling();
   double local = 0.0;
   for (int i = 0; i < atom->nlocal; ++i) local = std::max(local, atom->radius[i]);
   MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -171,6 +184,59 @@ void PairGranthesis::init_history() {
          "' keeps a spring per contact, which needs newton_pair off (newton off, or newton on "
          "off), so that each rank computes its own atoms' contacts");
   history_ = springs_fix(history_fix_id, history_slots_, style_name);
+}
+
+// Rolling resistance keeps its springs as the tangential laws do, in a fix of its own.
+bool PairGranthesis::rolling() const {
+  for (int i = 1; i <= ntypes_; ++i)
+    for (int j = i; j <= ntypes_; ++j) {
+      const std::size_t ij = slot(i, j);
+      // a pair mixes mu_r by the mean (talus/pair_parameters.hpp): some where either has some
+      if (explicit_pair_[ij] != 0
+              ? pair_[ij].rolling_friction > 0.0
+              : material_[static_cast<std::size_t>(i)].rolling_friction > 0.0 ||
+                    material_[static_cast<std::size_t>(j)].rolling_friction > 0.0)
+        return true;
+    }
+  return false;
+}
+
+void PairGranthesis::init_rolling() {
+  rolling_ = rolling();
+  if (!rolling_) return;
+  if (host_keeps_springs && force->newton_pair)
+    fail("rolling resistance (rolling_friction > 0) keeps a spring per contact, which needs "
+         "newton_pair off (newton off, or newton on off), so that each rank computes its own "
+         "atoms' contacts");
+  rolling_fix_ = springs_fix(rolling_fix_id, history_slots_, style_name);
+}
+
+double PairGranthesis::rim_inertia(int i) const {
+  const double r = atom->radius[i];
+  return (inertia_factor_ + 1.0) * atom->rmass[i] * r * r;
+}
+
+template <class N>
+double PairGranthesis::add_rolling_torque(int i, int j, const PairParameters& p,
+                                          const ContactGeometry& g, double fn, bool advance) {
+  if (p.rolling_friction == 0.0) return 0.0;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const int nlocal = atom->nlocal;
+  // each atom keeps the angle seen from itself: j's is the opposite of i's
+  double& kept = rolling_fix_->spring(i, atom->tag[j]);
+  double* mirror = j < nlocal ? &rolling_fix_->spring(j, atom->tag[i]) : nullptr;
+  double theta = kept;
+  const double m =
+      RollingLaw::torque<N>(p, g, fn, omega[i][2] - omega[j][2],
+                            rolling_inertia(rim_inertia(i), rim_inertia(j)), theta, update->dt);
+  if (advance) {
+    kept = theta;
+    if (mirror) *mirror = -theta;
+  }
+  torque[i][2] += m;
+  if (force->newton_pair || j < nlocal) torque[j][2] -= m;
+  return RollingLaw::elastic_energy<N>(p, g, theta);
 }
 
 double PairGranthesis::init_one(int i, int j) {
@@ -207,6 +273,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
   // keep their values (they advance once per step)
   [[maybe_unused]] const bool advance = update->setupflag == 0;
   if constexpr (T::has_history) history_->begin_pass();
+  if (rolling_) rolling_fix_->begin_pass();
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     const int* neighbours = list->firstneigh[i];
@@ -221,7 +288,7 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
       // a law that does not use R* is spared its division
       const ContactGeometry g = pair_geometry(
           dx, dy, std::sqrt(dist2), radius[i], radius[j], rmass[i], rmass[j], v[i][0], v[i][1],
-          v[j][0], v[j][1], omega[i][2], omega[j][2], N::uses_r_eff || T::uses_r_eff);
+          v[j][0], v[j][1], omega[i][2], omega[j][2], N::uses_r_eff || T::uses_r_eff || rolling_);
       const PairParameters& p = parameters(type[i], type[j]);
       double history = 0.0;     // the spring: 0 for a law without one
       double* kept = nullptr;   // i's spring
@@ -245,13 +312,16 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
         f[j][1] -= c.force_y;
         torque[j][2] += c.torque_j;
       }
+      const double rolling_energy =
+          rolling_ ? add_rolling_torque<N>(i, j, p, g, c.normal_force, advance) : 0.0;
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair,
-                     eflag ? contact_elastic_energy<N, T>(p, g, history) : 0.0, 0.0, c.force_x,
-                     c.force_y, 0.0, dx, dy, dz);
+                     eflag ? contact_elastic_energy<N, T>(p, g, history) + rolling_energy : 0.0,
+                     0.0, c.force_x, c.force_y, 0.0, dx, dy, dz);
     }
   }
   if constexpr (T::has_history) history_->end_pass(nlocal);
+  if (rolling_) rolling_fix_->end_pass(nlocal);
 }
 
 void PairGranthesis::out_of_plane(int i, int j, double dz) const {
@@ -293,19 +363,26 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
 }
 
 void PairGranthesis::write_restart_settings(FILE* file) {
-  const int settings[3] = {static_cast<int>(normal_), static_cast<int>(tangential_),
-                           history_slots_};
-  std::fwrite(settings, sizeof(int), 3, file);
+  const int settings[5] = {restart_format, static_cast<int>(normal_), static_cast<int>(tangential_),
+                           history_slots_, inertia_};
+  std::fwrite(settings, sizeof(int), 5, file);
   std::fwrite(&impact_speed_, sizeof(double), 1, file);
 }
 
 void PairGranthesis::read_settings(FILE* file) {
-  int settings[3] = {0, 0, 0};
-  if (comm->me == 0) read_restart_items(lmp, settings, sizeof(int), 3, file);
-  MPI_Bcast(settings, 3, MPI_INT, 0, world);
-  normal_ = static_cast<NormalLaw>(settings[0]);
-  tangential_ = static_cast<TangentialLaw>(settings[1]);
-  history_slots_ = settings[2]; // the restart file's springs must fit
+  int settings[5] = {0, 0, 0, 0, 0};
+  if (comm->me == 0) read_restart_items(lmp, settings, sizeof(int), 1, file);
+  MPI_Bcast(settings, 1, MPI_INT, 0, world);
+  if (settings[0] != restart_format)
+    fail("the restart file was written by an older pair_style granthesis (before rolling "
+         "resistance), whose materials this one cannot read; write it again with this version, "
+         "or start from a data file");
+  if (comm->me == 0) read_restart_items(lmp, settings + 1, sizeof(int), 4, file);
+  MPI_Bcast(settings, 5, MPI_INT, 0, world);
+  normal_ = static_cast<NormalLaw>(settings[1]);
+  tangential_ = static_cast<TangentialLaw>(settings[2]);
+  history_slots_ = settings[3]; // the restart file's springs must fit
+  inertia_ = settings[4];
   if (comm->me == 0) read_restart_items(lmp, &impact_speed_, sizeof(double), 1, file);
   MPI_Bcast(&impact_speed_, 1, MPI_DOUBLE, 0, world);
 }

@@ -44,11 +44,22 @@ public:
   /// The material pair_coeff I I gave type i (1-based).
   const Material& material(int i) const { return material_[static_cast<std::size_t>(i)]; }
   int history_slots() const { return history_slots_; }
+  /// Whether some type pair has rolling resistance, from the coefficients given.
+  bool rolling() const;
+  /// Atom i's moment of inertia about a point of its rim, (k + 1) m R^2 with k = 1/2 for disks
+  /// and 2/5 for spheres (pair_style keyword `inertia`): the rolling law's damping needs it.
+  double rim_inertia(int i) const;
 
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
   void allocate();
   void init_history(); ///< makes or finds the springs' fix, for a law that keeps them
+  void init_rolling(); ///< the same for the rolling springs, where a pair has rolling resistance
+  /// The rolling torque of the contact of i and j (1-based types itype, jtype) with geometry g
+  /// and normal force fn, added to both atoms' torques; its spring's energy.
+  template <class N>
+  double add_rolling_torque(int i, int j, const PairParameters& p, const ContactGeometry& g,
+                            double fn, bool advance);
   /// The index of type pair (i, j) in pair_ and explicit_pair_.
   std::size_t slot(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
@@ -64,7 +75,11 @@ private:
   TangentialLaw tangential_ = law_id<ViscousCoulomb>;
   double impact_speed_ = 1.0; ///< m/s: where a derived Hertz damping reaches the restitution
   int history_slots_ = 16;    ///< contacts with a spring an atom may have at once
-  FixContactHistory* history_ = nullptr; ///< the springs, for a law that keeps them
+  FixContactHistory* history_ = nullptr;     ///< the springs, for a law that keeps them
+  FixContactHistory* rolling_fix_ = nullptr; ///< the rolling springs' angles, seen from each atom
+  bool rolling_ = false;
+  int inertia_ = 0;             ///< 0: from the dimension (disks in 2d), 1: disc, 2: sphere
+  double inertia_factor_ = 0.5; ///< k of I = k m R^2, from inertia_ at init
   int ntypes_ = 0;
   std::vector<Material> material_;   ///< per type, 1-based
   std::vector<PairParameters> pair_; ///< (ntypes + 1)^2: mixed or given per pair

@@ -8,8 +8,10 @@
 #include <fmt/format.h>
 
 #include "core/contact_vectors.hpp"
+#include "simulation/rolling_pass.hpp"
 #include "talus/error.hpp"
 #include "talus/law_table.hpp"
+#include "talus/rolling_resistance.hpp"
 
 namespace talus {
 
@@ -18,8 +20,27 @@ namespace {
 // A contact's share of the powers. The relative motion's power F_n v_n + F_t v_t is what the
 // contact force does on both members together (the lever arms make the torques' part exact);
 // the free members' power beyond it comes from a wall's motion.
+// The rolling torque's share (rolling_resistance.hpp): its power on the relative spin is
+// friction's, on a wall's rotation the wall's work; its spring's energy is stored like the
+// tangential spring's. Adds the torque's power on the free members to `into_free`.
+template <class N>
+void add_rolling(const World& w, const ContactView& v, double normal_force, bool free_i,
+                 bool free_j, ContactPowers& out, double& relative, double& into_free) {
+  const Particles& p = w.particles;
+  const RollingKinematics k = rolling_kinematics(w, v.i, v.j, v.wall);
+  double theta = v.rolling; // a copy: looking must not advance the spring
+  const double m =
+      RollingLaw::torque<N>(*v.parameters, v.geometry, normal_force, k.spin, k.inertia, theta, 0.0);
+  out.tangential -= m * k.spin;
+  relative += m * k.spin;
+  if (free_i) into_free += m * p.angular_velocity[v.i];
+  if (free_j) into_free -= m * p.angular_velocity[v.j];
+  out.tangential_elastic += RollingLaw::elastic_energy<N>(*v.parameters, v.geometry, v.rolling);
+}
+
 template <class N, class T>
-void add_contact(const Particles& p, const ContactView& v, ContactPowers& out) {
+void add_contact(const World& w, const ContactView& v, ContactPowers& out) {
+  const Particles& p = w.particles;
   const bool free_i = p.is_free(v.i), free_j = v.wall < 0 && p.is_free(v.j);
   if (!free_i && !free_j) return;
   const ContactGeometry& g = v.geometry;
@@ -30,11 +51,13 @@ void add_contact(const Particles& p, const ContactView& v, ContactPowers& out) {
   const double elastic = N::force(*v.parameters, at_rest);
   const Vec2 force = force_of(f);
   const double tangential = dot(force, tangent_of(g));
-  const double relative = f.normal_force * g.v_normal + tangential * g.v_tangent;
+  double relative = f.normal_force * g.v_normal + tangential * g.v_tangent;
   out.damper -= (f.normal_force - elastic) * g.v_normal;
   out.tangential -= tangential * g.v_tangent;
+  double into_free = 0.0;
+  if (v.parameters->rolling_friction > 0.0)
+    add_rolling<N>(w, v, f.normal_force, free_i, free_j, out, relative, into_free);
   if (!free_i || !free_j) {
-    double into_free = 0.0;
     if (free_i) into_free += dot(force, p.velocity[v.i]) + f.torque_i * p.angular_velocity[v.i];
     if (free_j) into_free += -dot(force, p.velocity[v.j]) + f.torque_j * p.angular_velocity[v.j];
     out.walls += into_free - relative;
@@ -49,10 +72,9 @@ void add_contact(const Particles& p, const ContactView& v, ContactPowers& out) {
 
 ContactPowers contact_powers(const Simulation& sim) {
   ContactPowers out;
-  const Particles& p = sim.world().particles;
   const SimulationConfig& c = sim.config();
   with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
-    sim.for_each_contact([&](const ContactView& v) { add_contact<N, T>(p, v, out); });
+    sim.for_each_contact([&](const ContactView& v) { add_contact<N, T>(sim.world(), v, out); });
   });
   return out;
 }

@@ -13,16 +13,18 @@
 
 namespace talus {
 
-/// The powers of the contacts of a state (W), and the energy of the tangential springs (J).
+/// The powers of the contacts of a state (W), and the energy of the tangential and rolling
+/// springs (J).
 struct ContactPowers {
   double damper = 0.0; ///< -(F_n - F_el) v_n: the normal damper's dissipation, >= 0
-  /// -F_t v_t: the tangential force's work against the slip (friction's dissipation plus the
-  /// tangential springs' loading)
+  /// -F_t v_t - M_r w_r: the tangential force's work against the slip and the rolling torque's
+  /// against the relative spin (friction's dissipation, sliding and rolling, plus the springs'
+  /// loading)
   double tangential = 0.0;
   /// the power of the contact forces on the free grains beyond the relative motion's: what moving
   /// walls and moved wall particles put in (0 at fixed walls)
   double walls = 0.0;
-  double tangential_elastic = 0.0; ///< 1/2 k_t s^2 summed, J
+  double tangential_elastic = 0.0; ///< 1/2 k_t s^2 + 1/2 k_r theta^2 summed, J
 };
 
 /// Every touching contact with at least one free member, with the law of the run.

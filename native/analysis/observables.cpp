@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "talus/rolling_resistance.hpp"
+
 namespace talus {
 
 Energies energies(const Simulation& sim) {
@@ -20,6 +22,8 @@ Energies energies(const Simulation& sim) {
   with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
     sim.for_each_contact([&](const ContactView& v) {
       e.elastic += contact_elastic_energy<N, T>(*v.parameters, v.geometry, v.history);
+      if (v.rolling != 0.0)
+        e.elastic += RollingLaw::elastic_energy<N>(*v.parameters, v.geometry, v.rolling);
     });
   });
   return e;

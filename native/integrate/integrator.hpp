@@ -125,6 +125,11 @@ inline bool verlet_correct_one(Particles& p, std::size_t i, double half, double 
   return std::isfinite(p.velocity[i].x + p.velocity[i].y + p.angular_velocity[i]);
 }
 
+/// verlet_correct_one for every particle, as a pass of its own: for a step whose forces are
+/// completed after the force stage (rolling resistance). Returns whether every velocity is
+/// finite.
+bool verlet_correct(Particles& p, double dt, int threads, double lag);
+
 /// verlet_correct_one, then verlet_predict_one, for particles k and k + 1 side by side, one per
 /// lane of an SSE2 register (core/lanes.hpp): operation for operation the same arithmetic, so
 /// the same bits (tests FusedSteps.*), with the two particles' values loaded and stored together.

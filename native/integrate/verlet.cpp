@@ -64,4 +64,14 @@ double verlet_predict(Particles& p, double dt, int threads, double lag, bool rot
   return farthest2;
 }
 
+bool verlet_correct(Particles& p, double dt, int threads, double lag) {
+  const double half = 0.5 * dt;
+  const auto n = static_cast<std::ptrdiff_t>(p.size());
+  bool finite = true;
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(&& : finite)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    finite = verlet_correct_one<true>(p, static_cast<std::size_t>(i), half, lag) && finite;
+  return finite;
+}
+
 } // namespace talus

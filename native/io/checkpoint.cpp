@@ -183,18 +183,23 @@ void write_material(Writer& w, const Material& m) {
   w.str(m.name);
   for (const double v :
        {m.density, m.young, m.poisson, m.restitution, m.friction, m.tangential_damping,
-        m.normal_stiffness, m.tangential_stiffness_ratio, m.normal_damping_rate, m.hertz_damping})
+        m.normal_stiffness, m.tangential_stiffness_ratio, m.normal_damping_rate, m.hertz_damping,
+        m.rolling_friction, m.rolling_stiffness_factor, m.rolling_damping})
     w.pod(v);
   w.pod<std::uint8_t>(m.rigid ? 1 : 0);
 }
 
-Material read_material(Reader& r) {
+// Format 11 added rolling resistance; a material of an older file has none (the keys' defaults).
+Material read_material(Reader& r, std::uint32_t version) {
   Material m;
   m.name = r.str();
   for (double* v : {&m.density, &m.young, &m.poisson, &m.restitution, &m.friction,
                     &m.tangential_damping, &m.normal_stiffness, &m.tangential_stiffness_ratio,
                     &m.normal_damping_rate, &m.hertz_damping})
     *v = r.pod<double>();
+  if (version >= 11)
+    for (double* v : {&m.rolling_friction, &m.rolling_stiffness_factor, &m.rolling_damping})
+      *v = r.pod<double>();
   m.rigid = r.pod<std::uint8_t>() != 0;
   return m;
 }
@@ -252,6 +257,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.vec(l.row_offset), w.vec(l.neighbour), w.vec(l.image), w.vec(l.history);
   w.vec(l.wall_offset), w.vec(l.wall_segment);
   w.vec(l.wall_history), w.vec(l.reference), w.vec(l.segment_reference);
+  w.vec(l.rolling), w.vec(l.wall_rolling);
   w.pod(l.skin), w.pod(l.builds);
   w.pod(c.state.time), w.pod(c.state.steps);
   write_members(w, c.config);
@@ -302,7 +308,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
     for (Segment& wall : world.walls) wall = read_members<Segment>(r);
   }
   world.materials.resize(r.count(sizeof(std::uint64_t))); // each at least its name's length
-  for (Material& m : world.materials) m = read_material(r);
+  for (Material& m : world.materials) m = read_material(r, version);
   world.domain = version == 7 ? read_domain7(r) : read_members<Domain>(r);
   world.gravity = r.pod<Vec2>();
   world.disk_thickness = r.pod<double>();
@@ -312,6 +318,7 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   r.vec(l.row_offset), r.vec(l.neighbour), r.vec(l.image), r.vec(l.history);
   r.vec(l.wall_offset), r.vec(l.wall_segment);
   r.vec(l.wall_history), r.vec(l.reference), r.vec(l.segment_reference);
+  if (version >= 11) r.vec(l.rolling), r.vec(l.wall_rolling);
   l.skin = r.pod<double>();
   l.builds = r.pod<std::uint64_t>();
   c.state.time = r.pod<double>();

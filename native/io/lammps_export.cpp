@@ -12,6 +12,7 @@
 
 #include "io/checkpoint.hpp"
 #include "scenario/file/load.hpp"
+#include "simulation/rolling_pass.hpp"
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
 
@@ -243,13 +244,18 @@ std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::st
 
 std::string pair_section(const Scenario& s, const BuiltScenario& b, const Typing& t) {
   // a Hertz damping left to be derived is derived by LAMMPS as natively, per contact
+  // rolling resistance's damping takes the grains' inertia, which the pair style must be told
+  const bool rolling = has_rolling_resistance(b.world);
   std::string out =
-      fmt::format("pair_style granthesis {} {}{}\n", name_of(s.simulation.normal_law),
+      fmt::format("pair_style granthesis {} {}{}{}\n", name_of(s.simulation.normal_law),
                   name_of(s.simulation.tangential_law),
                   with_normal_law(s.simulation.normal_law,
                                   []<class N>() { return N::damping_needs_impact_speed; })
                       ? fmt::format(" impact_speed {}", s.simulation.impact_speed)
-                      : std::string());
+                      : std::string(),
+                  !rolling                           ? ""
+                  : s.particles.shape == Shape::disk ? " inertia disc"
+                                                     : " inertia sphere");
   for (std::size_t k = 0; k < t.key_of.size(); ++k)
     out += fmt::format(
         "pair_coeff {0} {0} {1}\n", k + 1,
@@ -339,7 +345,8 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
                      "boundary {} {} p\ncomm_modify vel yes\n",
                      box.periodic_x ? "p" : "f", box.periodic_y ? "p" : "f");
   // a law with a spring: each rank computes its own atoms' contacts (pair_style granthesis)
-  if (keeps_history(s.simulation.tangential_law)) out += "newton off\n";
+  if (keeps_history(s.simulation.tangential_law) || has_rolling_resistance(b.world))
+    out += "newton off\n";
   out += fmt::format("read_data data.{0}\ninclude masses.{0}\n\n", s.name);
   out += pair_section(s, b, t) + "\n" + motion_section(s, b, t);
   out += frost_section(s, b, thermo) + "\n";

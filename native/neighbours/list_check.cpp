@@ -37,6 +37,10 @@ std::string neighbour_list_problem(const NeighbourList& l, std::size_t particles
     return "springs: not one per pair";
   if (!l.wall_history.empty() && l.wall_history.size() != l.wall_segment.size())
     return "wall springs: not one per wall contact";
+  if (!l.rolling.empty() && l.rolling.size() != l.neighbour.size())
+    return "rolling springs: not one per pair";
+  if (!l.wall_rolling.empty() && l.wall_rolling.size() != l.wall_segment.size())
+    return "wall rolling springs: not one per wall contact";
   // build positions of another count (none, say) only make the first step rebuild the list
   // (largest_drift2, walls_moved): they are allowed
   return "";

@@ -240,6 +240,7 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   std::vector<std::uint32_t> old_offset = std::move(list.row_offset);
   std::vector<std::uint32_t> old_neighbour = std::move(list.neighbour);
   std::vector<double> old_history = std::move(list.history);
+  std::vector<double> old_rolling = std::move(list.rolling);
 
   list.row_offset.resize(n + 1);
   list.row_offset[0] = 0;
@@ -264,6 +265,8 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   join_row_blocks(list, block, n, threads);
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
                 list.history, list.keeps_history, threads);
+  carry_history({old_offset, old_neighbour, old_rolling}, list.row_offset, list.neighbour,
+                list.rolling, list.keeps_rolling, threads);
 }
 
 void build_walls(NeighbourList& list, const Particles& p, const Segments& walls, double skin,
@@ -272,11 +275,13 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
   std::vector<std::uint32_t> old_offset = std::move(list.wall_offset);
   std::vector<std::uint32_t> old_segment = std::move(list.wall_segment);
   std::vector<double> old_history = std::move(list.wall_history);
+  std::vector<double> old_rolling = std::move(list.wall_rolling);
 
   list.wall_offset.assign(n + 1, 0);
   list.wall_segment.clear();
   if (walls.empty()) {
     list.wall_history.clear();
+    list.wall_rolling.clear();
     return;
   }
   // rows in blocks of contiguous particles, side by side, joined in order (a few segments each)
@@ -306,6 +311,8 @@ void build_walls(NeighbourList& list, const Particles& p, const Segments& walls,
   }
   carry_history({old_offset, old_segment, old_history}, list.wall_offset, list.wall_segment,
                 list.wall_history, list.keeps_history, threads);
+  carry_history({old_offset, old_segment, old_rolling}, list.wall_offset, list.wall_segment,
+                list.wall_rolling, list.keeps_rolling, threads);
 }
 
 } // namespace
@@ -342,11 +349,12 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
 void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
                              const std::vector<std::uint32_t>& new_of_old, int threads) {
   const std::size_t n = order.size();
-  const bool kept = list.keeps_history;
+  const bool kept = list.keeps_history, rolls = list.keeps_rolling;
   struct Entry {
     std::uint32_t j;
     ImageShift image;
     double history;
+    double rolling; // seen from the first particle: its sign turns with the pair
   };
   // every pair under its new first particle, in rows
   std::vector<std::uint32_t> offset(n + 1, 0);
@@ -361,12 +369,13 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
       const std::uint32_t a = new_of_old[i], b = new_of_old[list.neighbour[e]];
       const ImageShift s = list.image[e];
       const double spring = kept ? list.history[e] : 0.0;
+      const double theta = rolls ? list.rolling[e] : 0.0;
       entries[fill[std::min(a, b)]++] =
           a < b
-              ? Entry{b, s, spring}
+              ? Entry{b, s, spring, theta}
               : Entry{a,
                       ImageShift{static_cast<std::int8_t>(-s.sx), static_cast<std::int8_t>(-s.sy)},
-                      spring};
+                      spring, -theta};
     }
   const auto rows = static_cast<std::ptrdiff_t>(n);
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -381,23 +390,27 @@ void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_
     list.neighbour[e] = entries[e].j;
     list.image[e] = entries[e].image;
     if (kept) list.history[e] = entries[e].history;
+    if (rolls) list.rolling[e] = entries[e].rolling;
   }
   // wall rows follow their particles
   std::vector<std::uint32_t> wall_offset(n + 1, 0), wall_segment;
-  std::vector<double> wall_history;
+  std::vector<double> wall_history, wall_rolling;
   wall_segment.reserve(list.wall_segment.size());
   wall_history.reserve(list.wall_history.size());
+  wall_rolling.reserve(list.wall_rolling.size());
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t i = order[k];
     for (std::uint32_t e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e) {
       wall_segment.push_back(list.wall_segment[e]);
       if (kept) wall_history.push_back(list.wall_history[e]);
+      if (rolls) wall_rolling.push_back(list.wall_rolling[e]);
     }
     wall_offset[k + 1] = static_cast<std::uint32_t>(wall_segment.size());
   }
   list.wall_offset = std::move(wall_offset);
   list.wall_segment = std::move(wall_segment);
   list.wall_history = std::move(wall_history);
+  list.wall_rolling = std::move(wall_rolling);
   if (list.reference.size() == n) {
     std::vector<Vec2> reference(n);
 #pragma omp parallel for schedule(static) num_threads(threads)

@@ -28,6 +28,11 @@ struct NeighbourList {
   /// builds and renumberings) or leaves them empty: a tangential law without a spring needs none
   /// (Simulation sets it; not saved, it follows from the law).
   bool keeps_history = true;
+  /// The rolling spring's angle theta (rad) of each pair (src/talus/rolling_resistance.hpp),
+  /// seen from its first particle, 0 when not touching; like `history`, kept only when
+  /// `keeps_rolling` (a scene with rolling resistance), else empty.
+  std::vector<double> rolling;
+  bool keeps_rolling = false;
   // Force blocks (derived from the rows by index_force_blocks): rows are cut into blocks of
   // block_rows, a number that depends on the particle count only. An entry whose second particle
   // lies beyond its row's block is deferred: its force waits in a slot (numbered in entry order)
@@ -53,6 +58,7 @@ struct NeighbourList {
   std::vector<std::uint32_t> wall_offset;
   std::vector<std::uint32_t> wall_segment;
   std::vector<double> wall_history;
+  std::vector<double> wall_rolling; ///< theta of each particle-segment pair, as `rolling`
 
   std::vector<Vec2> reference;         ///< particle positions at the last build
   std::vector<Vec2> segment_reference; ///< segment end points (a, b, a, b, ...) at the last build

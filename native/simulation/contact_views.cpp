@@ -25,6 +25,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
                                  p.angular_velocity[j], true, share);
       v.parameters = &pairs_(p.material[i], p.material[j]);
       v.history = list_.keeps_history ? list_.history[e] : 0.0;
+      v.rolling = list_.keeps_rolling ? list_.rolling[e] : 0.0;
       f(v);
     }
   }
@@ -39,6 +40,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
           v.geometry = g;
           v.parameters = &pairs_(p.material[i], s.material);
           v.history = list_.keeps_history ? list_.wall_history[e] : 0.0;
+          v.rolling = list_.keeps_rolling ? list_.wall_rolling[e] : 0.0;
           f(v);
         },
         [](std::uint32_t) {});

@@ -11,6 +11,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/list_check.hpp"
 #include "neighbours/skin.hpp"
+#include "simulation/rolling_pass.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -113,6 +114,9 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   rebuild_list(1);
   forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_,
                   features_);
+  if (features_.rolling) // with no time passed: the springs stay as they are
+    add_rolling_torques(world_, list_, pairs_, config_.normal_law, 0.0,
+                        overlap_share(config_.lever_arm));
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
 
@@ -126,8 +130,19 @@ void Simulation::use_general_step(bool general) {
 }
 
 void Simulation::choose_features() {
-  features_ = general_step_ ? general_features() : scene_features(world_, config_.tangential_law);
+  features_ =
+      general_step_ ? general_features(world_) : scene_features(world_, config_.tangential_law);
   features_stale_ = false;
+  list_.keeps_rolling = features_.rolling;
+  if (!features_.rolling) {
+    std::vector<double>().swap(list_.rolling);
+    std::vector<double>().swap(list_.wall_rolling);
+  } else {
+    if (list_.rolling.size() != list_.neighbour.size())
+      list_.rolling.assign(list_.neighbour.size(), 0.0);
+    if (list_.wall_rolling.size() != list_.wall_segment.size())
+      list_.wall_rolling.assign(list_.wall_segment.size(), 0.0);
+  }
   list_.keeps_history = features_.history;
   if (!features_.history) {
     std::vector<double>().swap(list_.history); // and its memory
@@ -143,6 +158,7 @@ void Simulation::choose_features() {
 
 void Simulation::advance(bool fuse) {
   if (features_stale_) choose_features(); // edits happen between run() calls: nothing is fused
+  fuse = fuse && !features_.rolling;      // the rolling pass comes between forces and correction
   const double t_next = static_cast<double>(steps_ + 1) * config_.timestep;
   const bool drifted = predict();
   move_bodies(t_next);
@@ -187,11 +203,19 @@ void Simulation::update_neighbours(bool drifted) {
 
 PassReport Simulation::contacts(bool fuse) {
   using Finish = ForceStage::Finish;
-  const Finish finish = config_.integrator != Integrator::verlet ? Finish::nothing
-                        : fuse                                   ? Finish::verlet_correct_predict
-                                                                 : Finish::verlet_correct;
-  const PassReport report =
+  const Finish finish = config_.integrator != Integrator::verlet || features_.rolling
+                            ? Finish::nothing
+                        : fuse ? Finish::verlet_correct_predict
+                               : Finish::verlet_correct;
+  PassReport report =
       forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_, features_);
+  if (features_.rolling) {
+    add_rolling_torques(world_, list_, pairs_, config_.normal_law, config_.timestep,
+                        overlap_share(config_.lever_arm));
+    if (config_.integrator == Integrator::verlet)
+      report.finite = verlet_correct(world_.particles, config_.timestep, threads_,
+                                     verlet_lag(config_.verlet_velocity));
+  }
   // while the overlap is there (in a step that velocity Verlet fused, the grains are already
   // predicted one timestep on, and the diagnosis names the deepest contact there)
   if (forces_.deepest_overlap() > config_.max_overlap_fraction) guard();
@@ -345,7 +369,7 @@ Footprint Simulation::footprint() const {
            bytes(l.deferred_offset) + bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) +
            bytes(l.wall_offset) + bytes(l.wall_segment) + bytes(l.reference) +
            bytes(l.segment_reference);
-  f.history = bytes(l.history) + bytes(l.wall_history);
+  f.history = bytes(l.history) + bytes(l.wall_history) + bytes(l.rolling) + bytes(l.wall_rolling);
   f.candidates = forces_.candidate_bytes();
   f.other = bytes(world_.walls) + bytes(driven_) + forces_.footprint_bytes();
   return f;

@@ -57,6 +57,7 @@ struct ContactView {
   ContactGeometry geometry;
   const PairParameters* parameters = nullptr;
   double history = 0.0;
+  double rolling = 0.0; ///< the rolling spring's angle, seen from i (0 without rolling resistance)
 };
 
 /// Everything that determines how a run continues: saved in checkpoints.

@@ -10,7 +10,9 @@ StepFeatures scene_features(const World& world, TangentialLaw tangential) {
   f.history = keeps_history(tangential);
   const Particles& p = world.particles;
   const GearDerivatives& g = p.gear;
-  // without friction no torque arises, so a grain turns only if it turned from the start
+  f.rolling = has_rolling_resistance(world);
+  // without friction or rolling resistance no torque arises, so a grain turns only if it turned
+  // from the start
   f.rotation = f.friction;
   const auto turning = [&](std::size_t i) {
     return p.angular_velocity[i] != 0.0 || p.torque[i] != 0.0 ||
@@ -18,6 +20,9 @@ StepFeatures scene_features(const World& world, TangentialLaw tangential) {
            (!g.empty() && (g.phi2[i] != 0.0 || g.phi3[i] != 0.0 || g.phi4[i] != 0.0));
   };
   for (std::size_t i = 0; i < p.size() && !f.rotation; ++i) f.rotation = p.is_free(i) && turning(i);
+  // rolling resistance turns grains only by the spins they have, but they must keep turning
+  // freely (a frictionless scene with it takes the general step, below)
+  f.rotation = f.rotation || f.rolling;
   f.walls = !world.walls.empty();
   f.driven = !world.drivers.empty();
   const std::uint16_t m = p.empty() ? 0 : p.material.front();
@@ -30,7 +35,7 @@ StepFeatures scene_features(const World& world, TangentialLaw tangential) {
   if (!f.friction && f.rotation) {
     // frictionless grains that turn already (seldom: they were given a spin) keep turning as
     // they are; no specialised step is compiled for that, so the general one takes it
-    StepFeatures general = general_features();
+    StepFeatures general = general_features(world);
     general.walls = f.walls;
     general.driven = f.driven;
     return general;
@@ -50,7 +55,8 @@ std::string describe(const StepFeatures& f) {
   add(!f.driven, "no drivers");
   add(f.one_material, "one material");
   add(!f.gravity, "no gravity");
-  return s.empty() ? "general" : s;
+  if (s.empty()) s = "general";
+  return f.rolling ? s + ", with rolling resistance" : s;
 }
 
 } // namespace talus

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "simulation/rolling_pass.hpp"
 #include "simulation/world.hpp"
 #include "talus/law_table.hpp"
 
@@ -25,19 +26,25 @@ struct StepFeatures {
   bool one_material = false; ///< every particle and segment is of one material: `material`
   std::uint16_t material = 0;
   bool gravity = true;
+  /// rolling resistance (simulation/rolling_pass.hpp): a pass after the force stage, not a
+  /// shape of it; its steps are not fused
+  bool rolling = false;
   friend bool operator==(const StepFeatures&, const StepFeatures&) = default;
 };
 
 /// The features of the world with that tangential law. Frictionless grains that turn already get
 /// the general step's features (no step is specialised to them), but for walls and drivers.
 StepFeatures scene_features(const World& world, TangentialLaw tangential);
-/// Every feature on: the general step, which does everything whatever the scene.
-inline StepFeatures general_features() {
-  return {};
+/// Every feature on: the general step, which does everything whatever the scene; rolling
+/// resistance, which is not a shape of the step, as the world has it.
+inline StepFeatures general_features(const World& world) {
+  StepFeatures f;
+  f.rolling = has_rolling_resistance(world);
+  return f;
 }
 /// What the step leaves out, for run.json and a run's opening lines: "frictionless, history-free,
 /// no rotation, no walls, no drivers, one material, no gravity" (those that apply), or "general"
-/// for a step that leaves nothing out.
+/// for a step that leaves nothing out; then "with rolling resistance" if it has that pass.
 std::string describe(const StepFeatures& f);
 
 /// The compile-time shape of a step (what its loops do): one material, rotation, gravity and

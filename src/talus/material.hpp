@@ -21,6 +21,9 @@ struct Material {
   /// LAMMPS' convention) and `restitution` is ignored by the linear law. -1: from restitution.
   double normal_damping_rate;
   double hertz_damping; ///< A, s: dissipative constant of the viscoelastic Hertz law (-1: derived)
+  double rolling_friction; ///< mu_r, rolling resistance coefficient (Ai et al. 2011); 0: none
+  double rolling_stiffness_factor; ///< k_r = this x k_n mu_r^2 R*^2 (Ai et al.: 2.25)
+  double rolling_damping;          ///< eta_r: the rolling dashpot over its critical value
   /// A wall that does not deform: a contact with it has the other side's stiffness alone.
   bool rigid = false;
   /// Every key at its default (material_keys.hpp).

@@ -29,7 +29,7 @@ constexpr bool allowed_value(const MaterialKey& k, double x) {
 
 inline constexpr double no_limit = std::numeric_limits<double>::infinity();
 
-inline constexpr std::array<MaterialKey, 10> material_keys{{
+inline constexpr std::array<MaterialKey, 13> material_keys{{
     {"density", &Material::density, 2650.0, 1e-12, no_limit, "> 0 kg/m^3"},
     {"young", &Material::young, 1.0e8, 1e-12, no_limit, "> 0 Pa"},
     {"poisson", &Material::poisson, 0.3, 0.0, 0.4999, "[0, 0.5)"},
@@ -44,6 +44,12 @@ inline constexpr std::array<MaterialKey, 10> material_keys{{
      ">= 0 1/s (or -1: from restitution)", true},
     {"hertz_damping", &Material::hertz_damping, -1.0, 0.0, no_limit,
      ">= 0 s (or -1: from restitution at simulation.impact_speed)", true},
+    {"rolling_friction", &Material::rolling_friction, 0.0, 0.0, no_limit,
+     ">= 0 (0: no rolling resistance)"},
+    {"rolling_stiffness_factor", &Material::rolling_stiffness_factor, 2.25, 1e-12, no_limit,
+     "> 0 (k_r = this x k_n mu_r^2 R*^2)"},
+    {"rolling_damping", &Material::rolling_damping, 0.3, 0.0, no_limit,
+     ">= 0 (the rolling dashpot over its critical value)"},
 }};
 
 inline Material::Material() {

@@ -14,10 +14,10 @@
 namespace talus {
 
 /// Mixing rules (see docs/model.md): moduli by the Hertz and Mindlin series rules; stiffness k_n
-/// by the harmonic mean (a material paired with itself keeps its own k_n); restitution, friction
-/// and damping by the arithmetic mean. A linear dashpot and a Hertz damping left to be derived
-/// give the pair's mean restitution exactly, for any masses and sizes (the Hertz one at the
-/// reference impact speed).
+/// by the harmonic mean (a material paired with itself keeps its own k_n); restitution, friction,
+/// rolling resistance and damping by the arithmetic mean. A linear dashpot and a Hertz damping left
+/// to be derived give the pair's mean restitution exactly, for any masses and sizes (the Hertz one
+/// at the reference impact speed).
 template <class R> struct PairParametersOf {
   R normal_stiffness{};                           ///< k_n, N/m
   R damping_rate{};                               ///< gamma_n, 1/s: eta_n += gamma_n m_eff
@@ -33,6 +33,9 @@ template <class R> struct PairParametersOf {
   /// c, the part of A derived from the restitution: A += c (m_eff / rho)^(2/5) per contact
   R hertz_damping_scale{};
   R restitution = R{} + 1.0; ///< the mixed e (informational for the Hertz law)
+  R rolling_friction{};      ///< mu_r (rolling_resistance.hpp); 0: no rolling resistance
+  R rolling_stiffness_factor = R{} + 2.25; ///< k_r = this x k_n mu_r^2 R*^2
+  R rolling_damping{};                     ///< eta_r: the rolling dashpot over its critical value
 
   /// Linear dashpot coefficient eta_n (kg/s) for a pair of reduced mass m_eff.
   R normal_dashpot(R m_eff) const {
@@ -57,7 +60,10 @@ template <class R> struct PairParametersOf {
             f(a.effective_shear, b.effective_shear),
             f(a.hertz_damping, b.hertz_damping),
             f(a.hertz_damping_scale, b.hertz_damping_scale),
-            f(a.restitution, b.restitution)};
+            f(a.restitution, b.restitution),
+            f(a.rolling_friction, b.rolling_friction),
+            f(a.rolling_stiffness_factor, b.rolling_stiffness_factor),
+            f(a.rolling_damping, b.rolling_damping)};
   }
 };
 using PairParameters = PairParametersOf<double>;
@@ -149,6 +155,9 @@ inline PairParameters mix(const Material& a, const Material& b, double impact_sp
   } // below the floor only the Hertz law reaches e; the linear law's material check refuses it
   mix_tangential_damping(p, a, b);
   p.friction = mean(a.friction, b.friction);
+  p.rolling_friction = mean(a.rolling_friction, b.rolling_friction);
+  p.rolling_stiffness_factor = mean(a.rolling_stiffness_factor, b.rolling_stiffness_factor);
+  p.rolling_damping = mean(a.rolling_damping, b.rolling_damping);
   p.effective_young = effective_young(a, b);
   p.effective_shear = effective_shear(a, b);
   mix_tangential_stiffness_ratio(p, a, b);

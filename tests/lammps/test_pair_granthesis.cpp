@@ -50,7 +50,13 @@ TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
                "no pair_coeff for type 2");
   expect_error({"pair_style granthesis hertz coulomb impact_speed -1"},
                "impact_speed = -1 (usage: pair_style granthesis NORMAL TANGENTIAL [impact_speed V] "
-               "[history_slots K]; NORMAL: linear, hertz");
+               "[history_slots K] [inertia disc|sphere]; NORMAL: linear, hertz");
+  expect_error({"pair_style granthesis hertz coulomb inertia rod"},
+               "inertia = rod (usage: pair_style granthesis");
+  expect_error({"newton on", "pair_style granthesis linear coulomb",
+                "pair_coeff * * rolling_friction 0.1", "run 0"},
+               "rolling resistance (rolling_friction > 0) keeps a spring per contact, which needs "
+               "newton_pair off");
   expect_error({"pair_style granthesis hertz coulomb speed 1"}, "V: the impact speed (m/s, > 0");
   expect_error(
       {"comm_modify vel no", "pair_style granthesis linear coulomb", "pair_coeff * *", "run 0"},

@@ -36,14 +36,18 @@ Difference between(LammpsInstance& l, const Simulation& s) {
   return d;
 }
 
-// Both engines from the same two disks, `steps` steps of dt. A law with a spring keeps it in
-// fix granthesis/history, which needs newton_pair off.
+// Whether LAMMPS may run with newton on: not with a spring, tangential or rolling, which fix
+// granthesis/history keeps.
+bool newton_allowed(const std::string& tangential, const Material& m) {
+  return !keeps_history(parse_tangential_law(tangential)) && m.rolling_friction == 0.0;
+}
+
+// Both engines from the same two disks of material m, `steps` steps of dt.
 Difference after(const std::string& normal, const std::string& tangential,
-                 VerletVelocity convention, const std::vector<Disk>& disks, double dt, int steps) {
-  const Material m = grains();
+                 VerletVelocity convention, const std::vector<Disk>& disks, double dt, int steps,
+                 const Material& m = grains()) {
   LammpsInstance l;
-  set_up(l, normal + " " + tangential, m, disks, !keeps_history(parse_tangential_law(tangential)),
-         dt);
+  set_up(l, normal + " " + tangential, m, disks, newton_allowed(tangential, m), dt);
   l.commands(
       {"fix move all nve/sphere disc", "fix plane all enforce2d", "run " + std::to_string(steps)});
   Simulation s = native(normal, tangential, m, disks, dt, convention);
@@ -96,6 +100,34 @@ TEST(VerletAgreement, SpringLawsAgreeToRounding) {
     }
 }
 
+// Rolling resistance: its springs kept by a second fix granthesis/history in LAMMPS, beside the
+// native list's, through the same contact, with a tangential law with and without a spring.
+// Rounding as above; without rolling resistance in one engine the spins would differ at once.
+TEST(VerletAgreement, RollingResistanceAgreesToRounding) {
+  Material m = grains();
+  m.rolling_friction = 0.3;
+  for (const std::string normal : {"linear", "hertz"})
+    for (const std::string tangential : {"coulomb", "cundall_strack"}) {
+      SCOPED_TRACE(normal + " " + tangential);
+      const Difference d =
+          after(normal, tangential, VerletVelocity::half_step, oblique_pair(), 1e-7, 3000, m);
+      std::printf("rolling, %s %s: %.2e m, %.2e m/s, %.2e rad/s\n", normal.c_str(),
+                  tangential.c_str(), d.position, d.velocity, d.spin);
+      EXPECT_LT(d.position, 1e-15);
+      EXPECT_LT(d.velocity, 1e-12 * 0.1);
+      EXPECT_LT(d.spin, 1e-12 * 30.0);
+    }
+  // and the native rolling resistance changes the spins far beyond rounding
+  Simulation with = native("hertz", "coulomb", m, oblique_pair(), 1e-7, VerletVelocity::half_step);
+  Simulation without =
+      native("hertz", "coulomb", grains(), oblique_pair(), 1e-7, VerletVelocity::half_step);
+  with.run(3000);
+  without.run(3000);
+  EXPECT_GT(std::abs(with.world().particles.angular_velocity[0] -
+                     without.world().particles.angular_velocity[0]),
+            1e-3 * 30.0);
+}
+
 // Whether every disk was turned round by its wall (LAMMPS' run): it moves up.
 void turned_round(LammpsInstance& l, std::size_t disks) {
   for (std::size_t k = 1; k <= disks; ++k)
@@ -108,15 +140,14 @@ void turned_round(LammpsInstance& l, std::size_t disks) {
 void segment_walls_agree(
     const char* what, const std::vector<Disk>& disks, const std::string& fix,
     const std::function<void(World&)>& walls,
-    const std::function<void(LammpsInstance&, std::size_t)>& reached = turned_round) {
-  const Material m = grains();
+    const std::function<void(LammpsInstance&, std::size_t)>& reached = turned_round,
+    const Material& m = grains()) {
   const double dt = 1e-7;
   const int steps = 5000;
   for (const std::string tangential : {"coulomb", "cundall_strack", "mindlin"}) {
     SCOPED_TRACE(tangential);
     LammpsInstance l;
-    set_up(l, "hertz " + tangential, m, disks, !keeps_history(parse_tangential_law(tangential)),
-           dt);
+    set_up(l, "hertz " + tangential, m, disks, newton_allowed(tangential, m), dt);
     l.commands({fix, "fix move all nve/sphere disc", "fix plane all enforce2d",
                 "run " + std::to_string(steps)});
     Simulation s = native("hertz", tangential, m, disks, dt, VerletVelocity::half_step, walls);
@@ -150,28 +181,41 @@ TEST(VerletAgreement, SegmentWallsAgreeToRounding) {
 }
 
 // The three motions of fix granthesis/wall against the native drivers of segments: a vibrating
-// floor, one moving up and one turning, each met by a falling disk: the walls are where the
-// drivers put them at every step.
-TEST(VerletAgreement, MovingSegmentsAgreeToRounding) {
+// floor, one moving up and one turning, each met by a falling disk of material m: the walls are
+// where the drivers put them at every step.
+void moving_segments_agree(const char* what, const Material& m) {
   // 50 um above each segment, falling at 0.3 m/s
   const std::vector<Disk> disks{{{-0.02, 0.00505}, {0.05, -0.3}, 0.005, 2.0e-4, 30.0},
                                 {{0.075, 0.00505}, {0.0, -0.3}, 0.005, 2.0e-4, 0.0},
                                 {{0.14, 0.00405}, {-0.02, -0.3}, 0.004, 1.5e-4, -10.0}};
-  segment_walls_agree("moving walls", disks,
-                      "fix walls all granthesis/wall segment -0.05 0 0.03 0 type 1 vibrate 0 1 "
-                      "2e-4 40 0 segment 0.06 0 0.09 0 type 1 velocity 0 0.1 segment 0.11 0 0.15 "
-                      "0 type 1 rotate 0.13 0 2",
-                      [](World& w) {
-                        const auto moved = [&](Vec2 a, Vec2 b, Motion motion) {
-                          Driver d;
-                          d.motion = motion;
-                          d.targets.segments = {static_cast<std::uint32_t>(w.add_wall(a, b))};
-                          w.drivers.push_back(d);
-                        };
-                        moved({-0.05, 0.0}, {0.03, 0.0}, Vibrate{{0.0, 1.0}, 2e-4, 40.0, 0.0});
-                        moved({0.06, 0.0}, {0.09, 0.0}, Translate{{0.0, 0.1}});
-                        moved({0.11, 0.0}, {0.15, 0.0}, Rotate{{0.13, 0.0}, 2.0});
-                      });
+  segment_walls_agree(
+      what, disks,
+      "fix walls all granthesis/wall segment -0.05 0 0.03 0 type 1 vibrate 0 1 2e-4 40 0 segment "
+      "0.06 0 0.09 0 type 1 velocity 0 0.1 segment 0.11 0 0.15 0 type 1 rotate 0.13 0 2",
+      [](World& w) {
+        const auto moved = [&](Vec2 a, Vec2 b, Motion motion) {
+          Driver d;
+          d.motion = motion;
+          d.targets.segments = {static_cast<std::uint32_t>(w.add_wall(a, b))};
+          w.drivers.push_back(d);
+        };
+        moved({-0.05, 0.0}, {0.03, 0.0}, Vibrate{{0.0, 1.0}, 2e-4, 40.0, 0.0});
+        moved({0.06, 0.0}, {0.09, 0.0}, Translate{{0.0, 0.1}});
+        moved({0.11, 0.0}, {0.15, 0.0}, Rotate{{0.13, 0.0}, 2.0});
+      },
+      turned_round, m);
+}
+
+TEST(VerletAgreement, MovingSegmentsAgreeToRounding) {
+  moving_segments_agree("moving walls", grains());
+}
+
+// The same with rolling resistance against the walls (the turning wall's spin in the relative
+// spin).
+TEST(VerletAgreement, RollingOnMovingSegmentsAgreesToRounding) {
+  Material m = grains();
+  m.rolling_friction = 0.3;
+  moving_segments_agree("rolling on moving walls", m);
 }
 
 // A segment sweeping at 4 m/s onto a disk at rest from 1.5 mm away, farther than the 1 mm skin:

@@ -89,6 +89,19 @@ inline constexpr double sphere_roll_time_factor = 2.0 / 7.0;
 /// normal spring oscillates slightly as the contact loads.
 inline constexpr double rolling_tolerance = 0.01;
 
+// ---- rolling resistance ----------------------------------------------------------------------
+/// Ai et al. 2011's elastic-plastic rolling law on a flat floor. Rolling on it at the full
+/// mobilisation moment mu_r R F_n, a grain of inertia I = k m R^2 decelerates at
+/// mu_r g / (1 + k): 2/3 mu_r g for a disk, 5/7 mu_r g for a sphere (the torque balance about
+/// the centre with friction rolling it without slip). On a slope of angle alpha it rests while
+/// tan alpha <= mu_r (the moment that holds it, m g R sin alpha, is within mu_r R m g cos alpha)
+/// and beyond that rolls down at g (sin alpha - mu_r cos alpha) / (1 + k).
+inline constexpr double disk_inertia_factor = 0.5;
+inline constexpr double sphere_inertia_factor = 0.4;
+/// 1%: the floor's normal spring, on which the moment's limit rides, oscillates a little as the
+/// grain's weight and the torque load it; the deceleration is measured over half the roll.
+inline constexpr double rolling_resistance_tolerance = 0.01;
+
 // ---- integrators -----------------------------------------------------------------------------
 /// Velocity Verlet is second order: halving dt divides the global error by 4. The 5-value Gear
 /// predictor-corrector (position and four derivatives) has a local error O(dt^5) and so a

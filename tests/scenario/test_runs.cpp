@@ -209,6 +209,18 @@ TEST(Resume, AFormat9CheckpointIsReadToTheSameState) {
                       "format9");
 }
 
+// Format 10 had no rolling resistance: the materials read with none, the list with no rolling
+// springs.
+TEST(Resume, AFormat10CheckpointIsReadToTheSameState) {
+  const Checkpoint old = old_checkpoint("drum-format10.ckpt", 10);
+  for (const Material& m : old.state.world.materials) EXPECT_EQ(m.rolling_friction, 0.0);
+  EXPECT_TRUE(old.state.neighbours.rolling.empty());
+  expect_the_state_of(old,
+                      builtin("drum", {"particles.count=20", "simulation.duration=0.002",
+                                       "packing.settle_max_time=0.01"}),
+                      "format10");
+}
+
 // A checkpoint whose checksum holds but whose arrays disagree in length (written by a defective
 // build, say) is refused when read, whichever per-particle field is off: read on, the short
 // array would be indexed beyond its end.

@@ -41,6 +41,8 @@ inline void expect_same_state(const Simulation& a, const Simulation& b, bool his
   if (history) {
     expect_equal(l.history, m.history);
     expect_equal(l.wall_history, m.wall_history);
+    expect_equal(l.rolling, m.rolling);
+    expect_equal(l.wall_rolling, m.wall_rolling);
   }
   expect_equal(l.reference, m.reference);
 }

@@ -11,6 +11,7 @@
 
 #include "simulation/simulation.hpp"
 #include "support/mixed_box.hpp"
+#include "support/pairs_by_id.hpp"
 
 namespace talus {
 namespace {
@@ -45,18 +46,13 @@ void expect_identical(const Particles& a, const Particles& b, std::vector<T> Par
   }
 }
 
-using PairKey = std::tuple<std::uint32_t, std::uint32_t>; // ids, smaller first
+using testing::PairKey;
 
 std::map<PairKey, double> pairs_by_id(const Simulation& s) {
   const NeighbourList& l = s.neighbours();
-  const Particles& p = s.world().particles;
   std::map<PairKey, double> out;
-  for (std::uint32_t i = 0; i < p.size(); ++i)
-    for (std::uint32_t e = l.row_offset[i]; e < l.row_offset[i + 1]; ++e) {
-      const std::uint32_t a = p.id[i], b = p.id[l.neighbour[e]];
-      EXPECT_GT(l.neighbour[e], i) << "a half list";
-      out[{std::min(a, b), std::max(a, b)}] = l.history[e];
-    }
+  testing::for_each_pair_by_id(
+      s, [&](const PairKey& key, std::uint32_t e, bool) { out[key] = l.history[e]; });
   return out;
 }
 
@@ -100,6 +96,7 @@ TEST(SortParticles, KeepsEveryParticlePairAndForce) {
   for (std::uint32_t i = 0; i < after.size(); ++i)
     for (std::uint32_t e = l.row_offset[i]; e < l.row_offset[i + 1]; ++e) {
       const std::uint32_t j = l.neighbour[e];
+      EXPECT_GT(j, i) << "a half list";
       const Vec2 d = after.position[i] - (after.position[j] + l.shift(e, s.world().domain));
       EXPECT_LT(norm(d), after.radius[i] + after.radius[j] + 2.0 * l.skin) << "entry " << e;
     }
