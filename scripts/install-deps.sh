@@ -9,6 +9,7 @@ packages=(
   libcairo2-dev pkg-config  # pictures
   libtomlplusplus-dev       # scenario files
   nlohmann-json3-dev        # sweep plans and indexes (JSON)
+  libeigen3-dev             # linear algebra (fits)
   python3-vtk9              # tests: VTK reads the snapshots as ParaView does
   ffmpeg                    # talus movie
   python3-matplotlib        # talus analyze: charts

@@ -19,6 +19,7 @@ short_of() {
     frost_front) echo "--set particles.count=200 --set simulation.duration=0.6 --set packing.settle_max_time=0.1
                   --set frost.freeze_time=0.1 --set frost.thaw_time=0.1 --set frost.heave_strain=0.1
                   --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e-1 --set frost.cycles=1" ;;
+    heap) echo "--set particles.count=80 --set stages.1.duration=0.1 --set stages.2.duration=0.2" ;;
     hourglass) echo "--set particles.count=150 --set simulation.duration=0.1 --set packing.settle_max_time=0.2" ;;
     silo_discharge) echo "--set particles.count=150 --set geometry.width=0.12 --set geometry.height=0.25
                   --set simulation.duration=0.2 --set packing.settle_max_time=0.3" ;;
@@ -47,3 +48,4 @@ hash_of drum-hertz-mindlin-verlet drum --set simulation.normal_law=hertz \
 hash_of drum-hertz-coulomb drum --set simulation.normal_law=hertz --set simulation.tangential_law=coulomb
 hash_of hourglass-verlet-2threads hourglass --set simulation.integrator=verlet --threads 2
 hash_of hourglass-2threads hourglass --threads 2 --set particles.count=1200
+hash_of heap-verlet-2threads heap --set simulation.integrator=verlet --threads 2

@@ -1,5 +1,6 @@
 #include "scenario/geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -147,7 +148,15 @@ ContainerShape build_container(const GeometrySection& g) {
     c.fill = g.box.value_or(Rect{});
     c.bounds = c.fill;
   }
-  for (const SegmentSpec& s : g.segments) add(c, "extra", s.a, s.b);
+  for (const SegmentSpec& s : g.segments) {
+    add(c, "extra", s.a, s.b);
+    // the extra walls are part of the container: a grain on them has not escaped it
+    if (c.bounds.hi.x > c.bounds.lo.x && c.bounds.hi.y > c.bounds.lo.y)
+      for (const Vec2 end : {s.a, s.b}) {
+        c.bounds.lo = {std::min(c.bounds.lo.x, end.x), std::min(c.bounds.lo.y, end.y)};
+        c.bounds.hi = {std::max(c.bounds.hi.x, end.x), std::max(c.bounds.hi.y, end.y)};
+      }
+  }
   if (g.gate) { // the gate stays, as walls of its own, instead of closing the orifice for the
                 // packing
     need(!c.gate.empty(), "gate",

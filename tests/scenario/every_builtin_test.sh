@@ -26,6 +26,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     tilted_box) short=(--set particles.count=60 --set simulation.duration=0.2 --set stages.1.duration=0.05
                        --set stages.2.duration=0.05) ;;
     silo_gate) short=(--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5) ;;
+    heap) short=(--set particles.count=80 --set stages.1.duration=0.1 --set stages.2.duration=0.2) ;;
     *) fail "no short version in $0" ;;
   esac
   "$talus" run "$name" "${common[@]}" "${short[@]}" || fail "run"
@@ -46,6 +47,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
   case "$name" in
     hourglass|silo_discharge) [ -s "$run/analysis/discharge.json" ] || fail "no discharge.json" ;;
     silo_shake) [ -s "$run/analysis/segregation.csv" ] || fail "no segregation.csv" ;;
+    heap) [ -s "$run/analysis/repose.json" ] || fail "no repose.json" ;;
     frost_heave|frost_front) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
                  [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;
   esac

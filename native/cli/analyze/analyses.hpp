@@ -96,6 +96,8 @@ std::string discharge_text(const Discharge& q);
 void write_discharge(const std::filesystem::path& out, const Discharge& q);
 Section analyze_segregation(RunData& run, const AnalysisOptions& o);
 Section analyze_frost(RunData& run);
+/// The angle of repose of the heap in the last snapshot (post/repose.hpp).
+Section analyze_repose(RunData& run);
 
 /// DIR/analysis/report.html: one page, images embedded, readable offline.
 std::filesystem::path write_report(RunData& run, const std::vector<Section>& sections);

@@ -78,6 +78,11 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     else if (driven)
       attempt("segregation", [&] { return analyze_segregation(run, o); });
     if (fs::exists(run.dir() / "frost.csv")) attempt("frost", [&] { return analyze_frost(run); });
+    // a heap's slope: what rolling resistance is there for (`talus analyze DIR repose` measures
+    // any run's)
+    if (std::any_of(s.materials.begin(), s.materials.end(),
+                    [](const Material& m) { return m.rolling_friction > 0.0; }))
+      attempt("repose", [&] { return analyze_repose(run); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
   if (fs::exists(run.dir() / "contact_events.csv"))
@@ -117,14 +122,16 @@ void add_analyze_command(CLI::App& app) {
       "analyze",
       "analyses of a run folder, as CSV, JSON and PNG in DIR/analysis: thermo (energies, Z, "
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
-      "speed map, discharge), tracks, segregation, frost, contacts (contact events); with no WHAT "
+      "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
+      "heap's angle of repose); with no WHAT "
       "every one that applies, "
       "and report.html");
   cmd->add_option("dir", o->dir, "the run folder or sweep folder")
       ->required()
       ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
-                  "thermo, forces, profiles, tracks, segregation, frost, contacts, or all (with "
+                  "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, or all "
+                  "(with "
                   "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
                   "result of its index.csv")
       ->capture_default_str();
@@ -158,13 +165,14 @@ void add_analyze_command(CLI::App& app) {
       analyze_sweep(o->dir, w, o->a);
       return;
     }
-    const std::vector<std::string> allowed{"thermo",      "forces", "profiles", "tracks",
-                                           "segregation", "frost",  "contacts", "all"};
+    const std::vector<std::string> allowed{"thermo",   "forces",      "profiles",
+                                           "tracks",   "segregation", "frost",
+                                           "contacts", "repose",      "all"};
     if (std::find(allowed.begin(), allowed.end(), w) == allowed.end())
       throw InvalidArgument("analyze: '" + w +
                             "' is not an analysis of a run folder; allowed: "
                             "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                            "all");
+                            "repose, all");
     RunData run{fs::path(o->dir)};
     if (w == "all") {
       const auto sections = analyze_all(run, o->a);
@@ -181,6 +189,8 @@ void add_analyze_command(CLI::App& app) {
       analyze_contacts(run);
     } else if (w == "segregation") {
       analyze_segregation(run, o->a);
+    } else if (w == "repose") {
+      analyze_repose(run);
     } else {
       analyze_frost(run);
     }

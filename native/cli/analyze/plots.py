@@ -164,6 +164,23 @@ elif kind == "segregation":
     b.set_xlabel("time [s]")
     b.set_ylabel("(<h_large> - <h_small>) / H [-]")
     b.legend(fontsize=8)
+elif kind == "repose":
+    fig, a = plt.subplots(figsize=(8, 4.5))
+    a.plot(col("x"), col("surface"), "k.-", lw=0.8, label="free surface (highest grain top)")
+    for side in ("left", "right"):
+        f = extra[side]
+        if f["measured"]:
+            used = [r for r in rows if r["flank"] == side]
+            xs = col("x", used)
+            a.plot(xs, [f["slope"] * x + f["intercept"] for x in xs], lw=2,
+                   label=f"{side} flank: {f['angle_deg']:.1f} deg")
+    a.axhline(extra["base"], color="grey", lw=0.5)
+    a.set_aspect("equal", adjustable="datalim")
+    a.set_xlabel("x [m]")
+    a.set_ylabel("height [m]")
+    a.set_title(f"angle of repose {extra['angle_deg']:.1f} deg" if extra["angle_deg"] is not None
+                else "angle of repose not measured")
+    a.legend(fontsize=8)
 elif kind == "convection":
     used = [r for r in rows if int(r["samples"]) > 0]
     fig, a = plt.subplots(figsize=(8, 4.5))
