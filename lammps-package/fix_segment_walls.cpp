@@ -278,9 +278,9 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       if (rolling_ && p.rolling_friction > 0.0) {
         double& theta = rolling_->spring(i, static_cast<LAMMPS_NS::tagint>(s + 1));
         double turned = theta;
-        const double moment =
-            RollingLaw::torque<N>(p, g, c.normal_force, atom->omega[i][2] - walls_[s].omega,
-                                  rolling_inertia(pair_->rim_inertia(i)), turned, dt);
+        const double moment = RollingLaw::torque<N>(
+            p, g, not_below_zero(c.normal_force), atom->omega[i][2] - walls_[s].omega,
+            rolling_inertia(pair_->rim_inertia(i)), turned, dt);
         if (advance) theta = turned;
         torque[i][2] += moment;
         power += moment * walls_[s].omega; // the turning wall's work through the torque

@@ -30,7 +30,7 @@ constexpr const char* history_fix_id = "GRANTHESIS_HISTORY";
 constexpr const char* rolling_fix_id = "GRANTHESIS_ROLLING";
 // the first int of the settings in a restart file: its format (one with rolling resistance's
 // keys); files from before it began with a law's number, 0 or more
-constexpr int restart_format = -2;
+constexpr int restart_format = -3;
 
 } // namespace
 
@@ -313,7 +313,8 @@ template <class N, class T> void PairGranthesis::compute_with(int eflag, int vfl
         torque[j][2] += c.torque_j;
       }
       const double rolling_energy =
-          rolling_ ? add_rolling_torque<N>(i, j, p, g, c.normal_force, advance) : 0.0;
+          rolling_ ? add_rolling_torque<N>(i, j, p, g, not_below_zero(c.normal_force), advance)
+                   : 0.0;
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair,
                      eflag ? contact_elastic_energy<N, T>(p, g, history) + rolling_energy : 0.0,

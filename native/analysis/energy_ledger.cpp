@@ -56,7 +56,7 @@ void add_contact(const World& w, const ContactView& v, ContactPowers& out) {
   out.tangential -= tangential * g.v_tangent;
   double into_free = 0.0;
   if (v.parameters->rolling_friction > 0.0)
-    add_rolling<N>(w, v, f.normal_force, free_i, free_j, out, relative, into_free);
+    add_rolling<N>(w, v, not_below_zero(f.normal_force), free_i, free_j, out, relative, into_free);
   if (!free_i || !free_j) {
     if (free_i) into_free += dot(force, p.velocity[v.i]) + f.torque_i * p.angular_velocity[v.i];
     if (free_j) into_free += -dot(force, p.velocity[v.j]) + f.torque_j * p.angular_velocity[v.j];

@@ -107,7 +107,8 @@ private:
 
 // The structs with padding are stored member by member: a padding byte's value is unspecified,
 // and written whole they would put it in the file (the same state, different files). Format 7
-// stored them whole; a member added to one of them must be added here, in a new format version.
+// stored them whole; a member added to one of them must be added here, in a new format version
+// (SimulationConfig::linear_damping, of format 12, is written after the list).
 template <class T, class U>
 concept either = std::is_same_v<std::remove_const_t<T>, U>;
 template <either<Domain> D, class F> void for_each_member(D& d, F&& f) {
@@ -261,6 +262,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.pod(l.skin), w.pod(l.builds);
   w.pod(c.state.time), w.pod(c.state.steps);
   write_members(w, c.config);
+  w.pod(static_cast<std::uint8_t>(c.config.linear_damping)); // from format 12
   w.str(c.run_data);
 
   return seal_checkpoint(w.bytes());
@@ -324,6 +326,13 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   c.state.time = r.pod<double>();
   c.state.steps = r.pod<std::uint64_t>();
   c.config = version == 7 ? r.pod<SimulationConfig>() : read_members<SimulationConfig>(r);
+  if (version >= 12) { // before, the linear law's dashpot never pulled
+    const auto damping = r.pod<std::uint8_t>();
+    if (damping >= linear_damping_names.size()) r.fail("unknown linear damping convention");
+    c.config.linear_damping = static_cast<LinearDamping>(damping);
+  } else {
+    c.config.linear_damping = LinearDamping::never_attractive;
+  }
   c.run_data = r.str();
   if (!r.done()) r.fail("unexpected bytes at the end");
   return c;

@@ -37,6 +37,10 @@ std::optional<std::string> refusal(const Scenario& s) {
                    "the lever arms at the radius are LAMMPS' own granular styles' convention; "
                    "pair_style granthesis takes them to the contact point; allowed: contact_point "
                    "(validation/crosscheck.py puts gran/hooke in the deck to compare with radius)");
+  if (s.simulation.linear_damping != LinearDamping::never_attractive)
+    return refused("simulation.linear_damping",
+                   "pair_style granthesis derives the linear dashpot as never_attractive; allowed: "
+                   "never_attractive");
   for (const Material& m : s.materials)
     if (m.rigid)
       return refused("materials", "material '" + m.name +

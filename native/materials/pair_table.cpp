@@ -7,14 +7,15 @@
 
 namespace talus {
 
-PairTable::PairTable(const std::vector<Material>& materials, double impact_speed)
+PairTable::PairTable(const std::vector<Material>& materials, double impact_speed,
+                     LinearDamping damping)
     : n_(materials.size()) {
   require(!materials.empty(), "at least one material is needed");
   for (const auto& m : materials) validate(m);
   table_.resize(n_ * n_);
   for (std::size_t i = 0; i < n_; ++i)
     for (std::size_t j = 0; j < n_; ++j)
-      table_[i * n_ + j] = mix(materials[i], materials[j], impact_speed);
+      table_[i * n_ + j] = mix(materials[i], materials[j], impact_speed, damping);
 }
 
 void PairTable::set(std::uint16_t a, std::uint16_t b, const PairParameters& p) {

@@ -14,7 +14,8 @@ public:
   PairTable() = default;
   /// The pairs of `materials`; a Hertz damping left to be derived reaches the restitution at
   /// `impact_speed` (m/s).
-  PairTable(const std::vector<Material>& materials, double impact_speed);
+  PairTable(const std::vector<Material>& materials, double impact_speed,
+            LinearDamping damping = LinearDamping::never_attractive);
 
   std::size_t material_count() const { return n_; }
   const PairParameters& operator()(std::uint16_t a, std::uint16_t b) const {

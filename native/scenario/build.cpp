@@ -238,12 +238,14 @@ void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStr
 // The simulation's settings, its timestep (the collision time's fraction, or one given within
 // the stability bound) and the stability guard's box: the container and as much again around it.
 void configure(const Scenario& s, double r_min, BuiltScenario& out) {
-  out.pairs = PairTable(out.world.materials, s.simulation.impact_speed);
+  out.pairs =
+      PairTable(out.world.materials, s.simulation.impact_speed, s.simulation.linear_damping);
   out.collision_time = shortest_collision_time(s, out.world, out.pairs, r_min);
   SimulationConfig& c = out.config;
   c.integrator = s.simulation.integrator;
   c.verlet_velocity = s.simulation.verlet_velocity;
   c.lever_arm = s.simulation.lever_arm;
+  c.linear_damping = s.simulation.linear_damping;
   c.normal_law = s.simulation.normal_law;
   c.tangential_law = s.simulation.tangential_law;
   c.threads = s.simulation.threads;

@@ -27,6 +27,8 @@ struct SimulationSection {
   Integrator integrator = Integrator::gear;
   VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< velocity Verlet's damper velocity
   LeverArm lever_arm = LeverArm::contact_point; ///< the contacts' lever arms (contact_geometry.hpp)
+  /// the linear law's damping convention (talus/pair_parameters.hpp)
+  LinearDamping linear_damping = LinearDamping::never_attractive;
   NormalLaw normal_law = law_id<LinearSpringDashpot>;
   TangentialLaw tangential_law = law_id<CundallStrack>;
   Vec2 gravity{0.0, -9.81}; ///< m/s^2

@@ -46,8 +46,8 @@ void pair_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
           d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
           p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, share);
       const RollingKinematics k = rolling_kinematics(world, i, j, -1);
-      const double m =
-          RollingLaw::torque<N>(pair, g, N::force(pair, g), k.spin, k.inertia, theta, dt);
+      const double m = RollingLaw::torque<N>(pair, g, not_below_zero(N::force(pair, g)), k.spin,
+                                             k.inertia, theta, dt);
       p.torque[i] += m;
       p.torque[j] -= m;
     }
@@ -65,8 +65,8 @@ void wall_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
           const PairParameters& pair = pairs(p.material[i], s.material);
           const auto wall = static_cast<std::int32_t>(list.wall_segment[e]);
           const RollingKinematics k = rolling_kinematics(world, i, i, wall);
-          p.torque[i] += RollingLaw::torque<N>(pair, g, N::force(pair, g), k.spin, k.inertia,
-                                               list.wall_rolling[e], dt);
+          p.torque[i] += RollingLaw::torque<N>(pair, g, not_below_zero(N::force(pair, g)), k.spin,
+                                               k.inertia, list.wall_rolling[e], dt);
         },
         [&](std::uint32_t e) { list.wall_rolling[e] = 0.0; });
 }

@@ -51,7 +51,7 @@ void validate_setup(const World& w, const SimulationConfig& c) {
   require(std::isfinite(c.impact_speed) && c.impact_speed > 0.0,
           "simulation.impact_speed = " + std::to_string(c.impact_speed) + " m/s; allowed: > 0");
   for (const Material& m : w.materials) {
-    const std::string problem = material_error(c.normal_law, c.tangential_law, m);
+    const std::string problem = material_error(c.normal_law, c.tangential_law, m, c.linear_damping);
     require(problem.empty(), problem);
   }
   for (std::size_t i = 0; i < w.particles.size(); ++i) {
@@ -81,7 +81,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
               verlet_lag(config.verlet_velocity), config.lever_arm),
       time_(state.time), steps_(state.steps) {
   validate_setup(world_, config_);
-  pairs_ = PairTable(world_.materials, config_.impact_speed);
+  pairs_ = PairTable(world_.materials, config_.impact_speed, config_.linear_damping);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
   const std::size_t per_thread = std::max<std::size_t>(1, config_.min_particles_per_thread);
   const auto useful = static_cast<int>(std::min<std::size_t>(

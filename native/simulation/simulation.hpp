@@ -46,6 +46,8 @@ struct SimulationConfig {
   /// The lever arms of the contacts' torques and of the spin in their tangential velocity:
   /// contact_point (the default) or radius, LAMMPS' convention (talus/contact_geometry.hpp).
   LeverArm lever_arm = LeverArm::contact_point;
+  /// the linear law's damping convention (pair_parameters.hpp)
+  LinearDamping linear_damping = LinearDamping::never_attractive;
 };
 
 /// One touching contact, as the force stage sees it. `wall` is the segment index for a

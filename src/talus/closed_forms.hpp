@@ -49,6 +49,15 @@ inline double linear_damping_ratio(double restitution) {
   return x / std::sqrt(1.0 + x * x); // zeta = beta / omega_0
 }
 
+/// The damping ratio of the classic closed form, zeta = -ln e / sqrt(pi^2 + ln^2 e) (Tsuji et al.
+/// 1992, LAMMPS, MFIX): the restitution of a dashpot allowed to pull at the end of the contact.
+inline double classic_damping_ratio(double restitution) {
+  require(restitution > 0.0 && restitution <= 1.0,
+          "restitution = " + std::to_string(restitution) + "; allowed: (0, 1]");
+  const double log_e = std::log(restitution);
+  return -log_e / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
+}
+
 namespace closed_form_detail {
 inline double damped_frequency(double stiffness, double dashpot, double m_eff) {
   const double beta = dashpot / (2.0 * m_eff);

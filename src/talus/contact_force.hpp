@@ -7,7 +7,7 @@
 namespace talus {
 
 /// Force and torques of a contact: the force on i (j gets the opposite), torques on i and on j,
-/// and the normal force's magnitude F_n >= 0 (N).
+/// and the normal force F_n (N): >= 0 but for the pull of the linear law's classic dashpot.
 template <class R> struct ContactForceOf {
   R force_x{}, force_y{};
   R torque_i{}, torque_j{};
@@ -22,7 +22,10 @@ inline ContactForceOf<R> contact_force(const PairParametersOf<R>& p, const Conta
                                        R& history, double dt) {
   ContactForceOf<R> c;
   c.normal_force = N::force(p, g);
-  const R ft = T::template force<N>(p, g, c.normal_force, history, dt);
+  // a pull (the classic linear dashpot's) gives no friction
+  R limit_force = c.normal_force;
+  if constexpr (N::can_pull) limit_force = not_below_zero(limit_force);
+  const R ft = T::template force<N>(p, g, limit_force, history, dt);
   c.force_x = c.normal_force * g.normal_x + ft * -g.normal_y;
   c.force_y = c.normal_force * g.normal_y + ft * g.normal_x;
   c.torque_i = -g.arm_i * ft;

@@ -119,9 +119,10 @@ template <class F> decltype(auto) with_contact_law(NormalLaw n, TangentialLaw t,
 }
 
 /// What is wrong with a material for the pair of laws ("" if nothing): the normal law's
-/// complaint first, then the tangential law's.
-inline std::string material_error(NormalLaw n, TangentialLaw t, const Material& m) {
-  std::string problem = with_normal_law(n, [&]<class N>() { return N::material_error(m); });
+/// complaint first, then the tangential law's. `d`: the linear law's damping convention.
+inline std::string material_error(NormalLaw n, TangentialLaw t, const Material& m,
+                                  LinearDamping d = LinearDamping::never_attractive) {
+  std::string problem = with_normal_law(n, [&]<class N>() { return N::material_error(m, d); });
   if (problem.empty())
     problem = with_tangential_law(t, [&]<class T>() { return T::material_error(m); });
   return problem;

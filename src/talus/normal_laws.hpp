@@ -15,7 +15,8 @@
 
 namespace talus {
 
-/// Linear spring-dashpot (thesis eq. 2.10): F_n = k_n xi + eta_n dxi/dt, never attractive.
+/// Linear spring-dashpot (thesis eq. 2.10): F_n = k_n xi + eta_n dxi/dt, never attractive but
+/// with the classic convention (LinearDamping, pair_parameters.hpp), which lets it pull.
 /// eta_n = gamma_n m_eff, or 2 zeta sqrt(k_n m_eff) from the restitution (closed_forms.hpp).
 struct LinearSpringDashpot {
   static constexpr std::string_view name = "linear";
@@ -32,9 +33,12 @@ struct LinearSpringDashpot {
   /// f_N of a tangential dashpot derived from the restitution (tangential_laws.hpp): the linear
   /// oscillator's own damping ratio.
   static constexpr double tsuji_factor = 1.0;
+  /// Whether the force may be negative (a pull), which a friction limit must not take.
+  static constexpr bool can_pull = true;
   template <class P, class G> static auto force(const P& p, const G& g) {
-    return not_below_zero(p.normal_stiffness * g.overlap +
-                          p.normal_dashpot(g.m_eff) * g.overlap_rate());
+    const auto f = p.normal_stiffness * g.overlap + p.normal_dashpot(g.m_eff) * g.overlap_rate();
+    // not below the floor: 0, as not_below_zero, but for the classic dashpot's -infinity
+    return select(f < p.normal_force_floor, p.normal_force_floor, f);
   }
   /// Normal stiffness k_n seen by a tangential spring.
   template <class P, class G> static auto stiffness(const P& p, const G&) {
@@ -46,6 +50,8 @@ struct LinearSpringDashpot {
   /// Duration of a contact of reduced mass m_eff (any impact speed).
   static double collision_time(const PairParameters& p, double m_eff, double /*r_eff*/,
                                double /*impact_speed*/) {
+    if (p.normal_force_floor < 0.0) // a dashpot that pulls keeps the contact to pi / omega
+      return linear_collision_time_textbook(p.normal_stiffness, p.normal_dashpot(m_eff), m_eff);
     return linear_collision_time(p.normal_stiffness, p.normal_dashpot(m_eff), m_eff);
   }
   /// The stiffness of the stiffest oscillation of such a contact, for the timestep's bound.
@@ -57,16 +63,18 @@ struct LinearSpringDashpot {
                              double impact_speed) {
     return impact_speed * std::sqrt(m_eff / p.normal_stiffness);
   }
-  /// What is wrong with a material for this law ("" if nothing).
-  static std::string material_error(const Material& m) {
+  /// What is wrong with a material for this law with the damping convention d ("" if nothing).
+  static std::string material_error(const Material& m,
+                                    LinearDamping d = LinearDamping::never_attractive) {
     if (!(m.normal_stiffness > 0.0))
       return "material '" + m.name +
              "': normal_stiffness must be > 0 N/m for the linear normal law (or choose normal "
              "law 'hertz')";
-    if (!(m.normal_damping_rate >= 0.0 || m.restitution > linear_restitution_floor))
+    if (d == LinearDamping::never_attractive &&
+        !(m.normal_damping_rate >= 0.0 || m.restitution > linear_restitution_floor))
       return "material '" + m.name + "': restitution = " + std::to_string(m.restitution) +
              " cannot be reached by the never-attractive linear spring-dashpot; allowed: "
-             "(0.1354, 1]";
+             "(0.1354, 1] (or simulation.linear_damping = \"classic\", whose dashpot pulls)";
     return {};
   }
   /// Fills in a damping left to be derived (negative): the linear law takes its damping from the
@@ -97,6 +105,7 @@ struct HertzViscoelastic {
   static constexpr double stiffness_power = 2.5; ///< overlap ~ E^(-2/5)
   static constexpr bool uses_r_eff = true;
   static constexpr bool stiffness_follows_overlap = true;
+  static constexpr bool can_pull = false;
   /// sqrt(5/6): Tsuji et al. 1992's factor for a dashpot beside a Hertzian spring.
   static constexpr double tsuji_factor = 0.91287092917527685576;
   template <class P, class G> static auto force(const P& p, const G& g) {
@@ -136,7 +145,7 @@ struct HertzViscoelastic {
                              double impact_speed) {
     return hertz_max_overlap(m_eff, hertz_rho(p.effective_young, r_eff), impact_speed);
   }
-  static std::string material_error(const Material&) { return {}; }
+  static std::string material_error(const Material&, LinearDamping = {}) { return {}; }
   /// A damping left to be derived (negative) stays so: the pair's A is then derived per contact
   /// from the restitution (mix_hertz_damping).
   static void resolve_damping(Material&) {}

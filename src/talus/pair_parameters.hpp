@@ -4,7 +4,11 @@
 // pair holds doubles; an engine that computes several contacts side by side gathers them into its
 // SIMD type with gather().
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string_view>
 
 #include "talus/closed_forms.hpp"
 #include "talus/material.hpp"
@@ -12,6 +16,23 @@
 #include "talus/tangential_laws.hpp"
 
 namespace talus {
+
+/// How the linear law's dashpot is derived from a restitution, and whether it may pull
+/// (docs/model.md, "Linear damping conventions"):
+/// - never_attractive: the force is cut at zero and the dashpot chosen so that the contact has
+///   exactly the restitution asked (e > exp(-2) only);
+/// - classic: the closed form of Tsuji et al. 1992, LAMMPS and MFIX, zeta = -ln e /
+///   sqrt(pi^2 + ln^2 e), with the force allowed to pull at the end of the contact, which gives
+///   exactly e;
+/// - classic_cut: the same dashpot with the force cut at zero, as LAMMPS' `limit_damping`: the
+///   restitution comes out above the one asked.
+/// A given gamma_n (normal_damping_rate) pulls with `classic` only.
+enum class LinearDamping : std::uint8_t { never_attractive = 0, classic = 1, classic_cut = 2 };
+inline constexpr std::array<std::string_view, 3> linear_damping_names{"never_attractive", "classic",
+                                                                      "classic_cut"};
+inline std::string_view to_string(LinearDamping d) {
+  return linear_damping_names[static_cast<std::size_t>(d)];
+}
 
 /// Mixing rules (see docs/model.md): moduli by the Hertz and Mindlin series rules; stiffness k_n
 /// by the harmonic mean (a material paired with itself keeps its own k_n); restitution, friction,
@@ -36,6 +57,9 @@ template <class R> struct PairParametersOf {
   R rolling_friction{};      ///< mu_r (rolling_resistance.hpp); 0: no rolling resistance
   R rolling_stiffness_factor = R{} + 2.25; ///< k_r = this x k_n mu_r^2 R*^2
   R rolling_damping{};                     ///< eta_r: the rolling dashpot over its critical value
+  /// N: the least normal force of the linear law: 0 (never attractive), or -infinity where the
+  /// classic dashpot may pull (LinearDamping::classic)
+  R normal_force_floor{};
 
   /// Linear dashpot coefficient eta_n (kg/s) for a pair of reduced mass m_eff.
   R normal_dashpot(R m_eff) const {
@@ -63,7 +87,8 @@ template <class R> struct PairParametersOf {
             f(a.restitution, b.restitution),
             f(a.rolling_friction, b.rolling_friction),
             f(a.rolling_stiffness_factor, b.rolling_stiffness_factor),
-            f(a.rolling_damping, b.rolling_damping)};
+            f(a.rolling_damping, b.rolling_damping),
+            f(a.normal_force_floor, b.normal_force_floor)};
   }
 };
 using PairParameters = PairParametersOf<double>;
@@ -127,13 +152,14 @@ inline void mix_tangential_damping(PairParameters& p, const Material& a, const M
 /// alone (E* = E / (1 - nu^2), G* = E / (2 (2 - nu) (1 + nu)), k_n its own); restitution,
 /// friction and damping still mix by the mean. Two rigid materials never meet; their pair mixes
 /// as if neither were rigid, so that it stays finite.
-inline PairParameters mix(const Material& a, const Material& b, double impact_speed) {
+inline PairParameters mix(const Material& a, const Material& b, double impact_speed,
+                          LinearDamping damping = LinearDamping::never_attractive) {
   if (a.rigid != b.rigid) {
     const Material& soft = a.rigid ? b : a;
     Material wall = a.rigid ? a : b; // its dissipation and friction mix as usual
     wall.rigid = false;
     wall.normal_stiffness = soft.normal_stiffness; // (the harmonic mean is then soft's own)
-    PairParameters p = mix(soft, wall, impact_speed);
+    PairParameters p = mix(soft, wall, impact_speed, damping);
     const double nu = soft.poisson;
     p.effective_young = soft.young / (1.0 - nu * nu);
     p.effective_shear = soft.young / (2.0 * (2.0 - nu) * (1.0 + nu));
@@ -149,10 +175,15 @@ inline PairParameters mix(const Material& a, const Material& b, double impact_sp
   if (a.normal_damping_rate >= 0.0 || b.normal_damping_rate >= 0.0) {
     p.damping_rate =
         mean(std::max(a.normal_damping_rate, 0.0), std::max(b.normal_damping_rate, 0.0));
+  } else if (damping != LinearDamping::never_attractive) {
+    p.damping_sqrt_coeff =
+        2.0 * classic_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
   } else if (p.restitution > linear_restitution_floor) {
     p.damping_sqrt_coeff =
         2.0 * linear_damping_ratio(p.restitution) * std::sqrt(p.normal_stiffness);
   } // below the floor only the Hertz law reaches e; the linear law's material check refuses it
+  if (damping == LinearDamping::classic)
+    p.normal_force_floor = -std::numeric_limits<double>::infinity();
   mix_tangential_damping(p, a, b);
   p.friction = mean(a.friction, b.friction);
   p.rolling_friction = mean(a.rolling_friction, b.rolling_friction);

@@ -120,6 +120,14 @@ void read_simulation(TableReader& r, SimulationSection& s) {
                     ? LeverArm::radius
                     : LeverArm::contact_point;
   s.normal_law = parse_normal_law(r.choice("normal_law", "linear", NormalLaws::names));
+  const std::string damping = r.choice("linear_damping", "never_attractive", linear_damping_names);
+  for (std::size_t k = 0; k < linear_damping_names.size(); ++k)
+    if (damping == linear_damping_names[k]) s.linear_damping = static_cast<LinearDamping>(k);
+  if (s.linear_damping != LinearDamping::never_attractive &&
+      s.normal_law != law_id<LinearSpringDashpot>)
+    r.fail("linear_damping", "applies to the linear normal law only (the Hertz law's dashpot never "
+                             "pulls); allowed with normal_law = \"" +
+                                 std::string(name_of(s.normal_law)) + "\": never_attractive");
   s.tangential_law =
       parse_tangential_law(r.choice("tangential_law", "cundall_strack", TangentialLaws::names));
   s.gravity = r.vec2("gravity", s.gravity);

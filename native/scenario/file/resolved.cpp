@@ -89,6 +89,7 @@ toml::table simulation_table(const SimulationSection& sim) {
   t.insert("verlet_velocity", std::string(to_string(sim.verlet_velocity)));
   t.insert("lever_arm", sim.lever_arm == LeverArm::radius ? "radius" : "contact_point");
   t.insert("normal_law", std::string(name_of(sim.normal_law)));
+  t.insert("linear_damping", std::string(to_string(sim.linear_damping)));
   t.insert("tangential_law", std::string(name_of(sim.tangential_law)));
   t.insert("gravity", vec(sim.gravity));
   t.insert("seed", static_cast<std::int64_t>(sim.seed));
