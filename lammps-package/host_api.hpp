@@ -3,6 +3,7 @@
 // LIGGGHTS 3.8 (TALUS_HOST_LIGGGHTS), whose API is LAMMPS' of about 2012. Everything else the
 // styles use is common to both. Errors pass whole std::strings: LAMMPS' formatting templates are
 // not compiled into Debian's liblammps (see compat/fmt/format.h).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -13,6 +14,8 @@
 #include "pair.h"
 #include "talus/law_table.hpp"
 #ifndef TALUS_HOST_LIGGGHTS
+#include "atom.h"
+#include "fix.h"
 #include "fix_contact_history.h"
 #include "modify.h"
 #include "utils.h"
@@ -135,6 +138,26 @@ protected:
 #else
     return FixContactHistory::find_or_make(lmp, id, slots, style);
 #endif
+  }
+
+  /// The largest radius that a `fix pour` or `fix deposit` of the deck will insert (m; 0 if none,
+  /// and always in LIGGGHTS, whose insertion fixes differ): the pair's reach must cover grains
+  /// that are not there yet. Read through each fix's extract("radius", type), as LAMMPS' own
+  /// granular styles read it.
+  double inserted_radius_max() const {
+    double largest = 0.0;
+#ifndef TALUS_HOST_LIGGGHTS
+    for (int k = 0; k < modify->nfix; ++k) {
+      const std::string style = modify->fix[k]->style;
+      if (style != "pour" && style != "deposit") continue;
+      for (int type = 1; type <= atom->ntypes; ++type) {
+        int asked = type;
+        if (const auto* r = static_cast<const double*>(modify->fix[k]->extract("radius", asked)))
+          largest = std::max(largest, *r);
+      }
+    }
+#endif
+    return largest;
   }
 
   /// Deletes the springs' fix `id`, if it is still there.

@@ -172,6 +172,8 @@ void PairGranthesis::init_style() {
   double local = 0.0;
   for (int i = 0; i < atom->nlocal; ++i) local = std::max(local, atom->radius[i]);
   MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
+  // and the grains a fix pour or deposit will insert during the run
+  max_radius_ = std::max(max_radius_, inserted_radius_max());
   Pair::init_style(); // the default half list: j > i within the cutoff plus the skin
 }
 

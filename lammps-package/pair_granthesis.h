@@ -87,7 +87,7 @@ private:
   /// 1 for the types whose material pair_coeff I I gave. LAMMPS' own setflag is 1 everywhere,
   /// so that its check before init_style passes and init_style names the type that is missing.
   std::vector<char> given_;
-  double max_radius_ = 0.0;        ///< the largest radius of any atom (m), at init
+  double max_radius_ = 0.0;        ///< the largest radius of any atom, or to be poured (m), at init
   double svector_storage_[6] = {}; ///< single(): fx, fy, torque_i, torque_j, F_n, overlap
 };
 

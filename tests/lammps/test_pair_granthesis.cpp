@@ -1,12 +1,17 @@
 // pair_style granthesis in LAMMPS: the errors of bad input (test_pair_laws.cpp has the physics).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "atom.h"
 #include "fix.h"
+#include "force.h"
 #include "lammps_instance.hpp"
 #include "modify.h"
+#include "pair.h"
 
 namespace talus::lammps_test {
 namespace {
@@ -118,6 +123,37 @@ TEST(FixSegmentWalls, CountsEachAtomsWallContactsAsTheNativeEngine) {
   EXPECT_EQ(count[lammps.index(2)], 2.0);
   EXPECT_EQ(count[lammps.index(3)], 1.0);
   EXPECT_EQ(count[lammps.index(4)], 0.0);
+}
+
+// Grains that fix pour inserts into an empty box: the pair's reach covers them from the start
+// (LAMMPS' own granular styles read fix pour's largest radius too), so they pile up instead of
+// passing through each other on a reach of 0.
+TEST(PairGranthesis, FixPourGrainsTouchFromTheStart) {
+  LammpsInstance lammps;
+  lammps.commands(
+      {"dimension 2", "units si", "atom_style sphere", "boundary f f p", "comm_modify vel yes",
+       "region box block 0 0.1 0 0.3 -0.01 0.01", "create_box 1 box",
+       "pair_style granthesis linear coulomb",
+       "pair_coeff * * normal_stiffness 1e3 restitution 0.3 friction 0.5 tangential_damping 500",
+       "region ins block 0.005 0.095 0.1 0.29 -0.01 0.01",
+       "fix gravity all gravity 9.81 vector 0 -1 0",
+       "fix ins all pour 40 1 4767 region ins diam range 0.008 0.012 vel 0 0 0",
+       "fix floor all granthesis/wall segment 0 0 0.1 0 type 1 segment 0 0 0 0.3 type 1 segment "
+       "0.1 0 0.1 0.3 type 1",
+       "fix move all nve/sphere disc", "fix plane all enforce2d", "timestep 1e-5", "run 30000"});
+  LAMMPS_NS::LAMMPS* lmp = lammps.lmp();
+  EXPECT_GE(lmp->force->pair->cutforce, 0.012) << "the reach of the largest grain to be poured";
+  const int n = lmp->atom->nlocal;
+  ASSERT_GE(n, 30); // fix pour places what fits in its region without overlaps
+  // every pair of grains at rest on the floor apart by at least 0.9 of their radii' sum: on a
+  // reach of 0 they would lie through each other
+  double** x = lmp->atom->x;
+  const double* r = lmp->atom->radius;
+  double closest = 1.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      closest = std::min(closest, std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1]) / (r[i] + r[j]));
+  EXPECT_GT(closest, 0.9);
 }
 
 } // namespace
