@@ -193,12 +193,12 @@ bool PairGranthesis::rolling() const {
   for (int i = 1; i <= ntypes_; ++i)
     for (int j = i; j <= ntypes_; ++j) {
       const std::size_t ij = slot(i, j);
-      // a pair mixes mu_r by the mean (talus/pair_parameters.hpp): some where either has some
-      if (explicit_pair_[ij] != 0
-              ? pair_[ij].rolling_friction > 0.0
-              : material_[static_cast<std::size_t>(i)].rolling_friction > 0.0 ||
-                    material_[static_cast<std::size_t>(j)].rolling_friction > 0.0)
-        return true;
+      // the pair as init_one will mix it (talus/pair_parameters.hpp), or as given
+      const PairParameters p = explicit_pair_[ij] != 0
+                                   ? pair_[ij]
+                                   : mix(material_[static_cast<std::size_t>(i)],
+                                         material_[static_cast<std::size_t>(j)], impact_speed_);
+      if (p.rolling_friction > 0.0) return true;
     }
   return false;
 }
