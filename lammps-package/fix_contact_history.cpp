@@ -43,9 +43,7 @@ FixContactHistory* FixContactHistory::find_or_make(LAMMPS_NS::LAMMPS* instance,
   if (modify->find_fix(id) < 0)
     modify->add_fix(id + " all granthesis/history slots " + std::to_string(slots));
   auto* fix = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(id)]);
-  if (!fix)
-    talus::lammps::fail(instance->error, owner, "fix " + id + " is not granthesis/history",
-                        __FILE__, __LINE__);
+  if (!fix) talus::lammps::fail(instance->error, owner, "fix " + id + " is not granthesis/history");
   return fix;
 }
 
@@ -54,8 +52,8 @@ FixContactHistory::~FixContactHistory() {
   atom->delete_callback(id, LAMMPS_NS::Atom::RESTART);
 }
 
-void FixContactHistory::fail(const std::string& message) const {
-  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+void FixContactHistory::fail(const std::string& message, std::source_location at) const {
+  talus::lammps::fail(error, style_name, message, at);
 }
 
 int FixContactHistory::setmask() {

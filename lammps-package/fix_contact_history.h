@@ -14,6 +14,7 @@ FixStyle(granthesis/history, talus::lammps::FixContactHistory);
 #else
 #ifndef TALUS_LAMMPS_FIX_CONTACT_HISTORY_H
 #define TALUS_LAMMPS_FIX_CONTACT_HISTORY_H
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -62,7 +63,9 @@ private:
     double spring;
     unsigned pass;
   };
-  [[noreturn]] void fail(const std::string& message) const;
+  /// Stops the run naming this style; LAMMPS cites the caller's file and line.
+  [[noreturn]] void fail(const std::string& message,
+                         std::source_location at = std::source_location::current()) const;
 
   int slots_ = 16;         ///< springs per atom at most
   unsigned pass_ = 0;      ///< the current pass

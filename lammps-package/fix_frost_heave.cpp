@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 #include <string>
 
 #include <mpi.h>
@@ -52,9 +53,12 @@ FixFrostHeave::FixFrostHeave(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
   disc_ = domain->dimension == 2;
   bool has_epsilon = false, has_factor = false, has_table = false;
   std::string problem;
+  std::set<std::string> given;
   for (int k = 3; k < narg; k += 2) {
     const std::string key = arg[k];
     if (k + 1 >= narg) fail(key + ": the value is missing (" + usage + ")");
+    if (!given.insert(key).second)
+      fail("keyword '" + key + "' is given twice; allowed: each keyword once (" + usage + ")");
     const char* value = arg[k + 1];
     if (key == "epsilon") {
       epsilon_ = number(key, value, 0.0, false, ">= 0 J", problem);
@@ -92,8 +96,8 @@ FixFrostHeave::FixFrostHeave(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
     fail(std::string("epsilon, factor and table are required (") + usage + ")");
 }
 
-void FixFrostHeave::fail(const std::string& message) const {
-  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+void FixFrostHeave::fail(const std::string& message, std::source_location at) const {
+  talus::lammps::fail(error, style_name, message, at);
 }
 
 int FixFrostHeave::setmask() {
@@ -101,6 +105,8 @@ int FixFrostHeave::setmask() {
 }
 
 void FixFrostHeave::init() {
+  if (const std::string problem = units_problem(update->unit_style); !problem.empty())
+    fail(problem);
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
     fail("needs per-atom radius, mass and angular velocity for the kinetic energy: atom_style "
          "sphere");

@@ -12,6 +12,7 @@ FixStyle(frost/heave, talus::lammps::FixFrostHeave);
 #else
 #ifndef TALUS_LAMMPS_FIX_FROST_HEAVE_H
 #define TALUS_LAMMPS_FIX_FROST_HEAVE_H
+#include <source_location>
 #include <string>
 
 #include "fix.h"
@@ -33,7 +34,9 @@ public:
   void restart(char* buffer) override;
 
 private:
-  [[noreturn]] void fail(const std::string& message) const;
+  /// Stops the run naming this style; LAMMPS cites the caller's file and line.
+  [[noreturn]] void fail(const std::string& message,
+                         std::source_location at = std::source_location::current()) const;
   double group_kinetic_energy() const;
   void heave();
   double now() const; ///< s: the simulation time, carried across restart files

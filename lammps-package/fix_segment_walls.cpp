@@ -21,6 +21,7 @@
 #include "talus/contact_force.hpp"
 #include "talus/rolling_resistance.hpp"
 #include "talus/vibration.hpp"
+#include "timestep_check.hpp"
 #include "update.h"
 
 namespace talus::lammps {
@@ -125,8 +126,8 @@ FixSegmentWalls::~FixSegmentWalls() {
   if (rolling_ && modify->find_fix(rolling_id_) >= 0) modify->delete_fix(rolling_id_);
 }
 
-void FixSegmentWalls::fail(const std::string& message) const {
-  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+void FixSegmentWalls::fail(const std::string& message, std::source_location at) const {
+  talus::lammps::fail(error, style_name, message, at);
 }
 
 int FixSegmentWalls::setmask() {
@@ -149,6 +150,43 @@ void FixSegmentWalls::init() {
            " does not exist; allowed: 1 to " + std::to_string(atom->ntypes));
   history_ = rolling_ = nullptr;
   make_history();
+  check_timestep();
+}
+
+// The warning of a timestep too coarse for the stiffest wall contact: the lightest and smallest
+// grain of each type present against each segment's type (a segment does not move back).
+void FixSegmentWalls::check_timestep() const {
+  double shortest = HUGE_VAL;
+  int grain = 0, wall = 0;
+  for (int t = 1; t <= atom->ntypes; ++t)
+    for (const Wall& w : walls_) {
+      const double m = pair_->lightest_mass(t), r = pair_->smallest_radius(t);
+      if (!pair_->has_parameters(t, w.type) || !(m > 0.0) || !(r > 0.0)) continue;
+      const double tc = pair_->collision_time(pair_->parameters(t, w.type), m, r);
+      if (tc < shortest) shortest = tc, grain = t, wall = w.type;
+    }
+  if (shortest == HUGE_VAL || comm->me != 0) return;
+  const std::string problem =
+      timestep_warning(shortest, update->dt,
+                       "a grain of type " + std::to_string(grain) + " with a segment of type " +
+                           std::to_string(wall));
+  if (!problem.empty()) warn(error, std::string(style_name) + ": " + problem);
+}
+
+// A grain touching a segment whose type pair has no parameters: under pair_style hybrid, a type
+// given to another sub-style still needs a granthesis material for the walls.
+void FixSegmentWalls::unknown_pair(int i, std::size_t s) const {
+  const int t = atom->type[i], w = walls_[s].type;
+  const int missing = pair_->has_parameters(t, t) ? w : t;
+  const std::string m = std::to_string(missing);
+  fail("atom " + std::to_string(atom->tag[i]) + " of type " + std::to_string(t) +
+       " touches segment " + std::to_string(s + 1) + " of type " + std::to_string(w) +
+       ", but type " + m +
+       " has no granthesis material: the walls apply granthesis' laws to every atom of the "
+       "group, also where pair_style hybrid gives a type's grain pairs to another sub-style; "
+       "allowed: give every type a granthesis material before handing its pairs on (pair_coeff "
+       "* * granthesis key value ..., then pair_coeff " +
+       m + " " + m + " OTHER_STYLE ...)");
 }
 
 // The springs of the wall contacts, per atom and segment (numbered from 1): the tangential
@@ -258,6 +296,8 @@ template <class N, class T> void FixSegmentWalls::add_forces(bool advance) {
       contacts_[static_cast<std::size_t>(i)] += 1.0;
       double wx = 0.0, wy = 0.0;
       const ContactGeometry g = geometry(i, s, h.x, h.y, wx, wy);
+      if (!pair_->has_parameters(type[i], walls_[s].type)) [[unlikely]]
+        unknown_pair(i, s);
       const PairParameters& p = pair_->parameters(type[i], walls_[s].type);
       double spring = 0.0;
       double* kept = nullptr;

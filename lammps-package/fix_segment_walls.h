@@ -10,6 +10,7 @@ FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
 #else
 #ifndef TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
 #define TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -57,12 +58,17 @@ private:
     double ax, ay, bx, by;
     double vx = 0.0, vy = 0.0; ///< m/s
   };
-  [[noreturn]] void fail(const std::string& message) const;
+  /// Stops the run naming this style; LAMMPS cites the caller's file and line.
+  [[noreturn]] void fail(const std::string& message,
+                         std::source_location at = std::source_location::current()) const;
   double number(int narg, char** arg, int k, const char* what) const;
   int read_motion(int narg, char** arg, int k);
   double now() const; ///< s: the simulation time, carried across restart files
   void place(double t);
   void make_history();
+  void check_timestep() const; ///< warns of a timestep too coarse for a wall contact
+  /// fail(): atom i touches segment s, a type pair without parameters (pair_style hybrid).
+  [[noreturn, gnu::cold, gnu::noinline]] void unknown_pair(int i, std::size_t s) const;
   template <class N, class T> void add_forces(bool advance);
   void publish_local();
   ContactGeometry geometry(int i, std::size_t s, double hx, double hy, double& wx,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <source_location>
 #include <string>
 
 #include "error.h"
@@ -23,23 +24,38 @@
 
 namespace talus::lammps {
 
-/// Stops the run on every rank with "STYLE: message" (the host adds the file and line).
+/// Stops the run on every rank with "STYLE: message"; the host adds the file and line of `at`,
+/// the place that found the problem (a style's fail() passes on its caller's).
 [[noreturn]] inline void fail(LAMMPS_NS::Error* error, const std::string& style,
-                              const std::string& message, const char* file, int line) {
+                              const std::string& message,
+                              std::source_location at = std::source_location::current()) {
+  const int line = static_cast<int>(at.line());
 #ifdef TALUS_HOST_LIGGGHTS
-  error->all(file, line, (style + ": " + message).c_str());
+  error->all(at.file_name(), line, (style + ": " + message).c_str());
   std::abort(); // LIGGGHTS' Error::all ends the process but is not declared so
 #else
-  error->all(std::string(file), line, style + ": " + message);
+  error->all(std::string(at.file_name()), line, style + ": " + message);
 #endif
 }
 
-inline void warn(LAMMPS_NS::Error* error, const std::string& message, const char* file, int line) {
+inline void warn(LAMMPS_NS::Error* error, const std::string& message,
+                 std::source_location at = std::source_location::current()) {
+  const int line = static_cast<int>(at.line());
 #ifdef TALUS_HOST_LIGGGHTS
-  error->warning(file, line, message.c_str());
+  error->warning(at.file_name(), line, message.c_str());
 #else
-  error->warning(std::string(file), line, message);
+  error->warning(std::string(at.file_name()), line, message);
 #endif
+}
+
+/// Why a deck's `units` cannot be used (empty for units si): every value the styles read or
+/// default to is in SI units, and none is converted.
+inline std::string units_problem(const char* unit_style) {
+  const std::string units = unit_style;
+  if (units == "si") return {};
+  return "units " + units +
+         ": every value of the talus styles and every default is in SI units (m, kg, s, N, Pa, "
+         "J), and none is converted; allowed: units si";
 }
 
 /// The types a pair_coeff argument names ("2", "*", "1*3"): [lo, hi] within 1..ntypes.
@@ -56,7 +72,7 @@ inline void read_restart_items(LAMMPS_NS::LAMMPS* lmp, void* to, std::size_t siz
                                std::size_t count, FILE* file) {
 #ifdef TALUS_HOST_LIGGGHTS
   if (std::fread(to, size, count, file) != count)
-    fail(lmp->error, "restart", "the file ends early", __FILE__, __LINE__);
+    fail(lmp->error, "restart", "the file ends early");
 #else
   LAMMPS_NS::utils::sfread(__FILE__, __LINE__, to, size, count, file, nullptr, lmp->error);
 #endif
@@ -133,8 +149,7 @@ protected:
 #ifdef TALUS_HOST_LIGGGHTS
     (void)id;
     (void)slots;
-    fail(error, style, "a law with a contact history is not available in LIGGGHTS", __FILE__,
-         __LINE__);
+    fail(error, style, "a law with a contact history is not available in LIGGGHTS");
 #else
     return FixContactHistory::find_or_make(lmp, id, slots, style);
 #endif

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
@@ -43,8 +44,12 @@ std::string pair_coefficient_names() {
 
 Material parse_pair_coefficients(const std::vector<std::string>& words) {
   Material m; // every key at its default
+  std::set<std::string> given;
   for (std::size_t w = 0; w < words.size(); w += 2) {
     const std::string& key = words[w];
+    if (!given.insert(key).second)
+      throw InvalidArgument("pair_coeff: key '" + key +
+                            "' is given twice; allowed: each key once per pair_coeff");
     if (key == "density")
       throw InvalidArgument("pair_coeff: density is not a pair coefficient in LAMMPS: give it per "
                             "atom (set type N density/disc RHO for disks)");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include <mpi.h>
 
@@ -19,6 +20,7 @@
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
 #include "talus/rolling_resistance.hpp"
+#include "timestep_check.hpp"
 #include "update.h"
 
 namespace talus::lammps {
@@ -52,8 +54,8 @@ PairGranthesis::~PairGranthesis() {
   }
 }
 
-void PairGranthesis::fail(const std::string& message) const {
-  talus::lammps::fail(error, style_name, message, __FILE__, __LINE__);
+void PairGranthesis::fail(const std::string& message, std::source_location at) const {
+  talus::lammps::fail(error, style_name, message, at);
 }
 
 void PairGranthesis::allocate() {
@@ -99,8 +101,11 @@ void PairGranthesis::settings(int narg, char** arg) {
   impact_speed_ = 1.0;
   history_slots_ = 16;
   inertia_ = 0;
+  std::set<std::string> given;
   for (int k = 2; k < narg; k += 2) {
     const std::string key = arg[k];
+    if (!given.insert(key).second)
+      fail("keyword '" + key + "' is given twice; allowed: each keyword once (" + usage + ")");
     const std::optional<double> v = finite_number(arg[k + 1]);
     if (key == "inertia" &&
         (std::string(arg[k + 1]) == "disc" || std::string(arg[k + 1]) == "sphere"))
@@ -145,27 +150,46 @@ void PairGranthesis::coeff(int narg, char** arg) {
   if (count == 0) fail("pair_coeff " + std::string(arg[0]) + " " + arg[1] + " names no type pair");
 }
 
+// pair_modify: LAMMPS' mixing rules (geometric, arithmetic, sixthpower) are for epsilon and
+// sigma; this style mixes its materials by the rules of talus/pair_parameters.hpp, or takes the
+// pair's own parameters from pair_coeff I J, so `mix` would be ignored and is refused.
+void PairGranthesis::modify_params(int narg, char** arg) {
+  for (int k = 0; k < narg; ++k)
+    if (std::string(arg[k]) == "mix")
+      fail("pair_modify mix would have no effect: two types' pair mixes their materials by "
+           "talus' own rules (lammps-package/README.md, Mixing); allowed: leave mix out, or give "
+           "the pair its own parameters with pair_coeff I J key value ...");
+  Pair::modify_params(narg, arg);
+}
+
 void PairGranthesis::init_style() {
+  if (const std::string problem = units_problem(update->unit_style); !problem.empty())
+    fail(problem);
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     fail("needs per-atom radius, mass, angular velocity and torque: atom_style sphere");
   if (comm->ghost_velocity == 0) fail("needs the velocities of ghost atoms: comm_modify vel yes");
   if (!allocated)
     fail("no pair_coeff given (pair_coeff I I key value ...; keys: " + pair_coefficient_names() +
          ")");
+  // a sub-style of pair_style hybrid computes only the type pairs given to it: init_one names
+  // those of its pairs that lack a material
+  const bool whole = force->pair == this;
+  if (!whole) check_hybrid();
   for (int i = 1; i <= ntypes_; ++i) {
-    if (given_[static_cast<std::size_t>(i)] == 0)
+    if (given_[static_cast<std::size_t>(i)] == 0) {
+      if (!whole) continue;
       fail("no pair_coeff for type " + std::to_string(i) + " (pair_coeff " + std::to_string(i) +
            " " + std::to_string(i) + " key value ...; keys: " + pair_coefficient_names() + ")");
+    }
     const Material& m = material_[static_cast<std::size_t>(i)];
     const std::string problem = material_error(normal_, tangential_, m);
     if (!problem.empty()) fail("type " + std::to_string(i) + ": " + problem);
   }
+  mix_pairs();
   if (domain->dimension == 3 && comm->me == 0)
-    warn(error,
-         std::string(style_name) +
-             ": in 3d the contacts must lie in the x-y plane (spheres moving in a plane); a "
-             "contact out of it stops the run",
-         __FILE__, __LINE__);
+    warn(error, std::string(style_name) +
+                    ": in 3d the contacts must lie in the x-y plane (spheres moving in a plane); a "
+                    "contact out of it stops the run");
   if (keeps_history(tangential_)) init_history();
   inertia_factor_ = inertia_ == 1 || (inertia_ == 0 && domain->dimension == 2) ? 0.5 : 0.4;
   init_rolling();
@@ -174,7 +198,84 @@ void PairGranthesis::init_style() {
   MPI_Allreduce(&local, &max_radius_, 1, MPI_DOUBLE, MPI_MAX, world);
   // and the grains a fix pour or deposit will insert during the run
   max_radius_ = std::max(max_radius_, inserted_radius_max());
+  find_lightest();
+  check_timestep();
   Pair::init_style(); // the default half list: j > i within the cutoff plus the skin
+}
+
+// Under pair_style hybrid each type pair has one sub-style. hybrid/overlay and hybrid/scaled add
+// the forces of the sub-styles given the same pair: beside another granular style, a contact
+// would be counted twice.
+void PairGranthesis::check_hybrid() const {
+  const std::string style = force->pair_style;
+  if (style == "hybrid") return;
+  for (const char* other :
+       {"gran/hooke", "gran/hooke/history", "gran/hertz/history", "granular", "gran"})
+    if (force->pair_match(other, 1) != nullptr)
+      fail("pair_style " + style + " adds the forces of " + other +
+           " and granthesis on the type pairs both are given, so that a contact would count "
+           "twice; allowed: pair_style hybrid, which gives each type pair one contact law");
+}
+
+// Every type pair's parameters, mixed (talus/pair_parameters.hpp) or as pair_coeff I J gave
+// them, wherever both types' materials or the pair's own are known: fix granthesis/wall needs a
+// type's pairs also where pair_style hybrid gives that type's grain pairs to another sub-style.
+void PairGranthesis::mix_pairs() {
+  known_.assign(pair_.size(), 0);
+  for (int i = 1; i <= ntypes_; ++i)
+    for (int j = i; j <= ntypes_; ++j) {
+      const std::size_t ij = slot(i, j);
+      if (!explicit_pair_[ij]) {
+        if (!given_[static_cast<std::size_t>(i)] || !given_[static_cast<std::size_t>(j)]) continue;
+        pair_[ij] = mix(material_[static_cast<std::size_t>(i)],
+                        material_[static_cast<std::size_t>(j)], impact_speed_);
+      }
+      pair_[slot(j, i)] = pair_[ij];
+      known_[ij] = known_[slot(j, i)] = 1;
+    }
+}
+
+// The lightest mass and smallest radius of each type's atoms now present (0 where none), over
+// every rank: the collision times of the timestep check take them, as the native engine's
+// automatic timestep does.
+void PairGranthesis::find_lightest() {
+  const auto n = static_cast<std::size_t>(ntypes_) + 1;
+  std::vector<double> local(2 * n, HUGE_VAL);
+  lightest_.assign(2 * n, HUGE_VAL);
+  for (int i = 0; i < atom->nlocal; ++i) {
+    const auto t = static_cast<std::size_t>(atom->type[i]);
+    local[t] = std::min(local[t], atom->rmass[i]);
+    local[n + t] = std::min(local[n + t], atom->radius[i]);
+  }
+  MPI_Allreduce(local.data(), lightest_.data(), static_cast<int>(2 * n), MPI_DOUBLE, MPI_MIN,
+                world);
+  for (double& x : lightest_)
+    if (x == HUGE_VAL) x = 0.0;
+}
+
+double PairGranthesis::collision_time(const PairParameters& p, double m_eff, double r_eff) const {
+  return with_normal_law(
+      normal_, [&]<class N>() { return N::collision_time(p, m_eff, r_eff, impact_speed_); });
+}
+
+// The warning of a timestep too coarse for the stiffest pair of grains present: the lightest of
+// either type, in a pair of two such grains (the bound is then conservative).
+void PairGranthesis::check_timestep() const {
+  double shortest = HUGE_VAL;
+  int pi = 0, pj = 0;
+  for (int i = 1; i <= ntypes_; ++i)
+    for (int j = i; j <= ntypes_; ++j) {
+      const double m = std::min(lightest_mass(i), lightest_mass(j));
+      const double r = std::min(smallest_radius(i), smallest_radius(j));
+      if (!has_parameters(i, j) || !(m > 0.0) || !(r > 0.0)) continue;
+      const double tc = collision_time(parameters(i, j), 0.5 * m, 0.5 * r);
+      if (tc < shortest) shortest = tc, pi = i, pj = j;
+    }
+  if (shortest == HUGE_VAL || comm->me != 0) return;
+  const std::string problem =
+      timestep_warning(shortest, update->dt,
+                       "two grains of types " + std::to_string(pi) + " and " + std::to_string(pj));
+  if (!problem.empty()) warn(error, std::string(style_name) + ": " + problem);
 }
 
 // A law with a spring keeps it per contact in fix granthesis/history. Each rank computes a
@@ -183,8 +284,8 @@ void PairGranthesis::init_style() {
 void PairGranthesis::init_history() {
   if (host_keeps_springs && force->newton_pair)
     fail("tangential law '" + std::string(name_of(tangential_)) +
-         "' keeps a spring per contact, which needs newton_pair off (newton off, or newton on "
-         "off), so that each rank computes its own atoms' contacts");
+         "' keeps a spring per contact, which needs newton_pair off (newton off before the box, "
+         "or newton off on after it), so that each rank computes its own atoms' contacts");
   history_ = springs_fix(history_fix_id, history_slots_, style_name);
 }
 
@@ -193,7 +294,7 @@ bool PairGranthesis::rolling() const {
   for (int i = 1; i <= ntypes_; ++i)
     for (int j = i; j <= ntypes_; ++j) {
       const std::size_t ij = slot(i, j);
-      // the pair as init_one will mix it (talus/pair_parameters.hpp), or as given
+      // the pair as mix_pairs() will mix it (talus/pair_parameters.hpp), or as given
       const PairParameters p = explicit_pair_[ij] != 0
                                    ? pair_[ij]
                                    : mix(material_[static_cast<std::size_t>(i)],
@@ -208,7 +309,8 @@ void PairGranthesis::init_rolling() {
   if (!rolling_) return;
   if (host_keeps_springs && force->newton_pair)
     fail("rolling resistance (rolling_friction > 0) keeps a spring per contact, which needs "
-         "newton_pair off (newton off, or newton on off), so that each rank computes its own "
+         "newton_pair off (newton off before the box, or newton off on after it), so that each "
+         "rank computes its own "
          "atoms' contacts");
   rolling_fix_ = springs_fix(rolling_fix_id, history_slots_, style_name);
 }
@@ -242,11 +344,16 @@ double PairGranthesis::add_rolling_torque(int i, int j, const PairParameters& p,
 }
 
 double PairGranthesis::init_one(int i, int j) {
-  const std::size_t ij = slot(i, j);
-  if (!explicit_pair_[ij])
-    pair_[ij] = mix(material_[static_cast<std::size_t>(i)], material_[static_cast<std::size_t>(j)],
-                    impact_speed_);
-  pair_[slot(j, i)] = pair_[ij];
+  if (!has_parameters(i, j)) {
+    const int missing = given_[static_cast<std::size_t>(i)] ? j : i;
+    fail("types " + std::to_string(i) + " and " + std::to_string(j) +
+         " are given to granthesis, "
+         "but type " +
+         std::to_string(missing) + " has no material (pair_coeff " + std::to_string(missing) + " " +
+         std::to_string(missing) +
+         " granthesis key value ...), nor the pair parameters of its own (pair_coeff " +
+         std::to_string(i) + " " + std::to_string(j) + " granthesis key value ...)");
+  }
   // The reach of a pair is the sum of the radii; the half list needs the largest (finitecutflag:
   // LAMMPS adds the skin)
   return 2.0 * std::max(max_radius_, 0.0);

@@ -11,6 +11,7 @@ PairStyle(granthesis, talus::lammps::PairGranthesis);
 #else
 #ifndef TALUS_LAMMPS_PAIR_GRANTHESIS_H
 #define TALUS_LAMMPS_PAIR_GRANTHESIS_H
+#include <source_location>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@ public:
   void compute(int eflag, int vflag) override;
   void settings(int narg, char** arg) override;
   void coeff(int narg, char** arg) override;
+  void modify_params(int narg, char** arg) override;
   void init_style() override;
   double init_one(int i, int j) override;
   double single(int i, int j, int itype, int jtype, double rsq, double factor_coul,
@@ -36,8 +38,18 @@ public:
   void write_restart(FILE* file) override;
   void write_restart_settings(FILE* file) override;
 
-  /// The pair parameters of types i and j (1-based), as mixed or given.
+  /// The pair parameters of types i and j (1-based), as mixed or given (after init_style).
   const PairParameters& parameters(int i, int j) const;
+  /// Whether types i and j have pair parameters: both have materials, or the pair its own.
+  bool has_parameters(int i, int j) const { return known_[slot(i, j)] != 0; }
+  /// The lightest mass (kg) and smallest radius (m) of type t's atoms at init; 0 where none.
+  double lightest_mass(int t) const { return lightest_[static_cast<std::size_t>(t)]; }
+  double smallest_radius(int t) const {
+    return lightest_[static_cast<std::size_t>(ntypes_ + 1 + t)];
+  }
+  /// The collision time (s) of a contact of pair parameters p, reduced mass m_eff and radius
+  /// r_eff under the normal law (a Hertz one at the impact speed).
+  double collision_time(const PairParameters& p, double m_eff, double r_eff) const;
   NormalLaw normal_law() const { return normal_; }
   TangentialLaw tangential_law() const { return tangential_; }
   double impact_speed() const { return impact_speed_; }
@@ -53,6 +65,10 @@ public:
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
   void allocate();
+  void check_hybrid() const; ///< refuses a hybrid style that would count a contact twice
+  void mix_pairs();          ///< every type pair's parameters that can be known, into pair_
+  void find_lightest();      ///< lightest_ from the atoms present
+  void check_timestep() const;
   void init_history(); ///< makes or finds the springs' fix, for a law that keeps them
   void init_rolling(); ///< the same for the rolling springs, where a pair has rolling resistance
   /// The rolling torque of the contact of i and j (1-based types itype, jtype) with geometry g
@@ -65,7 +81,9 @@ private:
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
            static_cast<std::size_t>(j);
   }
-  [[noreturn]] void fail(const std::string& message) const;
+  /// Stops the run naming this style; LAMMPS cites the caller's file and line.
+  [[noreturn]] void fail(const std::string& message,
+                         std::source_location at = std::source_location::current()) const;
   /// fail(), for atoms i and j touching with dz != 0: out of line, off the pair loop's path.
   [[noreturn, gnu::cold, gnu::noinline]] void out_of_plane(int i, int j, double dz) const;
   void read_settings(FILE* file) override;     ///< the laws, from a restart file
@@ -84,6 +102,8 @@ private:
   std::vector<Material> material_;   ///< per type, 1-based
   std::vector<PairParameters> pair_; ///< (ntypes + 1)^2: mixed or given per pair
   std::vector<char> explicit_pair_;  ///< 1 where pair_coeff I J (I != J) gave the pair
+  std::vector<char> known_;          ///< 1 where pair_ holds the pair's parameters (init_style)
+  std::vector<double> lightest_;     ///< per type: the lightest mass, then the smallest radius
   /// 1 for the types whose material pair_coeff I I gave. LAMMPS' own setflag is 1 everywhere,
   /// so that its check before init_style passes and init_style names the type that is missing.
   std::vector<char> given_;

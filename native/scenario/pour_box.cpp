@@ -6,6 +6,7 @@
 #include "core/random.hpp"
 #include "materials/timestep.hpp"
 #include "talus/error.hpp"
+#include "talus/timestep_advice.hpp"
 
 namespace talus {
 
@@ -62,7 +63,8 @@ PourBox build_pour_box(const PourBoxSpec& spec) {
   const PairParameters pp = PairTable({grain}, 1.0)(0, 0); // linear: no speed enters
   const double m_eff = 0.5 * m_min;
   out.config.timestep =
-      linear_collision_time(pp.normal_stiffness, pp.normal_dashpot(m_eff), m_eff) / 50.0;
+      linear_collision_time(pp.normal_stiffness, pp.normal_dashpot(m_eff), m_eff) /
+      default_timestep_factor;
   out.config.normal_law = law_id<LinearSpringDashpot>;
   out.config.tangential_law = law_id<CundallStrack>;
   out.box_width = width;

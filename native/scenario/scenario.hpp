@@ -11,6 +11,7 @@
 #include "materials/material.hpp"
 #include "state/particles.hpp"
 #include "talus/law_table.hpp"
+#include "talus/timestep_advice.hpp"
 
 namespace talus {
 
@@ -21,9 +22,9 @@ struct Rect {
 };
 
 struct SimulationSection {
-  double duration = 1.0;          ///< s
-  std::optional<double> timestep; ///< s; empty: "auto"
-  double timestep_factor = 50.0;  ///< auto timestep = shortest collision time / factor
+  double duration = 1.0;                            ///< s
+  std::optional<double> timestep;                   ///< s; empty: "auto"
+  double timestep_factor = default_timestep_factor; ///< auto timestep = shortest t_c / factor
   Integrator integrator = Integrator::gear;
   VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< velocity Verlet's damper velocity
   LeverArm lever_arm = LeverArm::contact_point; ///< the contacts' lever arms (contact_geometry.hpp)

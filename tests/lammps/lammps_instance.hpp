@@ -75,29 +75,68 @@ inline std::string exact(double x) {
   return text;
 }
 
-/// Runs a deck in talus-lmp, the package's launcher (TALUS_LMP), and expects it to stop with an
-/// error whose text contains `expected`. Debian's LAMMPS ends the process on an error (Error::all
-/// does not throw there), so bad input is tested in a process of its own.
-inline void expect_deck_error(const std::vector<std::string>& deck, const std::string& expected) {
+/// Runs a deck in talus-lmp, the package's launcher (TALUS_LMP), in a process of its own (Debian's
+/// LAMMPS ends the process on an error: Error::all does not throw there): what it printed, and
+/// its exit status in `status`.
+inline std::string run_deck(const std::vector<std::string>& deck, int& status) {
   // a file per process: ctest runs the tests side by side
-  const std::string path =
-      testing::TempDir() + "talus_bad_input_" + std::to_string(getpid()) + ".in";
+  const std::string path = testing::TempDir() + "talus_deck_" + std::to_string(getpid()) + ".in";
   {
     std::ofstream out(path);
     for (const std::string& line : deck) out << line << "\n";
   }
   std::string command(TALUS_LMP);
   command.append(" -in ").append(path).append(" -log none 2>&1");
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
   std::string printed;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) {
+    status = -1;
+    return "popen failed";
+  }
   char buffer[4096];
   while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) printed.append(buffer);
-  const int status = pclose(pipe);
+  status = pclose(pipe);
+  return printed;
+}
+
+/// A deck of two disks of types 1 and 2, touching, in a 2d box in SI units; then `lines`.
+inline std::vector<std::string> two_type_deck(const std::vector<std::string>& lines) {
+  std::vector<std::string> deck{"dimension 2",
+                                "units si",
+                                "atom_style sphere",
+                                "boundary f f p",
+                                "comm_modify vel yes",
+                                "region box block -1 1 -1 1 -0.01 0.01",
+                                "create_box 2 box",
+                                "create_atoms 1 single 0 0 0",
+                                "create_atoms 2 single 0.009 0 0",
+                                "set atom * diameter 0.01",
+                                "set atom * density/disc 2650"};
+  deck.insert(deck.end(), lines.begin(), lines.end());
+  return deck;
+}
+
+/// Expects a deck to stop with an error whose text contains `expected`; returns what it printed.
+inline std::string expect_deck_error(const std::vector<std::string>& deck,
+                                     const std::string& expected) {
+  int status = 0;
+  const std::string printed = run_deck(deck, status);
   EXPECT_NE(status, 0) << printed;
   EXPECT_NE(printed.find("ERROR"), std::string::npos) << printed;
   EXPECT_NE(printed.find(expected), std::string::npos) << "expected: " << expected << "\n"
                                                        << printed;
+  return printed;
+}
+
+/// Expects a deck to run to its end with a warning whose text contains `expected`.
+inline void expect_deck_warning(const std::vector<std::string>& deck, const std::string& expected) {
+  int status = 0;
+  const std::string printed = run_deck(deck, status);
+  EXPECT_EQ(status, 0) << printed;
+  const std::size_t at = printed.find("WARNING");
+  ASSERT_NE(at, std::string::npos) << printed;
+  EXPECT_NE(printed.find(expected, at), std::string::npos) << "expected: " << expected << "\n"
+                                                           << printed;
 }
 
 } // namespace talus::lammps_test

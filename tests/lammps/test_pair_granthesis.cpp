@@ -18,19 +18,7 @@ namespace {
 
 // Two types of disks in a box, then `lines`: an error naming `expected` (run_deck).
 void expect_error(const std::vector<std::string>& lines, const std::string& expected) {
-  std::vector<std::string> deck{"dimension 2",
-                                "units si",
-                                "atom_style sphere",
-                                "boundary f f p",
-                                "comm_modify vel yes",
-                                "region box block -1 1 -1 1 -0.01 0.01",
-                                "create_box 2 box",
-                                "create_atoms 1 single 0 0 0",
-                                "create_atoms 2 single 0.009 0 0",
-                                "set atom * diameter 0.01",
-                                "set atom * density/disc 2650"};
-  deck.insert(deck.end(), lines.begin(), lines.end());
-  expect_deck_error(deck, expected);
+  expect_deck_error(two_type_deck(lines), expected);
 }
 
 TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
