@@ -13,6 +13,7 @@ packages=(
   python3-vtk9              # tests: VTK reads the snapshots as ParaView does
   ffmpeg                    # talus movie
   python3-matplotlib        # talus analyze: charts
+  python3-scipy             # the cross-check's pass rule (Student's t quantiles)
   lammps                    # talus bench --lammps: the reference engine on the same system
   liblammps-dev             # the LAMMPS package (lammps-package/): pair_style granthesis
   python3-lammps            # its tests: the styles registered in LAMMPS' Python module

@@ -66,12 +66,13 @@ def difference_chart(name, out, curves):
 def summary(cases, out):
     """index.html: a row per comparison of every case, with its charts."""
     rows = []
+    # a row with no bound (passed None) is a measurement: it is shown, and never as a pass
+    verdict = {True: ("ok", "pass"), False: ("fail", "FAIL"), None: ("info", "measured")}
     for c in cases:
         for what, value, bound, passed, note in c.rows:
             rows.append(f"<tr><td>{html.escape(c.name)}</td><td>{html.escape(what)}</td>"
                         f"<td>{value:.3e}</td><td>{'reported' if bound != bound else f'{bound:g}'}</td><td>{html.escape(note)}</td>"
-                        f"<td class={'ok' if passed else 'fail'}>{'pass' if passed else 'FAIL'}"
-                        f"</td></tr>")
+                        f"<td class={verdict[passed][0]}>{verdict[passed][1]}</td></tr>")
         speeds = ", ".join(f"{k}: {v * 1e9:.0f} ns" for k, v in c.speeds.items())
         rows.append(f"<tr><td colspan=6>{html.escape(c.name)}: wall time per particle-step "
                     f"(whole runs, start-up included): {html.escape(speeds)}<br>"
@@ -82,7 +83,7 @@ def summary(cases, out):
                     + "</td></tr>")
     page = ("<!doctype html><meta charset=utf-8><title>talus cross-check</title><style>"
             "body{font-family:sans-serif}td,th{padding:3px 8px;border-bottom:1px solid #ccc}"
-            ".ok{color:green}.fail{color:red;font-weight:bold}</style>"
+            ".ok{color:green}.fail{color:red;font-weight:bold}.info{color:#555}</style>"
             "<h1>talus against LAMMPS: the cross-check</h1>"
             "<p>Position differences in mean radii; bounds from each case's tolerances.toml."
             "</p><table><tr><th>case</th><th>comparison</th><th>largest</th><th>bound</th>"

@@ -1,5 +1,6 @@
 """The statistics of a long case, measured the same way in a native run folder and in a LAMMPS
-run made into one (run_folder.py), each as a value and its one-standard-error uncertainty.
+run made into one (run_folder.py), each as a value, its one-standard-error uncertainty and the
+degrees of freedom behind that (the pass rule compares two by Welch's t: welch, t_bound).
 
 A case's tolerances.toml lists them as [[measures]] tables:
 
@@ -18,23 +19,61 @@ A case's tolerances.toml lists them as [[measures]] tables:
 import csv
 import functools
 import json
+import math
 import os
 import subprocess
 
 import numpy as np
+from scipy import stats
 
 from run_folder import data_array, pvd_entries, read_frames
 
 
+def welch(a, b):
+    """Welch's t of two estimates (value, standard error, degrees of freedom) and its degrees of
+    freedom by the Welch-Satterthwaite rule (an error of 0, or infinite degrees of freedom,
+    adds nothing to the sum of the fourth powers)."""
+    var = a[1] ** 2 + b[1] ** 2
+    t = abs(a[0] - b[0]) / max(math.sqrt(var), 1e-300)
+    fourth = sum(e ** 4 / dof for _, e, dof in (a, b) if e > 0.0 and math.isfinite(dof))
+    return t, (var * var / fourth if fourth > 0.0 else math.inf)
+
+
+def t_bound(z_max, dof):
+    """The |t| of Student's distribution with `dof` degrees of freedom that is exceeded as
+    rarely as a normal |z| of z_max (two-sided): the pass rule "within z_max errors" with the
+    false-alarm rate it states, however few the blocks or seeds behind the errors."""
+    if math.isinf(dof):
+        return float(z_max)
+    return float(stats.t.isf(stats.norm.sf(z_max), dof))
+
+
+def combined(estimates):
+    """The mean of several runs' estimates (value, error, dof) and its error: the larger of the
+    runs' own errors combined and their scatter (the standard error of the mean), with the
+    degrees of freedom of the one taken (Welch-Satterthwaite for the combined own errors,
+    runs - 1 for the scatter)."""
+    v = np.array([e[0] for e in estimates], dtype=float)
+    n = len(v)
+    own = math.sqrt(sum(e[1] ** 2 for e in estimates)) / n
+    fourth = sum(e[1] ** 4 / e[2] for e in estimates if e[1] > 0.0 and math.isfinite(e[2]))
+    own_dof = (own * n) ** 4 / fourth if fourth > 0.0 else math.inf
+    scatter = float(v.std(ddof=1) / math.sqrt(n)) if n > 1 else 0.0
+    if scatter > own:
+        return float(v.mean()), scatter, float(n - 1)
+    return float(v.mean()), own, own_dof
+
+
 def block_mean(t, x, lo, hi, blocks):
-    """The mean of x over t in [lo, hi] and its standard error from `blocks` block averages
-    (blocks long against the correlation time keep the error honest)."""
+    """The mean of x over t in [lo, hi], its standard error from `blocks` block averages
+    (blocks long against the correlation time keep the error honest), and its degrees of
+    freedom, blocks - 1."""
     t, x = np.asarray(t, dtype=float), np.asarray(x, dtype=float)
     x = x[(t >= lo) & (t <= hi) & np.isfinite(x)]
     if len(x) < blocks:
         raise ValueError(f"{len(x)} samples in [{lo}, {hi}] s, fewer than {blocks} blocks")
     means = np.array([b.mean() for b in np.array_split(x, blocks)])
-    return float(means.mean()), float(means.std(ddof=1) / np.sqrt(blocks))
+    return float(means.mean()), float(means.std(ddof=1) / np.sqrt(blocks)), float(blocks - 1)
 
 
 def disk_area_in_box(cx, cy, r, x0, y0, x1, y1, samples=1024):
@@ -55,12 +94,12 @@ def in_window(t, window):
 
 
 def strip_mean(per_strip, where):
-    """The mean over the strips of the rows' average (one row of strips per snapshot), and its
-    standard error over the strips."""
+    """The mean over the strips of the rows' average (one row of strips per snapshot), its
+    standard error over the strips, and its degrees of freedom, strips - 1."""
     if not per_strip:
         raise ValueError(f"{where}: no snapshot in the window")
     v = np.mean(per_strip, axis=0)
-    return float(v.mean()), float(v.std(ddof=1) / np.sqrt(len(v)))
+    return float(v.mean()), float(v.std(ddof=1) / np.sqrt(len(v))), float(len(v) - 1)
 
 
 @functools.lru_cache(maxsize=8)
@@ -134,7 +173,8 @@ def read_column(path, column):
 
 
 def measure(spec, folder, talus):
-    """(value, standard error) of one [[measures]] table in one run folder."""
+    """(value, standard error, degrees of freedom) of one [[measures]] table in one run folder
+    (an exact sample, or a fit's error from its counts: infinite degrees of freedom)."""
     if "packing" in spec:
         p = spec["packing"]
         return packing_fraction(frames_of(folder), p["region"], p["strips"], spec["window"])
@@ -145,7 +185,7 @@ def measure(spec, folder, talus):
     analyze(talus, folder, spec["analysis"], options)
     out = os.path.join(folder, "analysis")
     if "cycle" in spec:
-        return frost_sample(out, spec["quantity"], spec["cycle"]), 0.0
+        return frost_sample(out, spec["quantity"], spec["cycle"]), 0.0, math.inf
     if "series" in spec:
         name, column = spec["series"].split(":")
         t, x = read_column(os.path.join(out, name), column)
@@ -158,7 +198,7 @@ def measure(spec, folder, talus):
         name, key = spec["error"].split(":")
         with open(os.path.join(out, name)) as f:
             error = json.load(f)[key]
-    return float(value), float(error)
+    return float(value), float(error), math.inf
 
 
 def frost_sample(out, quantity, cycle):

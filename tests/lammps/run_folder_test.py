@@ -70,7 +70,7 @@ def shapes():
     xs = xs + (np.arange(-2, 24)[:, None] % 2)  # every other row shifted by a radius
     frame = {"x": xs.ravel(), "y": ys.ravel(), "radius": np.ones(xs.size),
              "kind": np.zeros(xs.size, dtype=int)}
-    phi, error = packing_fraction([(0.0, frame)], [0, 0, 40, 20 * math.sqrt(3)], 4, [0, 1])
+    phi, error, _ = packing_fraction([(0.0, frame)], [0, 0, 40, 20 * math.sqrt(3)], 4, [0, 1])
     exact = math.pi / (2 * math.sqrt(3))
     check(abs(phi / exact - 1) < 2e-5 and error < 1e-4 * exact,
           f"triangular lattice: {phi:.6f} +- {error:.1e} against {exact:.6f}")
