@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "drivers/drivers.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/file/load.hpp"
 #include "simulation/rolling_pass.hpp"
@@ -32,11 +33,13 @@ std::string refused(const std::string& key, const std::string& why) {
 
 // What LAMMPS cannot express: the reason, with the key to change, or nothing.
 std::optional<std::string> refusal(const Scenario& s) {
-  if (s.simulation.lever_arm == LeverArm::radius)
+  if (s.simulation.lever_arm != LeverArm::contact_point)
     return refused("simulation.lever_arm",
-                   "the lever arms at the radius are LAMMPS' own granular styles' convention; "
-                   "pair_style granthesis takes them to the contact point; allowed: contact_point "
-                   "(validation/crosscheck.py puts gran/hooke in the deck to compare with radius)");
+                   "the lever arms '" + std::string(to_string(s.simulation.lever_arm)) +
+                       "' are a convention of LAMMPS' own granular styles; pair_style granthesis "
+                       "takes them to the contact point; allowed: contact_point "
+                       "(validation/crosscheck.py puts gran/hooke or granular in the deck to "
+                       "compare with them)");
   if (s.simulation.linear_damping != LinearDamping::never_attractive)
     return refused("simulation.linear_damping",
                    "pair_style granthesis derives the linear dashpot as never_attractive; allowed: "
@@ -149,8 +152,22 @@ Box lammps_box(const BuiltScenario& b) {
   return box;
 }
 
+// The particles as the native engine starts a run with them: its drivers give the walls they
+// move their velocity at t = 0 (Simulation's constructor). LAMMPS' fix move sets a velocity only
+// from the first step on, so the data file must carry it, or the first forces, computed in the
+// run's setup, see still walls beside the native engine's moving ones.
+Particles started(const World& w) {
+  Particles p = w.particles;
+  Segments walls = w.walls;
+  for (Driver d : w.drivers) {
+    attach(d, p, walls);
+    apply(d, 0.0, p, walls);
+  }
+  return p;
+}
+
 std::string data_file(const Scenario& s, const BuiltScenario& b, const Typing& t, const Box& box) {
-  const Particles& p = b.world.particles;
+  const Particles p = started(b.world);
   std::string out = fmt::format("LAMMPS data file: {}, written by talus export lammps\n\n", s.name);
   out += fmt::format("{} atoms\n{} atom types\n\n", p.size(), t.key_of.size());
   out +=

@@ -9,7 +9,7 @@ namespace talus {
 
 void Simulation::for_each_contact(const std::function<void(const ContactView&)>& f) const {
   const Particles& p = world_.particles;
-  const double share = overlap_share(config_.lever_arm);
+  const LeverShares shares = lever_shares(config_.lever_arm);
   ContactView v;
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     for (std::uint32_t e = list_.row_offset[i]; e < list_.row_offset[i + 1]; ++e) {
@@ -22,7 +22,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
       v.wall = -1;
       v.geometry = pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i],
                                  p.mass[j], p.velocity[i], p.velocity[j], p.angular_velocity[i],
-                                 p.angular_velocity[j], true, share);
+                                 p.angular_velocity[j], true, shares);
       v.parameters = &pairs_(p.material[i], p.material[j]);
       v.history = list_.keeps_history ? list_.history[e] : 0.0;
       v.rolling = list_.keeps_rolling ? list_.rolling[e] : 0.0;
@@ -32,7 +32,7 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
   std::vector<WallHit> hits;
   for (std::uint32_t i = 0; i < p.size(); ++i)
     for_each_wall_contact(
-        p, list_, world_.walls, i, hits, share,
+        p, list_, world_.walls, i, hits, shares,
         [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
           v.i = i;
           v.j = i;

@@ -41,7 +41,7 @@ public:
   ForceStage(NormalLaw normal, TangentialLaw tangential, double dt, double verlet_lag = 1.0,
              LeverArm lever_arm = LeverArm::contact_point)
       : normal_(normal), tangential_(tangential), dt_(dt), verlet_lag_(verlet_lag),
-        share_(overlap_share(lever_arm)) {}
+        share_(lever_shares(lever_arm)) {}
 
   /// The forces and torques of every particle (weight and contacts) and the walls' reactions,
   /// then `finish` for every particle. `drift_bound` is an upper bound of how far any free
@@ -96,7 +96,7 @@ private:
   TangentialLaw tangential_;
   double dt_;
   double verlet_lag_; ///< velocity Verlet's convention (integrator.hpp, verlet_lag)
-  double share_;      ///< the lever arms' convention (overlap_share, talus/contact_geometry.hpp)
+  LeverShares share_; ///< the lever arms' convention (lever_shares, talus/contact_geometry.hpp)
   std::vector<PairForce> deferred_; ///< pair forces waiting for a later block's particle
   std::vector<PairForce> wall_force_;
   ContactCandidates candidates_;

@@ -34,12 +34,12 @@ private:
 
 /// The forces of found[0, count) (touching entries of the stretch from row r0), c0 in lane 0 and
 /// c1 in lane 1; an odd last contact fills both lanes, in a step of shape S (step_features.hpp),
-/// with the lever arms short of the radii by `share` of the overlap.
+/// with the lever arms short of the radii by `shares` of the overlap.
 /// Returns the largest overlap / smaller radius.
 template <class N, class T, class S>
 [[gnu::always_inline]] inline double pair_forces(const BlockArrays& a, const PairLaneSource& pairs,
                                                  const TouchingEntry* found, std::size_t count,
-                                                 std::ptrdiff_t r0, double dt, double share) {
+                                                 std::ptrdiff_t r0, double dt, LeverShares shares) {
   double worst = 0.0;
   for (std::size_t t = 0; t < count; t += 2) {
     const TouchingEntry& c0 = found[t];
@@ -58,7 +58,7 @@ template <class N, class T, class S>
         dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{a.mass[i0], a.mass[i1]},
         Lanes{a.mass[j0], a.mass[j1]}, Lanes{a.velocity[i0].x, a.velocity[i1].x},
         Lanes{a.velocity[i0].y, a.velocity[i1].y}, Lanes{a.velocity[j0].x, a.velocity[j1].x},
-        Lanes{a.velocity[j0].y, a.velocity[j1].y}, wi, wj, N::uses_r_eff || T::uses_r_eff, share);
+        Lanes{a.velocity[j0].y, a.velocity[j1].y}, wi, wj, N::uses_r_eff || T::uses_r_eff, shares);
     // a law without history neither reads nor changes the springs: not loaded, not stored
     Lanes spring{};
     if constexpr (T::has_history) spring = Lanes{a.history[c0.entry], a.history[c1.entry]};

@@ -29,7 +29,7 @@ namespace {
 
 template <class N>
 void pair_torques(World& world, NeighbourList& list, const PairTable& pairs, double dt,
-                  double share) {
+                  LeverShares shares) {
   Particles& p = world.particles;
   for (std::uint32_t i = 0; i < p.size(); ++i)
     for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
@@ -44,7 +44,7 @@ void pair_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
       }
       const ContactGeometry g = pair_geometry(
           d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
-          p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, share);
+          p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, shares);
       const RollingKinematics k = rolling_kinematics(world, i, j, -1);
       const double m = RollingLaw::torque<N>(pair, g, not_below_zero(N::force(pair, g)), k.spin,
                                              k.inertia, theta, dt);
@@ -55,12 +55,12 @@ void pair_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
 
 template <class N>
 void wall_torques(World& world, NeighbourList& list, const PairTable& pairs, double dt,
-                  double share) {
+                  LeverShares shares) {
   Particles& p = world.particles;
   std::vector<WallHit> hits;
   for (std::uint32_t i = 0; i < p.size(); ++i)
     for_each_wall_contact(
-        p, list, world.walls, i, hits, share,
+        p, list, world.walls, i, hits, shares,
         [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
           const PairParameters& pair = pairs(p.material[i], s.material);
           const auto wall = static_cast<std::int32_t>(list.wall_segment[e]);
@@ -74,10 +74,10 @@ void wall_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
 } // namespace
 
 void add_rolling_torques(World& world, NeighbourList& list, const PairTable& pairs,
-                         NormalLaw normal, double dt, double share) {
+                         NormalLaw normal, double dt, LeverShares shares) {
   with_normal_law(normal, [&]<class N>() {
-    pair_torques<N>(world, list, pairs, dt, share);
-    wall_torques<N>(world, list, pairs, dt, share);
+    pair_torques<N>(world, list, pairs, dt, shares);
+    wall_torques<N>(world, list, pairs, dt, shares);
   });
 }
 

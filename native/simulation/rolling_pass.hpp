@@ -29,8 +29,8 @@ RollingKinematics rolling_kinematics(const World& world, std::uint32_t i, std::u
 
 /// Adds the rolling torques of every touching contact to the particles' torques and advances
 /// the rolling springs (list.rolling, list.wall_rolling, which must be sized); clears the springs
-/// of entries that do not touch. `share`: overlap_share of the lever-arm convention.
+/// of entries that do not touch. `shares`: lever_shares of the lever-arm convention.
 void add_rolling_torques(World& world, NeighbourList& list, const PairTable& pairs,
-                         NormalLaw normal, double dt, double share);
+                         NormalLaw normal, double dt, LeverShares shares);
 
 } // namespace talus

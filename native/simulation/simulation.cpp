@@ -36,9 +36,9 @@ void validate_choices(const SimulationConfig& c) {
   require(within(c.verlet_velocity, 2), "simulation.verlet_velocity: id " +
                                             std::to_string(static_cast<int>(c.verlet_velocity)) +
                                             " is not a choice; allowed: predicted, half_step");
-  require(within(c.lever_arm, 2), "simulation.lever_arm: id " +
+  require(within(c.lever_arm, 3), "simulation.lever_arm: id " +
                                       std::to_string(static_cast<int>(c.lever_arm)) +
-                                      " is not a choice; allowed: contact_point, radius");
+                                      " is not a choice; allowed: contact_point, radius, granular");
 }
 
 void validate_setup(const World& w, const SimulationConfig& c) {
@@ -116,7 +116,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
                   features_);
   if (features_.rolling) // with no time passed: the springs stay as they are
     add_rolling_torques(world_, list_, pairs_, config_.normal_law, 0.0,
-                        overlap_share(config_.lever_arm));
+                        lever_shares(config_.lever_arm));
   if (config_.integrator == Integrator::gear) gear_initialise(world_.particles);
 }
 
@@ -211,7 +211,7 @@ PassReport Simulation::contacts(bool fuse) {
       forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_, features_);
   if (features_.rolling) {
     add_rolling_torques(world_, list_, pairs_, config_.normal_law, config_.timestep,
-                        overlap_share(config_.lever_arm));
+                        lever_shares(config_.lever_arm));
     if (config_.integrator == Integrator::verlet)
       report.finite = verlet_correct(world_.particles, config_.timestep, threads_,
                                      verlet_lag(config_.verlet_velocity));

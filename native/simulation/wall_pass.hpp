@@ -29,7 +29,7 @@ inline WallHit wall_hit(const Segment& s, Vec2 p, double radius) {
 // scratch space, kept by the caller so that a step allocates nothing.
 template <class Touching, class Apart>
 void for_each_wall_contact(const Particles& p, const NeighbourList& list, const Segments& walls,
-                           std::uint32_t i, std::vector<WallHit>& hits, double share,
+                           std::uint32_t i, std::vector<WallHit>& hits, LeverShares shares,
                            Touching&& touching, Apart&& apart) {
   const std::uint32_t w0 = list.wall_offset[i], w1 = list.wall_offset[i + 1];
   if (w0 == w1) return;
@@ -40,11 +40,11 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
     hits.push_back(wall_hit(walls[list.wall_segment[e]], ri, Ri));
   for (std::uint32_t e = w0; e < w1; ++e) {
     const WallHit& h = hits[e - w0];
-    const auto shares = [&](std::size_t m, double x, double y) {
+    const auto has_end = [&](std::size_t m, double x, double y) {
       const Segment& o = walls[list.wall_segment[w0 + m]];
       return (o.a.x == x && o.a.y == y) || (o.b.x == x && o.b.y == y);
     };
-    if (!h.touching || (h.vertex() && duplicate_vertex(hits, hits.size(), e - w0, shares))) {
+    if (!h.touching || (h.vertex() && duplicate_vertex(hits, hits.size(), e - w0, has_end))) {
       apart(e);
       continue;
     }
@@ -52,7 +52,7 @@ void for_each_wall_contact(const Particles& p, const NeighbourList& list, const 
     const Vec2 d = ri - Vec2{h.x, h.y};
     touching(e, s,
              wall_geometry(d, norm(d), Ri, p.mass[i], p.velocity[i], p.angular_velocity[i],
-                           s.velocity_at(Vec2{h.x, h.y}), share));
+                           s.velocity_at(Vec2{h.x, h.y}), shares));
   }
 }
 
@@ -65,10 +65,10 @@ template <class N, class T, class S>
 [[gnu::noinline]] double
 wall_contacts(const Particles& p, NeighbourList& list, const Segments& walls,
               const PairTable& pairs, const PairParameters& uniform, std::vector<PairForce>& out,
-              double dt, double share, std::uint32_t i, std::vector<WallHit>& hits) {
+              double dt, LeverShares shares, std::uint32_t i, std::vector<WallHit>& hits) {
   double worst = 0.0;
   for_each_wall_contact(
-      p, list, walls, i, hits, share,
+      p, list, walls, i, hits, shares,
       [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
         double none = 0.0; // the spring of a list that keeps none
         double& spring = S::history ? list.wall_history[e] : none;

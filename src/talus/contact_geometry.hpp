@@ -3,19 +3,58 @@
 // definition for any number type R (number.hpp): one contact with double, several side by side
 // with a SIMD type; each element rounds as the double code does, so both give the same bits.
 #include <cstdint>
+#include <string>
+#include <string_view>
 
+#include "talus/error.hpp"
 #include "talus/number.hpp"
 
 namespace talus {
 
 /// Where a contact's lever arms reach, for the spin's part of the tangential velocity and for
 /// the torques: to the contact point mid-overlap, a_i = R_i - xi/2 (the default: a_i + a_j =
-/// |r_i - r_j|, so the torques conserve angular momentum exactly), or to the radius, a_i = R_i,
-/// as LAMMPS' granular pair styles take it (then the pair's torques conserve it only to O(xi/R)).
-enum class LeverArm : std::uint8_t { contact_point = 0, radius = 1 };
-/// The share of the overlap a lever arm is short of the radius: a_i = R_i - share xi.
-inline double overlap_share(LeverArm arm) {
-  return arm == LeverArm::radius ? 0.0 : 0.5;
+/// |r_i - r_j|, so the torques conserve angular momentum exactly); to the radius, a_i = R_i, as
+/// LAMMPS' gran/* pair styles take it (then the pair's torques conserve it only to O(xi/R)); or
+/// `granular`, as LAMMPS' pair_style granular and fix wall/gran granular take them: the spin's
+/// velocity at the radius, the torques at the contact point.
+enum class LeverArm : std::uint8_t { contact_point = 0, radius = 1, granular = 2 };
+
+/// The shares of the overlap the lever arms are short of the radius: a_i = R_i - share xi, for
+/// the torques and for the spin's part of the contact point's velocity.
+struct LeverShares {
+  double torque = 0.5;
+  double velocity = 0.5;
+};
+/// The convention's name in scenario files (simulation.lever_arm).
+inline const char* to_string(LeverArm arm) {
+  switch (arm) {
+  case LeverArm::radius:
+    return "radius";
+  case LeverArm::granular:
+    return "granular";
+  case LeverArm::contact_point:
+    break;
+  }
+  return "contact_point";
+}
+/// The convention of a name from to_string; throws InvalidArgument with the allowed names.
+inline LeverArm parse_lever_arm(std::string_view name) {
+  for (const LeverArm arm : {LeverArm::contact_point, LeverArm::radius, LeverArm::granular})
+    if (name == to_string(arm)) return arm;
+  throw InvalidArgument("unknown lever arm '" + std::string(name) +
+                        "'; allowed: contact_point, radius, granular");
+}
+
+inline LeverShares lever_shares(LeverArm arm) {
+  switch (arm) {
+  case LeverArm::radius:
+    return {0.0, 0.0};
+  case LeverArm::granular:
+    return {0.5, 0.0};
+  case LeverArm::contact_point:
+    break;
+  }
+  return {};
 }
 
 /// One touching pair (i, j), j possibly a wall. Conventions: n points from j to i; t = e_z x n
@@ -41,11 +80,11 @@ using ContactGeometry = ContactGeometryOf<double>;
 
 /// Geometry of a particle-particle pair: d = r_i - r_j (minimum image), dist = |d| > 0, the
 /// velocities by components, w the spins. `with_r_eff` = false leaves r_eff at 0 for laws that
-/// do not use it (it saves a division). `share`: overlap_share of the lever-arm convention.
+/// do not use it (it saves a division). `shares`: the lever-arm convention's (lever_shares).
 template <class R>
 ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_j, R vx_i, R vy_i,
                                    R vx_j, R vy_j, R w_i, R w_j, bool with_r_eff = true,
-                                   double share = 0.5) {
+                                   LeverShares shares = {}) {
   ContactGeometryOf<R> g;
   const R inverse = 1.0 / dist;
   g.normal_x = inverse * dx;
@@ -53,31 +92,34 @@ ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_
   g.overlap = r_i + r_j - dist;
   g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : R{};
   g.m_eff = m_i * m_j / (m_i + m_j);
-  g.arm_i = r_i - share * g.overlap;
-  g.arm_j = r_j - share * g.overlap;
+  g.arm_i = r_i - shares.torque * g.overlap;
+  g.arm_j = r_j - shares.torque * g.overlap;
+  // the same arms, to the bit, where the convention takes the velocity there too
+  const R reach_i = r_i - shares.velocity * g.overlap, reach_j = r_j - shares.velocity * g.overlap;
   const R dvx = vx_i - vx_j, dvy = vy_i - vy_j;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
-  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * g.arm_i + w_j * g.arm_j);
+  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * reach_i + w_j * reach_j);
   return g;
 }
 
 /// Geometry of a particle against the nearest point c of a wall: d = r_i - c, dist = |d| > 0, the
 /// wall's velocity (vx_wall, vy_wall) at c. The wall has infinite radius and mass: r_eff = R,
-/// m_eff = m. `share`: as in pair_geometry.
+/// m_eff = m. `shares`: as in pair_geometry.
 template <class R>
 ContactGeometryOf<R> wall_geometry(R dx, R dy, R dist, R r_i, R m_i, R vx_i, R vy_i, R w_i,
-                                   R vx_wall, R vy_wall, double share = 0.5) {
+                                   R vx_wall, R vy_wall, LeverShares shares = {}) {
   ContactGeometryOf<R> g;
   g.normal_x = dx / dist;
   g.normal_y = dy / dist;
   g.overlap = r_i - dist;
   g.r_eff = r_i;
   g.m_eff = m_i;
-  g.arm_i = r_i - share * g.overlap;
+  g.arm_i = r_i - shares.torque * g.overlap;
   g.arm_j = R{};
+  const R reach_i = r_i - shares.velocity * g.overlap;
   const R dvx = vx_i - vx_wall, dvy = vy_i - vy_wall;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
-  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - w_i * g.arm_i;
+  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - w_i * reach_i;
   return g;
 }
 

@@ -79,7 +79,7 @@ double gap(const Simulation& s) {
 double slip(const Simulation& s, LeverArm arm) {
   const auto& p = s.world().particles;
   const double overlap = std::max(0.0, -gap(s));
-  const double lever = p.radius[0] - overlap_share(arm) * overlap;
+  const double lever = p.radius[0] - lever_shares(arm).torque * overlap;
   return p.velocity[0].x + p.angular_velocity[0] * lever;
 }
 

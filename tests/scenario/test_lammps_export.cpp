@@ -130,9 +130,11 @@ TEST(LammpsExport, RefusesWhatLammpsCannotExpress) {
       refusal("frost_front", {"simulation.tangential_law=coulomb", "geometry.walls=particles"})
           .find("key 'frost.model'"),
       std::string::npos);
-  EXPECT_NE(refusal("collisions", {"simulation.lever_arm=radius"})
-                .find("key 'simulation.lever_arm': the lever arms at the radius"),
-            std::string::npos);
+  for (const char* arm : {"radius", "granular"})
+    EXPECT_NE(refusal("collisions", {std::string("simulation.lever_arm=") + arm})
+                  .find(std::string("key 'simulation.lever_arm': the lever arms '") + arm +
+                        "' are a convention of LAMMPS' own granular styles"),
+              std::string::npos);
   EXPECT_EQ(refusal("collisions", {}), "(not refused)");
 }
 

@@ -116,9 +116,8 @@ void read_simulation(TableReader& r, SimulationSection& s) {
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
   s.verlet_velocity =
       parse_verlet_velocity(r.choice("verlet_velocity", "predicted", {"predicted", "half_step"}));
-  s.lever_arm = r.choice("lever_arm", "contact_point", {"contact_point", "radius"}) == "radius"
-                    ? LeverArm::radius
-                    : LeverArm::contact_point;
+  s.lever_arm = parse_lever_arm(
+      r.choice("lever_arm", "contact_point", {"contact_point", "radius", "granular"}));
   s.normal_law = parse_normal_law(r.choice("normal_law", "linear", NormalLaws::names));
   const std::string damping = r.choice("linear_damping", "never_attractive", linear_damping_names);
   for (std::size_t k = 0; k < linear_damping_names.size(); ++k)

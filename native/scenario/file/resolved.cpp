@@ -87,7 +87,7 @@ toml::table simulation_table(const SimulationSection& sim) {
   t.insert("timestep_factor", sim.timestep_factor);
   t.insert("integrator", std::string(to_string(sim.integrator)));
   t.insert("verlet_velocity", std::string(to_string(sim.verlet_velocity)));
-  t.insert("lever_arm", sim.lever_arm == LeverArm::radius ? "radius" : "contact_point");
+  t.insert("lever_arm", std::string(to_string(sim.lever_arm)));
   t.insert("normal_law", std::string(name_of(sim.normal_law)));
   t.insert("linear_damping", std::string(to_string(sim.linear_damping)));
   t.insert("tangential_law", std::string(name_of(sim.tangential_law)));
