@@ -13,9 +13,9 @@ the deck export writes). Each case runs in:
   with velocity Verlet and the native default (predicted), and with Gear;
 - LAMMPS with pair_style granthesis (talus-lmp), on 1 rank and on 2, from the deck that
   `talus export lammps` writes of the same scenario;
-- where tolerances.toml says `gran_hooke = true`, LAMMPS' own gran/hooke with limit_damping in
-  that deck in place of granthesis (an implementation independent of src/talus), against the
-  native engine with gran/hooke's lever arms (simulation.lever_arm = radius) and the default.
+- where tolerances.toml says `gran_hooke = true` or `granular = true`, LAMMPS' own gran/hooke or
+  pair_style granular (with fix wall/gran) in place of granthesis, independent of src/talus
+  (validation/independent.py), against the native engine with their conventions.
 
 Every grain is tracked at full precision in both (track.csv, the LAMMPS dump); the trajectories
 are compared by id at the common times: the largest and the RMS position difference, in mean
@@ -27,15 +27,11 @@ Long cases are also compared by their statistics, each with its standard error: 
 packing fraction, the coordination, and any number `talus analyze` gives, P(f/<f>)'s tail and the
 segregation index among them), taken by the same code from the native snapshots and from the
 LAMMPS run made into a talus run folder (validation/run_folder.py), over the case's seed and
-those of [analysis] seeds. Native Verlet (half step) must pass Welch's t test against LAMMPS at
-the false-alarm rate of a normal |z| of z_max (Student's t with the degrees of freedom of the
-blocks, strips and seeds behind the errors); native Gear is reported beside them. A comparison
-with no bound (a chaotic case's `*_until = 0`, no z_max) is a measurement: reported, never a
-pass.
+those of [analysis] seeds: native Verlet (half step) must pass Welch's t test against LAMMPS
+(measures.t_bound); native Gear is reported. A comparison with no bound is a measurement.
 
-The summary (validation/results/index.html, opening offline) and a chart of
-the differences per case go to --out; a line per comparison is printed as it goes, and the exit
-status is 1 if any comparison fails its bound.
+The summary (index.html, opening offline) and charts go to --out; a line per comparison is
+printed as it goes; the exit status is 1 if any comparison fails its bound (docs/validation.md).
 """
 import argparse
 import json
@@ -49,6 +45,8 @@ import tomllib
 import numpy as np
 
 from crosscheck_report import difference_chart, force_chart, statistics_chart, summary
+from independent import gran_hooke_lines, granular_lines, rewrite_deck
+from mutations import MUTATIONS, NATIVE_MUTATIONS, mutate_deck
 from measures import block_mean, combined, measure, t_bound, welch
 from run_folder import add_analysis_dumps, first_frame, frost_heaves, lammps_run_folder
 from trajectories import differences, read_dump, read_lammps_thermo, read_track
@@ -57,7 +55,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASES = os.path.join(ROOT, "inputs", "validation")
 # the cases the default test suite runs (seconds each on 2 cores)
 QUICK = {"two_disks_linear_headon", "two_disks_linear_oblique", "two_disks_hertz_headon",
-         "two_disks_hertz_oblique", "two_disks_hooke_oblique", "collisions", "settling_1000"}
+         "two_disks_hertz_oblique", "two_disks_hooke_oblique", "collisions", "settling_1000",
+         "walls_hertz_mindlin", "drum_linear_cundall", "two_disks_granular_oblique"}
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
 
@@ -79,8 +78,9 @@ def run(command, cwd=None):
 
 
 class Case:
-    def __init__(self, name, out, build):
+    def __init__(self, name, out, build, mutation=None):
         self.name, self.folder = name, os.path.join(CASES, name)
+        self.mutation = mutation  # a key of MUTATIONS, or None
         self.out = os.path.join(out, name)
         self.talus = os.path.join(build, "native", "talus")
         self.lmp = os.path.join(build, "lammps-package", "talus-lmp")
@@ -171,6 +171,8 @@ class Case:
         folder = os.path.join(self.out, name or f"lammps-{ranks}")
         shutil.rmtree(folder, ignore_errors=True)
         shutil.copytree(deck_dir, folder)
+        if self.mutation in MUTATIONS and self.mutation not in NATIVE_MUTATIONS:
+            mutate_deck(folder, self.deck_name, self.mutation, self.radius)
         command = ["mpirun", "--oversubscribe", "-np", str(ranks), self.lmp, "-in",
                    f"in.{self.deck_name}", "-var", "snapshot_every", str(every), "-log",
                    "log.lammps", "-screen", "none"]
@@ -216,7 +218,8 @@ class Case:
                      if self.analysis else [])
         half, wall_h, folder = self.native("native-verlet-half_step",
                                            ["simulation.integrator=verlet",
-                                            "simulation.verlet_velocity=half_step"] + snapshots)
+                                            "simulation.verlet_velocity=half_step"] + snapshots
+                                           + NATIVE_MUTATIONS.get(self.mutation, []))
         with open(os.path.join(folder, "run.json")) as f:
             info = json.load(f)
         self.dt, steps, n = info["timestep"], info["steps"], info["particles"]
@@ -256,8 +259,9 @@ class Case:
         curves["Verlet: skin of a mean radius - automatic"] = self.compare(
             "native Verlet (half_step), a skin of a mean radius against the automatic one", skin,
             half, "rounding", "rounding")
-        if self.tolerances["trajectory"].get("gran_hooke", False):
-            curves.update(self.gran_hooke(deck, every, half))
+        for style, key in (("gran/hooke", "gran_hooke"), ("granular", "granular")):
+            if self.tolerances["trajectory"].get(key, False):
+                curves.update(self.independent(deck, every, half, style))
         if "statistics" in self.tolerances:
             self.statistics()
         if "measures" in self.tolerances:
@@ -322,44 +326,34 @@ class Case:
         print(f"{'ok  ' if passed else 'FAIL'} {self.name}: freeze times against fix frost/heave: "
               f"largest difference {worst:.3g} s ({note})")
 
-    def gran_hooke_pair(self):
-        """LAMMPS' gran/hooke line for the case's one material, which must give its dampers as
-        rates (gran/hooke takes one gamma_n for every pair; a restitution is derived per pair)."""
-        materials = self.scenario["materials"]
-        m = materials[0]
-        if len(materials) != 1 or "normal_damping_rate" not in m or "restitution" in m:
-            sys.exit(f"{self.name}: [gran_hooke] needs one material with normal_damping_rate "
-                     "(gran/hooke has one gamma_n for every pair)")
-        law = self.scenario["simulation"]
-        if (law.get("normal_law"), law.get("tangential_law")) != ("linear", "coulomb"):
-            sys.exit(f"{self.name}: [gran_hooke] needs normal_law = linear and "
-                     "tangential_law = coulomb, the laws gran/hooke has")
-        # Kn Kt gamma_n gamma_t xmu dampflag: Kt unused without history; limit_damping: never
-        # attractive, as the native law
-        return (f"pair_style gran/hooke {m['normal_stiffness']!r} NULL "
-                f"{m['normal_damping_rate']!r} {m['tangential_damping']!r} {m['friction']!r} 1 "
-                "limit_damping\npair_coeff * *\n")
-
-    def gran_hooke(self, deck, every, half):
-        """The case in LAMMPS' own gran/hooke: the exported deck with its pair lines replaced,
-        against native Verlet with gran/hooke's lever arm (the radius) and with the default."""
-        hooke = os.path.join(self.out, "deck-gran-hooke")
-        shutil.rmtree(hooke, ignore_errors=True)
-        shutil.copytree(deck, hooke)
-        path = os.path.join(hooke, f"in.{self.deck_name}")
-        with open(path) as f:
-            lines = f.read().splitlines(keepends=True)
-        kept = [line for line in lines if not line.startswith(("pair_style", "pair_coeff"))]
-        at = next(k for k, line in enumerate(lines) if line.startswith("pair_style"))
-        kept.insert(at, self.gran_hooke_pair())
-        with open(path, "w") as f:
-            f.writelines(kept)
-        folder = os.path.join(self.out, "lammps-gran-hooke")
+    def independent(self, deck, every, half, style):
+        """The case in LAMMPS' own `style` (validation/independent.py): the exported deck
+        rewritten for it, against native Verlet (half step) with that style's conventions; for
+        gran/hooke, whose lever arms are at the radius, also with the native default."""
+        name = style.replace("/", "-")
+        rewritten = os.path.join(self.out, f"deck-{name}")
+        shutil.rmtree(rewritten, ignore_errors=True)
+        shutil.copytree(deck, rewritten)
+        path = os.path.join(rewritten, f"in.{self.deck_name}")
+        if style == "gran/hooke":
+            rewrite_deck(path, gran_hooke_lines(self.name, self.scenario))
+        else:
+            rewrite_deck(path, *granular_lines(self.name, self.scenario, os.path.join(
+                rewritten, f"masses.{self.deck_name}")))
+        folder = os.path.join(self.out, f"lammps-{name}")
         shutil.rmtree(folder, ignore_errors=True)
-        shutil.copytree(hooke, folder)
+        shutil.copytree(rewritten, folder)
         run([self.lmp, "-in", f"in.{self.deck_name}", "-var", "snapshot_every", str(every), "-log",
              "log.lammps", "-screen", "none"], cwd=folder)
         lmp = read_dump(os.path.join(folder, f"dump.{self.deck_name}.lammpstrj"), self.dt)
+        if style == "granular":  # its spins' velocity at the radius, its torques at R - xi/2
+            native, _, _ = self.native("native-verlet-half_step-granular",
+                                       ["simulation.integrator=verlet",
+                                        "simulation.verlet_velocity=half_step",
+                                        "simulation.lever_arm=granular"])
+            return {"Verlet (lever arms granular) - granular": self.compare(
+                "native Verlet (half_step, lever_arm = granular) against LAMMPS pair_style "
+                "granular, fix wall/gran", native, lmp, "independent", "independent")}
         radius, _, _ = self.native("native-verlet-half_step-radius",
                                    ["simulation.integrator=verlet",
                                     "simulation.verlet_velocity=half_step",
@@ -466,6 +460,9 @@ def main():
     parser.add_argument("--ranks", type=int, default=2, help="LAMMPS' second run's ranks")
     parser.add_argument("--build", default=os.path.join(ROOT, "build"), help="the build folder")
     parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results"))
+    parser.add_argument("--mutate", choices=sorted(MUTATIONS),
+                        help="put a small error into one engine, which the cross-check must "
+                        "find: " + "; ".join(f"{k}: {v}" for k, v in MUTATIONS.items()))
     parser.add_argument("--write-decks", action="store_true",
                         help="write each case's LAMMPS deck into inputs/validation/CASE/lammps "
                         "(the committed deck every run checks) and run nothing")
@@ -491,7 +488,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     cases, good = [], True
     for name in names:
-        c = Case(name, args.out, args.build)
+        c = Case(name, args.out, args.build, args.mutate)
         good = c.run_all(args.ranks) and good
         cases.append(c)
     summary(cases, args.out)
