@@ -165,7 +165,7 @@ class Case:
                 f"with validation/crosscheck.py --write-decks {self.name}")
         self.rows.append((f"inputs/validation/{self.name}/lammps is talus export's deck now",
                           float(len(differ)), 0.0, passed, note))
-        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: committed LAMMPS deck: {note}")
+        print(f"{mark(passed)} {self.name}: committed LAMMPS deck: {note}")
 
     def lammps(self, ranks, deck_dir, every, name=None):
         folder = os.path.join(self.out, name or f"lammps-{ranks}")
@@ -302,7 +302,7 @@ class Case:
                 f"coordination {max((a for a, _ in pairs), default=0.0):.4g}")
         self.rows.append(("coordination, native Verlet (half_step) against LAMMPS thermo", worst,
                           1e-6, passed, note))
-        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: coordination against LAMMPS' thermo: "
+        print(f"{mark(passed)} {self.name}: coordination against LAMMPS' thermo: "
               f"largest difference {worst:.3g} (bound 1e-06; {note})")
 
     def compare_freezes(self, t, largest):
@@ -323,7 +323,7 @@ class Case:
                 f"{', '.join(f'{x:.4g}' for x in lammps)} s")
         self.rows.append(("freeze times, native Verlet (half_step) against LAMMPS fix frost/heave",
                           worst, 1e-9 * max(native[-1], 1e-300), passed, note))
-        print(f"{'ok  ' if passed else 'FAIL'} {self.name}: freeze times against fix frost/heave: "
+        print(f"{mark(passed)} {self.name}: freeze times against fix frost/heave: "
               f"largest difference {worst:.3g} s ({note})")
 
     def independent(self, deck, every, half, style):
