@@ -2,7 +2,8 @@
 """The cross-check can fail: each small error of validation/crosscheck.py's MUTATIONS, put into
 one engine on a quick case, must make its comparison of native Verlet (half step) with LAMMPS
 fail (1e-6 relative in a stiffness or a mass, 1e-6 radii in a wall's place, the lever arm at the
-radius, the predicted damper velocity).
+radius, the predicted damper velocity); on a case that also runs LAMMPS' own pair_style granular,
+that comparison must fail too.
 
 Usage: mutation_test.py BUILD OUT"""
 import os
@@ -17,8 +18,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 CASES = [("coefficient", "two_disks_linear_oblique"), ("coefficient", "two_disks_hertz_oblique"),
          ("mass", "two_disks_linear_headon"), ("wall", "walls_hertz_mindlin"),
          ("lever_arm", "two_disks_linear_oblique"),
-         ("damper_velocity", "two_disks_linear_oblique")]
+         ("damper_velocity", "two_disks_linear_oblique"),
+         ("mass", "two_disks_granular_oblique")]
 ROW = "native Verlet (half_step) against LAMMPS granthesis, 1 rank"
+# and, where the case runs LAMMPS' own pair_style granular, its comparison too
+GRANULAR_ROW = ("native Verlet (half_step, lever_arm = granular) against LAMMPS pair_style "
+                "granular, fix wall/gran")
 
 
 def main():
@@ -34,11 +39,13 @@ def main():
              "--out", os.path.join(out, f"{mutation}-{case}")],
             capture_output=True, text=True, timeout=600)
         printed = done.stdout + done.stderr
-        found = re.search(rf"^FAIL {re.escape(case)}: {re.escape(ROW)}: largest (\S+) radii",
-                          printed, flags=re.M)
-        if done.returncode == 1 and found:
-            print(f"ok: {mutation} on {case}: the comparison fails, largest difference "
-                  f"{found.group(1)} mean radii")
+        rows = [ROW] + ([GRANULAR_ROW] if "granular" in case else [])
+        found = [re.search(rf"^FAIL {re.escape(case)}: {re.escape(row)}: largest (\S+) radii",
+                           printed, flags=re.M) for row in rows]
+        if done.returncode == 1 and all(found):
+            which = "comparisons fail" if len(rows) > 1 else "comparison fails"
+            print(f"ok: {mutation} on {case}: the {which}, largest difference "
+                  f"{', '.join(f.group(1) for f in found)} mean radii")
         else:
             missed.append(f"{mutation} on {case}")
             print(f"MISSED: {mutation} on {case} (exit {done.returncode}):\n{printed[-3000:]}")
