@@ -160,6 +160,31 @@ double ContactEventLog::approach_before(const Simulation& sim, const ContactReco
   return -dot(v_i - v_j, d / length);
 }
 
+std::vector<ContactEvent> ContactEventLog::renumber_walls(const std::vector<std::int64_t>& to) {
+  std::map<Key, Open> kept;
+  std::vector<std::pair<std::uint64_t, ContactEvent>> ended;
+  for (auto& [key, o] : open_) {
+    if (key.second >= 0) { // a pair
+      kept.emplace(key, o);
+      continue;
+    }
+    const auto old = static_cast<std::size_t>(-1 - key.second);
+    const std::int64_t now = old < to.size() ? to[old] : -1;
+    if (now < 0) {
+      ended.emplace_back(o.order, o.event);
+      continue;
+    }
+    o.event.wall = now;
+    kept.emplace(Key{key.first, -1 - now}, o);
+  }
+  open_ = std::move(kept);
+  std::sort(ended.begin(), ended.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ContactEvent> out;
+  for (auto& [order, e] : ended) out.push_back(e);
+  return out;
+}
+
 std::vector<ContactEvent> ContactEventLog::open_events() const {
   std::vector<std::pair<std::uint64_t, ContactEvent>> open;
   for (const auto& [key, o] : open_) {

@@ -39,6 +39,10 @@ public:
   /// Takes the velocities of the current state as those of the last look: a log that starts or
   /// resumes with a run calls it once, observe() after every look.
   void remember(const Simulation& sim);
+  /// The world's walls were removed or added between looks (`to`: each old wall's new index, -1
+  /// where it was removed): the contacts with a removed wall end at the last look (where the
+  /// wall went) and are returned, in the order they opened; the others follow their wall.
+  std::vector<ContactEvent> renumber_walls(const std::vector<std::int64_t>& to);
   /// The log's state as numbers, for a checkpoint, and back: a resumed run's events are the
   /// same as an uninterrupted one's.
   std::vector<double> save() const;

@@ -97,6 +97,15 @@ void EnergyLedger::observe(const Simulation& sim) {
   last_time_ = sim.time();
 }
 
+void EnergyLedger::changed(double total_before, const Simulation& sim) {
+  const ContactPowers now = contact_powers(sim);
+  start_total_ += energies(sim).total() - total_before;
+  // friction's dissipation is its work less the springs' energy gained: a spring the change
+  // took away was not dissipated
+  start_tangential_elastic_ += now.tangential_elastic - last_.tangential_elastic;
+  last_ = now;
+}
+
 LedgerRow EnergyLedger::row(const Energies& e) {
   LedgerRow r;
   r.dissipated_damper = damper_;

@@ -53,6 +53,11 @@ public:
   void start(const Simulation& sim);
   /// Takes in the step since the last look (trapezoidal rule on the powers).
   void observe(const Simulation& sim);
+  /// The run was changed since the last look, at the same time (gravity, materials, the
+  /// tangential law, walls removed with the springs of their contacts): the energy the change
+  /// put in or took out, `sim`'s total less `total_before` (J), is the change's, not an
+  /// imbalance, and the powers go on from `sim`.
+  void changed(double total_before, const Simulation& sim);
   /// The ledger at the last look, with that state's energies, as a thermo row: the growth is
   /// measured against the rows before.
   LedgerRow row(const Energies& e);

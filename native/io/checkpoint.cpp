@@ -263,6 +263,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.pod(c.state.time), w.pod(c.state.steps);
   write_members(w, c.config);
   w.pod(static_cast<std::uint8_t>(c.config.linear_damping)); // from format 12
+  w.pod(c.state.clock_time), w.pod(c.state.clock_step);      // from format 13
   w.str(c.run_data);
 
   return seal_checkpoint(w.bytes());
@@ -332,6 +333,11 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
     c.config.linear_damping = static_cast<LinearDamping>(damping);
   } else {
     c.config.linear_damping = LinearDamping::never_attractive;
+  }
+  if (version >= 13) { // before, no run changed its timestep: the clock counted from 0
+    c.state.clock_time = r.pod<double>();
+    c.state.clock_step = r.pod<std::uint64_t>();
+    if (c.state.clock_step > c.state.steps) r.fail("the timestep's clock starts after the state");
   }
   c.run_data = r.str();
   if (!r.done()) r.fail("unexpected bytes at the end");

@@ -30,6 +30,12 @@ void ContactOutput::finish(RunContext&) {
   for (const ContactEvent& e : log_.open_events()) *out_ << contact_event_row(e);
 }
 
+void ContactOutput::changed(RunContext& c, const WorldChange& w) {
+  if (w.wall_index.empty()) return;
+  for (const ContactEvent& e : log_.renumber_walls(w.wall_index)) *out_ << contact_event_row(e);
+  log_.remember(c.sim);
+}
+
 LedgerObserver::LedgerObserver(RunContext& c) {
   if (!c.book.ledger_state.empty()) ledger_.load(c.book.ledger_state);
 }

@@ -30,7 +30,7 @@ void log_frost(RunContext& c, std::ostream& log, const char* event) {
 } // namespace
 
 UniformFreezeEvent::UniformFreezeEvent(RunContext& c)
-    : thermo_every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)) {}
+    : thermo_every_(every_of(c, c.scenario.output.thermo_interval)) {}
 
 void UniformFreezeEvent::open(RunContext& c) {
   log_ = &c.files.open("frost.csv");
@@ -50,14 +50,15 @@ void UniformFreezeEvent::look(RunContext& c) {
 }
 
 FreezingFrontEvent::FreezingFrontEvent(RunContext& c)
-    : thermo_every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)),
+    : thermo_every_(every_of(c, c.scenario.output.thermo_interval)),
       front_(front_parameters(c.scenario, c.sim.world().particles, c.book.bounds)) {
   if (!c.book.front_state.empty()) front_.load(c.book.front_state, c.sim.world().particles.size());
   // the fronts move a thousandth of the shorter phase at a time
   const double phase = std::min(c.scenario.frost.freeze_time, c.scenario.frost.thaw_time);
-  front_every_ = std::max<std::uint64_t>(
-      1, static_cast<std::uint64_t>(
-             std::clamp(std::floor(phase / 1000.0 / c.sim.config().timestep), 0.0, 1e18)));
+  front_every_ = {c.sim.clock_step(),
+                  std::max<std::uint64_t>(
+                      1, static_cast<std::uint64_t>(std::clamp(
+                             std::floor(phase / 1000.0 / c.sim.config().timestep), 0.0, 1e18)))};
 }
 
 void FreezingFrontEvent::open(RunContext& c) {
@@ -70,7 +71,7 @@ void FreezingFrontEvent::start(RunContext&) {
 
 void FreezingFrontEvent::look(RunContext& c) {
   const std::uint64_t k = c.sim.step_count();
-  if (k % thermo_every_ == 0 && front_.phase() == FrostFront::Phase::idle && at_rest(c)) {
+  if (thermo_every_.on(k) && front_.phase() == FrostFront::Phase::idle && at_rest(c)) {
     if (cycles_done(c)) {
       log_frost(c, *log_, "end");
       c.end = "cycles";
@@ -80,7 +81,7 @@ void FreezingFrontEvent::look(RunContext& c) {
     ++c.book.freezes;
     log_frost(c, *log_, "freeze");
   }
-  if (front_.phase() == FrostFront::Phase::idle || k % front_every_ != 0) return;
+  if (front_.phase() == FrostFront::Phase::idle || !front_every_.on(k)) return;
   if (!front_.advance(c.sim)) return;
   if (front_.phase() == FrostFront::Phase::thawing) {
     log_frost(c, *log_, "thaw");

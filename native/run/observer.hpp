@@ -23,14 +23,35 @@ inline constexpr std::uint64_t never = std::numeric_limits<std::uint64_t>::max()
 /// of 0 (off). An interval beyond any run is cut to a count no run reaches.
 std::uint64_t steps_of(double interval, double dt);
 
-/// The steps until `time` (s) at a timestep `dt` (s), rounded up; a count beyond any run is cut
-/// to one no run reaches.
-std::uint64_t steps_until(double time, double dt);
-
 /// The first multiple of `every` after `step` (`never` when every is 0).
 inline std::uint64_t next_multiple(std::uint64_t step, std::uint64_t every) {
   return every == 0 ? never : (step / every + 1) * every;
 }
+
+/// A look every `steps` steps counted from `origin`, the step the timestep in force started at
+/// (Simulation::clock_step): an interval's steps change with the timestep, and count from there.
+struct Every {
+  std::uint64_t origin = 0;
+  std::uint64_t steps = 0; ///< 0: never
+  /// The first step of the grid after `step` (`never` when steps is 0).
+  std::uint64_t next(std::uint64_t step) const {
+    return steps == 0 ? never : origin + next_multiple(step - origin, steps);
+  }
+  /// Whether `step` is on the grid.
+  bool on(std::uint64_t step) const { return steps != 0 && (step - origin) % steps == 0; }
+  /// How far `step` is past the grid's last step before it.
+  std::uint64_t past(std::uint64_t step) const { return steps == 0 ? 0 : (step - origin) % steps; }
+};
+
+struct RunContext;
+/// An interval of `interval` s as a grid of steps at the timestep in force, from its start.
+Every every_of(const RunContext& c, double interval);
+
+/// What a change (Run::change) did, for the events and observers whose state follows the world.
+struct WorldChange {
+  double energy_before = 0.0;           ///< J: the total energy just before, of the same state
+  std::vector<std::int64_t> wall_index; ///< each old wall's new index (-1: removed); empty: none
+};
 
 /// What the events and observers of one run share.
 struct RunContext {
@@ -68,6 +89,9 @@ public:
   virtual void finish(RunContext&) {}
   /// Its state into the checkpoint's book (restored by its constructor from the book it gets).
   virtual void save(RunBook&) const {}
+  /// The run was changed after this step's looks (or as a session starts): what its state must
+  /// follow (the observers are made again from their saved state after it).
+  virtual void changed(RunContext&, const WorldChange&) {}
 };
 
 } // namespace talus::run

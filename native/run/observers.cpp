@@ -13,8 +13,8 @@ std::uint64_t steps_of(double interval, double dt) {
       1, static_cast<std::uint64_t>(std::clamp(std::round(interval / dt), 0.0, 1e18)));
 }
 
-std::uint64_t steps_until(double time, double dt) {
-  return static_cast<std::uint64_t>(std::clamp(std::ceil(time / dt - 1e-9), 0.0, 1e18));
+Every every_of(const RunContext& c, double interval) {
+  return {c.sim.clock_step(), steps_of(interval, c.sim.config().timestep)};
 }
 
 std::vector<std::unique_ptr<Observer>> observers_for(RunContext& c, RunProgress& progress,

@@ -25,6 +25,7 @@ public:
   void look(RunContext& c) override;
   void finish(RunContext& c) override;
   void save(RunBook& b) const override { b.contact_state = log_.save(); }
+  void changed(RunContext& c, const WorldChange& w) override;
 
 private:
   ContactEventLog log_;
@@ -40,6 +41,9 @@ public:
   void start(RunContext& c) override { ledger_.start(c.sim); }
   void look(RunContext& c) override { ledger_.observe(c.sim); }
   void save(RunBook& b) const override { b.ledger_state = ledger_.save(); }
+  void changed(RunContext& c, const WorldChange& w) override {
+    ledger_.changed(w.energy_before, c.sim);
+  }
   /// The ledger's thermo columns at energies `e`; throws InstabilityError when energy grew.
   std::string thermo_columns(const RunContext& c, const Energies& e);
 
@@ -51,7 +55,7 @@ private:
 class ThermoObserver final : public Observer {
 public:
   ThermoObserver(RunContext& c, LedgerObserver* ledger);
-  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+  std::uint64_t next_look(std::uint64_t step) const override { return every_.next(step); }
   void open(RunContext& c) override;
   void start(RunContext& c) override;
   void look(RunContext& c) override { record(c); }
@@ -59,7 +63,7 @@ public:
 
 private:
   void record(RunContext& c);
-  std::uint64_t every_;
+  Every every_;
   LedgerObserver* ledger_;
   std::ostream* out_ = nullptr;
 };
@@ -68,7 +72,7 @@ private:
 class TrackObserver final : public Observer {
 public:
   explicit TrackObserver(RunContext& c);
-  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+  std::uint64_t next_look(std::uint64_t step) const override { return every_.next(step); }
   void open(RunContext& c) override;
   void start(RunContext& c) override;
   void look(RunContext& c) override { record(c); }
@@ -76,7 +80,7 @@ public:
 
 private:
   void record(RunContext& c);
-  std::uint64_t every_;
+  Every every_;
   std::ostream* out_ = nullptr;
 };
 
@@ -84,11 +88,11 @@ private:
 class ProgressObserver final : public Observer {
 public:
   ProgressObserver(RunContext& c, RunProgress& progress);
-  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+  std::uint64_t next_look(std::uint64_t step) const override { return every_.next(step); }
   void look(RunContext& c) override;
 
 private:
-  std::uint64_t every_;
+  Every every_;
   RunProgress& progress_;
 };
 
@@ -97,7 +101,7 @@ private:
 class SnapshotObserver final : public Observer {
 public:
   explicit SnapshotObserver(RunContext& c);
-  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+  std::uint64_t next_look(std::uint64_t step) const override { return every_.next(step); }
   void open(RunContext& c) override;
   void start(RunContext& c) override;
   void look(RunContext& c) override { write(c); }
@@ -108,8 +112,7 @@ public:
 private:
   void write(RunContext& c);
   void write_collections(RunContext& c) const;
-  std::uint64_t every_;
-  std::uint64_t end_step_ = 0; ///< the step of the end's snapshot, if it has one
+  Every every_;
   std::ostream* thesis_out_ = nullptr;
 };
 
@@ -118,15 +121,13 @@ private:
 class UniformFreezeEvent final : public Observer {
 public:
   explicit UniformFreezeEvent(RunContext& c);
-  std::uint64_t next_look(std::uint64_t step) const override {
-    return next_multiple(step, thermo_every_);
-  }
+  std::uint64_t next_look(std::uint64_t step) const override { return thermo_every_.next(step); }
   void open(RunContext& c) override;
   void start(RunContext& c) override;
   void look(RunContext& c) override;
 
 private:
-  std::uint64_t thermo_every_;
+  Every thermo_every_;
   std::ostream* log_ = nullptr;
 };
 
@@ -136,7 +137,7 @@ class FreezingFrontEvent final : public Observer {
 public:
   explicit FreezingFrontEvent(RunContext& c);
   std::uint64_t next_look(std::uint64_t step) const override {
-    return std::min(next_multiple(step, thermo_every_), next_multiple(step, front_every_));
+    return std::min(thermo_every_.next(step), front_every_.next(step));
   }
   void open(RunContext& c) override;
   void start(RunContext& c) override;
@@ -144,7 +145,7 @@ public:
   void save(RunBook& b) const override { b.front_state = front_.save(); }
 
 private:
-  std::uint64_t thermo_every_, front_every_;
+  Every thermo_every_, front_every_;
   FrostFront front_;
   std::ostream* log_ = nullptr;
 };
@@ -165,7 +166,7 @@ private:
   bool condition_holds(const RunContext& c) const;
   void end_stage(RunContext& c, const char* why);
   void write_row(const RunContext& c, const char* why); ///< stages.csv's row of the stage now
-  std::uint64_t thermo_every_;
+  Every thermo_every_;
   std::ostream* log_ = nullptr;
   const RunContext* c_;
 };

@@ -5,8 +5,7 @@
 namespace talus::run {
 
 ThermoObserver::ThermoObserver(RunContext& c, LedgerObserver* ledger)
-    : every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)),
-      ledger_(ledger) {}
+    : every_(every_of(c, c.scenario.output.thermo_interval)), ledger_(ledger) {}
 
 void ThermoObserver::open(RunContext& c) {
   out_ = &c.files.open("thermo.csv");
@@ -19,7 +18,7 @@ void ThermoObserver::start(RunContext& c) {
 
 void ThermoObserver::finish(RunContext& c) {
   // the end's state is always recorded, though the interval may not divide the duration
-  if (c.sim.step_count() % every_ != 0) record(c);
+  if (!every_.on(c.sim.step_count())) record(c);
 }
 
 void ThermoObserver::record(RunContext& c) {
@@ -31,8 +30,9 @@ void ThermoObserver::record(RunContext& c) {
 }
 
 TrackObserver::TrackObserver(RunContext& c)
-    : every_(std::max<std::uint64_t>(
-          1, steps_of(c.scenario.output.track_interval, c.sim.config().timestep))) {}
+    : every_{c.sim.clock_step(),
+             std::max<std::uint64_t>(
+                 1, steps_of(c.scenario.output.track_interval, c.sim.config().timestep))} {}
 
 void TrackObserver::open(RunContext& c) {
   out_ = &c.files.open("track.csv");
@@ -44,7 +44,7 @@ void TrackObserver::start(RunContext& c) {
 }
 
 void TrackObserver::finish(RunContext& c) {
-  if (c.sim.step_count() % every_ != 0) record(c);
+  if (!every_.on(c.sim.step_count())) record(c);
 }
 
 void TrackObserver::record(RunContext& c) {
@@ -52,8 +52,7 @@ void TrackObserver::record(RunContext& c) {
 }
 
 ProgressObserver::ProgressObserver(RunContext& c, RunProgress& progress)
-    : every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)),
-      progress_(progress) {}
+    : every_(every_of(c, c.scenario.output.thermo_interval)), progress_(progress) {}
 
 void ProgressObserver::look(RunContext& c) {
   const std::uint64_t k = c.sim.step_count();

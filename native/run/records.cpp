@@ -48,7 +48,8 @@ std::string thermo_header(const RunBook& book, bool ledger) {
                      "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
                      "packing_fraction";
   if (ledger) head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
-  for (const auto& [name, _] : book.groups) head += ",force_" + name + "_x,force_" + name + "_y";
+  for (const std::string& name : book.force_columns)
+    head += ",force_" + name + "_x,force_" + name + "_y";
   return head + "\n";
 }
 
@@ -81,8 +82,9 @@ double group_height(const Simulation& sim, const DriverTargets& g) {
 
 std::string group_force_columns(const Simulation& sim, const RunBook& book) {
   std::string out;
-  for (const auto& [name, g] : book.groups) {
-    const Vec2 f = group_force(sim, g);
+  for (const std::string& name : book.force_columns) {
+    const auto g = book.groups.find(name);
+    const Vec2 f = g == book.groups.end() ? Vec2{} : group_force(sim, g->second);
     out += fmt::format(",{:.9e},{:.9e}", f.x, f.y);
   }
   return out;
@@ -125,13 +127,10 @@ void write_snapshot_files(const fs::path& dir, const Simulation& sim, std::uint6
                           contacts_csv(sim));
 }
 
-void write_collections_of(const fs::path& dir, std::uint64_t snapshots, std::uint64_t every,
-                          std::uint64_t end_step, double dt, bool walls) {
-  // times of snapshot k: k * interval (snapshot 0 at t = 0), but for the end's, off the grid
+void write_collections_of(const fs::path& dir, const std::vector<double>& times, bool walls) {
   std::vector<std::pair<double, std::string>> particles, wall_files, contacts;
-  for (std::uint64_t k = 0; k < snapshots; ++k) {
-    const bool end = end_step && k + 1 == snapshots;
-    const double t = static_cast<double>(end ? end_step : k * every) * dt;
+  for (std::uint64_t k = 0; k < times.size(); ++k) {
+    const double t = times[k];
     particles.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("particles", k)));
     wall_files.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("walls", k)));
     contacts.emplace_back(t, fmt::format("snapshots/{}", snapshot_name("contacts", k)));

@@ -33,10 +33,9 @@ std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& 
 /// `with_contacts_csv` the contacts as CSV (output.contacts).
 void write_snapshot_files(const std::filesystem::path& dir, const Simulation& sim, std::uint64_t n,
                           bool with_contacts_csv);
-/// The ParaView collections of `snapshots` snapshots, taken every `every` steps of `dt`; the last
-/// one at step `end_step` when that is not 0 (the end's, off the grid).
-void write_collections_of(const std::filesystem::path& dir, std::uint64_t snapshots,
-                          std::uint64_t every, std::uint64_t end_step, double dt, bool walls);
+/// The ParaView collections of the snapshots taken at `times` (s), in order.
+void write_collections_of(const std::filesystem::path& dir, const std::vector<double>& times,
+                          bool walls);
 /// run.json: `wall` seconds over every session, of which the last took `session_wall` for
 /// `steps_done` steps; `ended`: why the run ended (docs/file-formats.md).
 std::string run_json(const Scenario& s, const Simulation& sim, const RunBook& book, double wall,

@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "analysis/observables.hpp"
 #include "render/snapshot_png.hpp"
 #include "run/observers.hpp"
 #include "run/records.hpp"
@@ -22,13 +23,12 @@ namespace {
 class CheckpointEvent final : public Observer {
 public:
   CheckpointEvent(RunContext& c, Run& run)
-      : every_(steps_of(c.scenario.output.checkpoint_interval, c.sim.config().timestep)),
-        run_(run) {}
-  std::uint64_t next_look(std::uint64_t step) const override { return next_multiple(step, every_); }
+      : every_(every_of(c, c.scenario.output.checkpoint_interval)), run_(run) {}
+  std::uint64_t next_look(std::uint64_t step) const override { return every_.next(step); }
   void look(RunContext&) override { run_.checkpoint(); }
 
 private:
-  std::uint64_t every_;
+  Every every_;
   Run& run_;
 };
 
@@ -53,10 +53,9 @@ Run::Run(const Scenario& s, Simulation sim, RunBook book, fs::path dir, RunContr
 
 // The run's length in steps, and where this session stops, from the scenario as it stands.
 void Run::set_length() {
-  const double dt = sim_.config().timestep;
-  c_.total_steps = steps_until(s_.simulation.duration, dt);
+  c_.total_steps = sim_.step_at(s_.simulation.duration);
   c_.stop_step =
-      o_.stop_at >= 0.0 ? std::min(c_.total_steps, steps_until(o_.stop_at, dt)) : c_.total_steps;
+      o_.stop_at >= 0.0 ? std::min(c_.total_steps, sim_.step_at(o_.stop_at)) : c_.total_steps;
   progress_.set_duration(s_.simulation.duration);
 }
 
@@ -213,7 +212,10 @@ void Run::change(const std::vector<std::string>& set, const std::string& source)
   std::vector<std::string> all = book_.overrides();
   all.insert(all.end(), set.begin(), set.end());
   Scenario next = o_.scenario_with(all);
-  apply_scenario_change(sim_, s_, next);
+  WorldChange done;
+  done.energy_before = energies(sim_).total();
+  done.wall_index = apply_scenario_change(sim_, s_, next, book_);
+  for (auto& o : observers_) o->changed(c_, done);
   book_.changes.push_back({sim_.step_count(), sim_.time(), source, set});
   std::ostream& log = files_.open("changes.csv", "time,step,source,change\n");
   const auto quoted = [](std::string text) { // a CSV field: its quotes doubled

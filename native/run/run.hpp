@@ -65,9 +65,11 @@ public:
   /// Writes a checkpoint of the engine's state and the run's book now (the previous one kept).
   void checkpoint();
   /// Changes the run from this step on: the scenario with every change so far and `set`; what
-  /// changed in the engine (gravity, materials, the tangential law) is applied to it, and the
-  /// events and observers follow the new output intervals. Recorded in the book (saved with
-  /// the next checkpoint) and in changes.csv. Throws ScenarioError for a change that cannot be.
+  /// changed in the engine (gravity, materials, the tangential law, drivers, the timestep,
+  /// walls) is applied to it (apply_scenario_change), the events and observers are told
+  /// (Observer::changed) and follow the new output intervals. Recorded in the book (saved with
+  /// the next checkpoint) and in changes.csv. Throws ScenarioError for a change that cannot be,
+  /// with the run as it was.
   void change(const std::vector<std::string>& set, const std::string& source);
 
 private:

@@ -79,6 +79,7 @@ RunBook RunBook::of(const BuiltScenario& built) {
   RunBook book;
   book.tracked = built.tracked;
   book.groups = built.groups;
+  for (const auto& [name, _] : built.groups) book.force_columns.push_back(name);
   book.fill = built.fill;
   book.bounds = built.bounds;
   book.settle_time = built.settle_time;
@@ -96,13 +97,16 @@ std::string RunBook::encode() const {
     << fill.hi.y << "\nbounds " << bounds.lo.x << " " << bounds.lo.y << " " << bounds.hi.x << " "
     << bounds.hi.y << "\ntracked";
   for (const auto t : tracked) o << " " << t;
+  o << "\nforce_columns";
+  for (const std::string& name : force_columns) o << " " << name;
+  write_numbers(o << "\nsnapshot_times ", snapshot_times);
   write_numbers(o << "\nfront_state ", front_state);
   write_numbers(o << "\ncontact_state ", contact_state);
   write_numbers(o << "\nledger_state ", ledger_state);
   o << "\n";
   if (!ended.empty()) o << "ended " << ended << "\n";
-  o << "stage " << stage << " " << stage_start << "\nscenario_hash " << scenario_hash << "\nrun_id "
-    << run_id << "\n";
+  o << "stage " << stage << " " << stage_start << " " << stage_start_time << "\nscenario_hash "
+    << scenario_hash << "\nrun_id " << run_id << "\n";
   for (const RunChange& c : changes) {
     o << "change " << c.step << " " << c.time << " " << escaped(c.source) << " " << c.set.size();
     for (const std::string& x : c.set) o << " " << escaped(x);
@@ -120,6 +124,7 @@ std::string RunBook::encode() const {
 
 RunBook RunBook::decode(const std::string& text) {
   RunBook b;
+  bool columns_given = false;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     std::istringstream l(line);
@@ -148,9 +153,11 @@ RunBook RunBook::decode(const std::string& text) {
       l >> b.fill.lo.x >> b.fill.lo.y >> b.fill.hi.x >> b.fill.hi.y;
     else if (key == "bounds")
       l >> b.bounds.lo.x >> b.bounds.lo.y >> b.bounds.hi.x >> b.bounds.hi.y;
-    else if (key == "stage")
+    else if (key == "stage") {
       l >> b.stage >> b.stage_start;
-    else if (key == "scenario_hash")
+      if (!(l >> b.stage_start_time)) // a book of a talus whose timestep never changed
+        b.stage_start_time = std::numeric_limits<double>::quiet_NaN();
+    } else if (key == "scenario_hash")
       l >> b.scenario_hash;
     else if (key == "run_id")
       l >> b.run_id;
@@ -162,6 +169,11 @@ RunBook RunBook::decode(const std::string& text) {
       c.source = unescaped(word);
       for (std::size_t k = 0; k < n && l >> word; ++k) c.set.push_back(unescaped(word));
       b.changes.push_back(std::move(c));
+    } else if (key == "force_columns") {
+      columns_given = true;
+      for (std::string name; l >> name;) b.force_columns.push_back(name);
+    } else if (key == "snapshot_times") {
+      b.snapshot_times = read_numbers(l);
     } else if (key == "front_state")
       b.front_state = read_numbers(l);
     else if (key == "contact_state")
@@ -182,6 +194,8 @@ RunBook RunBook::decode(const std::string& text) {
       for (auto& i : g.segments) l >> i;
     }
   }
+  if (!columns_given) // a book of a talus whose groups never changed: they are its columns
+    for (const auto& [name, _] : b.groups) b.force_columns.push_back(name);
   return b;
 }
 

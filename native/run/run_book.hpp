@@ -22,6 +22,7 @@ struct RunChange {
 struct RunBook {
   std::map<std::string, std::uint64_t> file_bytes; ///< output files' sizes at the checkpoint
   std::uint64_t snapshots = 0;                     ///< snapshots written
+  std::vector<double> snapshot_times;              ///< s: the time of each (older books: none)
   std::uint64_t freezes = 0;                       ///< frost: freezes done
   double last_freeze = 0.0;                        ///< s: the last freeze (front: thaw's end)
   std::vector<double> front_state;                 ///< frost front model (FrostFront::save)
@@ -33,10 +34,14 @@ struct RunBook {
   double collision_time = 0.0;
   std::vector<std::uint32_t> tracked;
   std::map<std::string, DriverTargets> groups;
+  /// The wall groups of thermo.csv's force columns, those the run started with: a group a change
+  /// took away reads 0 from then on, the walls a change put up count in "walls".
+  std::vector<std::string> force_columns;
   Rect fill;
   Rect bounds;
   std::size_t stage = 0;           ///< the stage under way ([[stages]]; = their count: past them)
   std::uint64_t stage_start = 0;   ///< the step it started at
+  double stage_start_time = 0.0;   ///< s: the time it started at
   std::vector<RunChange> changes;  ///< in the order they were made
   std::uint64_t scenario_hash = 0; ///< of the run folder's scenario.toml (0: not recorded)
   std::uint64_t run_id = 0;        ///< the run's identity (run_id_line; 0: not recorded)

@@ -6,7 +6,12 @@
 namespace talus::run {
 
 SnapshotObserver::SnapshotObserver(RunContext& c)
-    : every_(steps_of(c.scenario.output.snapshot_interval, c.sim.config().timestep)) {}
+    : every_(every_of(c, c.scenario.output.snapshot_interval)) {
+  // a book of a talus that kept no times: its snapshots were on the grid from t = 0
+  std::vector<double>& times = c.book.snapshot_times;
+  for (std::uint64_t k = times.size(); k < c.book.snapshots; ++k)
+    times.push_back(static_cast<double>(k * every_.steps) * c.sim.config().timestep);
+}
 
 void SnapshotObserver::open(RunContext& c) {
   if (c.scenario.output.thesis_out) thesis_out_ = &c.files.open("run.out");
@@ -20,26 +25,28 @@ void SnapshotObserver::start(RunContext& c) {
 void SnapshotObserver::finish(RunContext& c) {
   // a snapshot less than half an interval before the end stands for it: no near-twin frames
   const std::uint64_t k = c.sim.step_count();
-  if (every_ && k % every_ >= (every_ + 1) / 2) {
-    end_step_ = k;
+  if (every_.steps && every_.past(k) >= (every_.steps + 1) / 2) {
     write(c);
   }
 }
 
 void SnapshotObserver::cut_back(RunContext& c) {
-  end_step_ = 0; // an end snapshot, if written, was after the checkpoint
   write_collections(c);
 }
 
 void SnapshotObserver::write(RunContext& c) {
+  std::vector<double>& times = c.book.snapshot_times;
+  times.resize(c.book.snapshots); // those after a checkpoint the outputs were cut back to go
+  times.push_back(c.sim.time());
   write_snapshot_files(c.files.dir(), c.sim, c.book.snapshots++, c.scenario.output.contacts);
   write_collections(c);
   if (thesis_out_) *thesis_out_ << thesis_out_block(c.sim);
 }
 
 void SnapshotObserver::write_collections(RunContext& c) const {
-  write_collections_of(c.files.dir(), c.book.snapshots, every_, end_step_, c.sim.config().timestep,
-                       !c.sim.world().walls.empty());
+  std::vector<double> times = c.book.snapshot_times;
+  times.resize(c.book.snapshots);
+  write_collections_of(c.files.dir(), times, !c.sim.world().walls.empty());
 }
 
 } // namespace talus::run

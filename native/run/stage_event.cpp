@@ -1,4 +1,6 @@
 // The stages of an experiment run in stages ([[stages]], StageSection).
+#include <cmath>
+
 #include <fmt/core.h>
 
 #include "frost/uniform_freeze.hpp"
@@ -9,15 +11,22 @@ namespace talus::run {
 
 namespace {
 
-// The step a stage that started at `start` reaches its duration, rounded up.
-std::uint64_t end_of(std::uint64_t start, double duration, double dt) {
-  return start + std::max<std::uint64_t>(1, steps_until(duration, dt));
+// The step at which the stage under way reaches `duration`, rounded up: counted from its start
+// while the timestep is the one it started with, else from when the timestep changed.
+std::uint64_t end_of(const RunContext& c, double duration) {
+  const std::uint64_t start = c.book.stage_start;
+  if (c.sim.clock_step() <= start)
+    return start + std::max<std::uint64_t>(1, steps_until(duration, c.sim.config().timestep));
+  return c.sim.step_at(c.book.stage_start_time + duration);
 }
 
 } // namespace
 
 StageEvent::StageEvent(RunContext& c)
-    : thermo_every_(steps_of(c.scenario.output.thermo_interval, c.sim.config().timestep)), c_(&c) {}
+    : thermo_every_(every_of(c, c.scenario.output.thermo_interval)), c_(&c) {
+  if (std::isnan(c.book.stage_start_time)) // a book of a talus whose timestep never changed
+    c.book.stage_start_time = static_cast<double>(c.book.stage_start) * c.sim.config().timestep;
+}
 
 std::uint64_t StageEvent::next_look(std::uint64_t step) const {
   const std::vector<StageSection>& stages = c_->scenario.stages;
@@ -25,10 +34,8 @@ std::uint64_t StageEvent::next_look(std::uint64_t step) const {
   if (k >= stages.size()) return never;
   std::uint64_t next = never;
   // the last stage lasts to the run's end
-  if (k + 1 < stages.size())
-    next = std::max(step + 1,
-                    end_of(c_->book.stage_start, stages[k].duration, c_->sim.config().timestep));
-  if (stages[k].until != "none") next = std::min(next, next_multiple(step, thermo_every_));
+  if (k + 1 < stages.size()) next = std::max(step + 1, end_of(*c_, stages[k].duration));
+  if (stages[k].until != "none") next = std::min(next, thermo_every_.next(step));
   return next;
 }
 
@@ -65,11 +72,9 @@ void StageEvent::look(RunContext& c) {
   const std::size_t k = c.book.stage;
   if (k >= stages.size()) return;
   const std::uint64_t step = c.sim.step_count();
-  if (stages[k].until != "none" && step % thermo_every_ == 0 && condition_holds(c))
+  if (stages[k].until != "none" && thermo_every_.on(step) && condition_holds(c))
     return end_stage(c, stages[k].until.c_str());
-  if (k + 1 < stages.size() &&
-      step >= end_of(c.book.stage_start, stages[k].duration, c.sim.config().timestep))
-    end_stage(c, "duration");
+  if (k + 1 < stages.size() && step >= end_of(c, stages[k].duration)) end_stage(c, "duration");
 }
 
 void StageEvent::end_stage(RunContext& c, const char* why) {
@@ -78,6 +83,7 @@ void StageEvent::end_stage(RunContext& c, const char* why) {
   write_row(c, why);
   c.book.stage = k + 1;
   c.book.stage_start = c.sim.step_count();
+  c.book.stage_start_time = c.sim.time();
   if (!c.quiet && !c.progress_on_terminal)
     fmt::print("stage {} ({}) ended ({}) at t = {:.6g} s\n", k, stages[k].name, why, c.sim.time());
   // the last stage's end, or a condition that ends the experiment, ends the run
@@ -100,9 +106,8 @@ void StageEvent::finish(RunContext& c) {
 
 void StageEvent::write_row(const RunContext& c, const char* why) {
   const std::size_t k = c.book.stage;
-  const double start = static_cast<double>(c.book.stage_start) * c.sim.config().timestep;
-  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, c.scenario.stages[k].name, start,
-                       c.sim.time(), why);
+  *log_ << fmt::format("{},{},{:.9g},{:.9g},{}\n", k, c.scenario.stages[k].name,
+                       c.book.stage_start_time, c.sim.time(), why);
 }
 
 } // namespace talus::run

@@ -19,10 +19,6 @@ namespace talus {
 
 namespace {
 
-// Segment ends closer than this many smallest radii are one joint: far below any gap a grain
-// could notice, far above rounding.
-constexpr double joint_tolerance = 1e-6;
-
 std::uint32_t u32(std::size_t v) {
   return static_cast<std::uint32_t>(v);
 }
@@ -126,6 +122,27 @@ double stable_timestep_bound(const Scenario& s, const World& w, const PairTable&
   }
   return max_stable_timestep(c.integrator, k_max, m_min);
 }
+
+} // namespace
+
+double chosen_timestep(const Scenario& s, const World& w, const PairTable& pairs,
+                       const SimulationConfig& c, double r_min, double collision_time) {
+  const double automatic = collision_time / s.simulation.timestep_factor;
+  if (!s.simulation.timestep) return automatic;
+  const double bound = stable_timestep_bound(s, w, pairs, c, r_min);
+  if (*s.simulation.timestep > bound) {
+    std::ostringstream msg;
+    msg << "key 'simulation.timestep': " << *s.simulation.timestep
+        << " s is above the stability bound " << bound << " s of the " << to_string(c.integrator)
+        << " integrator for the stiffest contact (collision time " << collision_time
+        << " s); allowed: <= " << bound << " s, or \"auto\" (collision time / "
+        << s.simulation.timestep_factor << " = " << automatic << " s)";
+    throw ScenarioError(msg.str());
+  }
+  return *s.simulation.timestep;
+}
+
+namespace {
 
 // The grains' radii, drawn first: they set the wall particle radius and the timestep.
 struct GrainSizes {
@@ -253,20 +270,7 @@ void configure(const Scenario& s, double r_min, BuiltScenario& out) {
   c.impact_speed = s.simulation.impact_speed;
   // the frost models keep per-particle state of their own by index: no renumbering under them
   c.sort_interval = s.frost.model == "none" ? s.simulation.sort_every : 0;
-  c.timestep = out.collision_time / s.simulation.timestep_factor;
-  if (s.simulation.timestep) {
-    const double bound = stable_timestep_bound(s, out.world, out.pairs, c, r_min);
-    if (*s.simulation.timestep > bound) {
-      std::ostringstream msg;
-      msg << "key 'simulation.timestep': " << *s.simulation.timestep
-          << " s is above the stability bound " << bound << " s of the " << to_string(c.integrator)
-          << " integrator for the stiffest contact (collision time " << out.collision_time
-          << " s); allowed: <= " << bound << " s, or \"auto\" (collision time / "
-          << s.simulation.timestep_factor << " = " << c.timestep << " s)";
-      throw ScenarioError(msg.str());
-    }
-    c.timestep = *s.simulation.timestep;
-  }
+  c.timestep = chosen_timestep(s, out.world, out.pairs, c, r_min, out.collision_time);
   check_step_count(s, c.timestep);
   const Rect& b = out.bounds;
   if (b.hi.x > b.lo.x && b.hi.y > b.lo.y) {
@@ -360,14 +364,14 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   drivers.insert(drivers.end(), s.drivers.begin(), s.drivers.end());
   build_walls(s, shape, drivers, r_wall, wall_mat, out);
   // segment ends a rounding step apart (polylines made by a script) are one joint
-  join_segment_ends(w.walls, joint_tolerance * sizes.r_min);
+  join_segment_ends(w.walls, wall_joint_tolerance * sizes.r_min);
   set_periodic_domain(s, w.domain);
 
   place_grains(s, sizes.radii, rng, out);
   check_stage_groups(s, out);
   configure(s, sizes.r_min, out);
   if (s.packing.method == "sedimentation" && !sizes.radii.empty())
-    sediment(s, shape.gate, wall_mat, joint_tolerance * sizes.r_min, progress, out);
+    sediment(s, shape.gate, wall_mat, wall_joint_tolerance * sizes.r_min, progress, out);
   add_drivers(drivers, out);
   select_tracked(s, out);
   return out;

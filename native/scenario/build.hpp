@@ -41,6 +41,10 @@ std::vector<DriverSection> all_drivers(const Scenario& s);
 /// stays to be derived per contact.
 std::vector<Material> engine_materials(const Scenario& s);
 
+/// Segment ends closer than this many smallest grain radii are one joint (join_segment_ends): far
+/// below any gap a grain could notice, far above rounding.
+inline constexpr double wall_joint_tolerance = 1e-6;
+
 /// A pair of materials that can meet: two grains' (a <= b), or a grain's (a) and a wall's (b).
 /// Two walls never meet, so their pair never sets the timestep.
 struct MeetingPair {
@@ -56,5 +60,12 @@ std::vector<MeetingPair> meeting_pairs(const World& w);
 /// the smallest size (against a wall, the grain's own mass and radius).
 double shortest_collision_time(const Scenario& s, const World& w, const PairTable& pairs,
                                double r_min);
+
+/// The timestep `s` asks for in `w` with the settings `c` (integrator, laws): simulation.timestep,
+/// checked against the integrator's stability bound for the stiffest contact, or "auto", the
+/// collision time (shortest_collision_time) / simulation.timestep_factor. Throws ScenarioError
+/// naming the key and the bound.
+double chosen_timestep(const Scenario& s, const World& w, const PairTable& pairs,
+                       const SimulationConfig& c, double r_min, double collision_time);
 
 } // namespace talus

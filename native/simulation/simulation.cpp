@@ -79,7 +79,8 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     : world_(std::move(state.world)), config_(config), list_(std::move(state.neighbours)),
       forces_(config.normal_law, config.tangential_law, config.timestep,
               verlet_lag(config.verlet_velocity), config.lever_arm),
-      time_(state.time), steps_(state.steps) {
+      time_(state.time), steps_(state.steps), clock_time_(state.clock_time),
+      clock_step_(state.clock_step) {
   validate_setup(world_, config_);
   pairs_ = PairTable(world_.materials, config_.impact_speed, config_.linear_damping);
   const int wanted = config_.threads > 0 ? config_.threads : omp_get_max_threads();
@@ -159,7 +160,10 @@ void Simulation::choose_features() {
 void Simulation::advance(bool fuse) {
   if (features_stale_) choose_features(); // edits happen between run() calls: nothing is fused
   fuse = fuse && !features_.rolling;      // the rolling pass comes between forces and correction
-  const double t_next = static_cast<double>(steps_ + 1) * config_.timestep;
+  // from the clock's origin, not by adding dt: no rounding builds up (and with the origin at 0,
+  // the same bits as (steps + 1) dt)
+  const double t_next =
+      clock_time_ + static_cast<double>(steps_ + 1 - clock_step_) * config_.timestep;
   const bool drifted = predict();
   move_bodies(t_next);
   update_neighbours(drifted);

@@ -68,9 +68,19 @@ struct SimulationState {
   NeighbourList neighbours;
   double time = 0.0;
   std::uint64_t steps = 0;
+  /// The time (s) and step from which the timestep in force counts: t = clock_time + (steps -
+  /// clock_step) dt. Both 0 unless the timestep changed during the run: a state restored with
+  /// another timestep continues from where it is (the integrators keep their derivatives
+  /// unscaled) with its clock set here to its time and step.
+  double clock_time = 0.0;
+  std::uint64_t clock_step = 0;
 };
 
 class ParticleEdits;
+
+/// The steps until `time` (s) at a timestep `dt` (s), rounded up (a time a billionth of a step
+/// past a whole count is that count); a count beyond any run is cut to one no run reaches.
+std::uint64_t steps_until(double time, double dt);
 
 /// The engine's memory by what it holds, bytes.
 struct Footprint {
@@ -94,7 +104,7 @@ public:
   /// continuation is bit-identical to the run that was saved. `config.threads` may differ.
   static Simulation restore(SimulationState state, SimulationConfig config);
   /// A copy of the state, for a checkpoint.
-  SimulationState state() const { return {world_, list_, time_, steps_}; }
+  SimulationState state() const { return {world_, list_, time_, steps_, clock_time_, clock_step_}; }
 
   /// One time step: predict, move bodies, neighbours, contacts, correct, guard.
   void step();
@@ -104,6 +114,17 @@ public:
 
   double time() const { return time_; }
   std::uint64_t step_count() const { return steps_; }
+  /// The step and time (s) from which the timestep in force counts (SimulationState).
+  std::uint64_t clock_step() const { return clock_step_; }
+  double clock_time() const { return clock_time_; }
+  /// The first step at or after `time` (s) at the timestep in force, rounded up (steps_until).
+  std::uint64_t step_at(double time) const;
+  /// Between steps: removes the walls marked in `removed` (one flag per wall) and appends
+  /// `added`. Returns each old wall's new index, or -1 where it was removed. Drivers' targets and
+  /// the neighbour list's wall contacts follow (those of removed walls end, the others keep their
+  /// springs); the list is built again before the next step's forces, so added walls are seen.
+  /// Throws InvalidArgument for a removed wall that a driver moves.
+  std::vector<std::int64_t> change_walls(const std::vector<bool>& removed, const Segments& added);
   const World& world() const { return world_; }
   /// Mutable access, for setting up or changing the world between steps (not while stepping).
   /// The next steps test the neighbour list against every particle's build position, since
@@ -205,6 +226,8 @@ private:
   ForceStage forces_;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;
+  double clock_time_ = 0.0;      ///< SimulationState::clock_time
+  std::uint64_t clock_step_ = 0; ///< SimulationState::clock_step
   int threads_ = 1;
   int max_threads_ = 1;
   bool finite_ = true;                ///< every position and velocity finite after the last step

@@ -12,13 +12,18 @@
 #include "scenario/file/load.hpp"
 #include "support/builtin_scenario.hpp"
 #include "support/run_dir.hpp"
+#include "support/staged_runs.hpp"
 
 namespace fs = std::filesystem;
 
 namespace talus {
 namespace {
 
+using testing::file;
+using testing::final_state;
 using testing::fresh_dir;
+using testing::resume;
+using testing::start;
 
 // Forty grains settled in a small box; three stages of 0.01 s each: at rest, tilted with less
 // friction, then with Coulomb friction and a finer thermo record, until the run's end.
@@ -56,33 +61,6 @@ kinetic = 1e-300
 then = "end"
 set = { "simulation.tangential_law" = "coulomb", "output.thermo_interval" = 0.0005 }
 )";
-
-std::string file(const fs::path& p) {
-  return read_file(p.string());
-}
-
-// The engine's state at the last checkpoint, every byte of it.
-std::string final_state(const fs::path& dir) {
-  const Checkpoint c = decode_checkpoint(file(dir / "checkpoint.bin"), "x");
-  return encode_checkpoint({c.state, c.config, ""});
-}
-
-int start(const Scenario& s, const fs::path& dir, double stop_at = -1.0) {
-  cli::RunOptions o;
-  o.quiet = true;
-  o.stop_at = stop_at;
-  return cli::start_run(s, build_scenario(s), dir.string(), o);
-}
-
-int resume(const fs::path& dir, double stop_at = -1.0, std::vector<std::string> set = {},
-           double duration = -1.0) {
-  cli::RunOptions o;
-  o.quiet = true;
-  o.stop_at = stop_at;
-  o.set = std::move(set);
-  o.duration = duration;
-  return cli::resume_run(dir.string(), o);
-}
 
 // A run in stages stopped inside each stage and resumed lands on exactly the state and the
 // records of the run never stopped: each stage's changes are made at the same step, from the

@@ -14,6 +14,7 @@
 #include "run/progress.hpp"
 #include "run/records.hpp"
 #include "run/run.hpp"
+#include "run/scenario_change.hpp"
 #include "scenario/contact_pairs.hpp"
 #include "scenario/file/load.hpp"
 #include "scenario/file/stages.hpp"
@@ -246,7 +247,11 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   if (!set.empty()) { // the values checked before anything is touched
     std::vector<std::string> all = book.overrides();
     all.insert(all.end(), set.begin(), set.end());
-    load_scenario(started, scenario_file, all);
+    const Scenario next = load_scenario(started, scenario_file, all);
+    // and what they do to the engine (walls, the timestep), tried on a copy
+    Simulation probe = Simulation::restore(c.state, c.config);
+    run::RunBook probe_book = book;
+    run::apply_scenario_change(probe, s, next, probe_book);
   }
   if (started != text) { // the edits are changes now (changes.csv); the file is as it started
     write_file_atomically(scenario_file, started);

@@ -33,10 +33,18 @@ void flatten(const toml::table& t, const std::string& prefix, std::vector<std::s
   }
 }
 
-constexpr std::array<std::string_view, 8> changeable_settings{
-    "simulation.gravity",    "simulation.tangential_law", "geometry.angular_velocity",
-    "geometry.lid_speed",    "output.thermo_interval",    "output.snapshot_interval",
-    "output.track_interval", "output.checkpoint_interval"};
+constexpr std::array<std::string_view, 12> changeable_settings{"simulation.gravity",
+                                                               "simulation.tangential_law",
+                                                               "simulation.timestep",
+                                                               "simulation.timestep_factor",
+                                                               "geometry.gate",
+                                                               "geometry.segments",
+                                                               "geometry.angular_velocity",
+                                                               "geometry.lid_speed",
+                                                               "output.thermo_interval",
+                                                               "output.snapshot_interval",
+                                                               "output.track_interval",
+                                                               "output.checkpoint_interval"};
 // a driver's motion (not its type or target)
 constexpr std::array<std::string_view, 7> changeable_driver_keys{
     "velocity", "angular_velocity", "amplitude", "frequency", "phase", "direction", "centre"};

@@ -16,8 +16,9 @@ namespace talus {
 std::vector<StageSection> read_stages(TableReader& top, const std::string& file);
 
 /// Whether `key` ("simulation.gravity", "materials.0.friction") may change during a run: gravity,
-/// the tangential law, a material's contact keys (not its density: the grains' masses are made)
-/// and the output intervals.
+/// the tangential law, the timestep, the gate and the extra walls (segment walls added or
+/// removed), a driver's motion, a material's contact keys (not its density: the grains' masses
+/// are made) and the output intervals.
 bool changeable_during_run(const std::string& key);
 /// The keys that may change during a run, in words, for error messages.
 std::string changeable_keys_text();

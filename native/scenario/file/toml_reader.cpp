@@ -208,7 +208,7 @@ std::vector<const toml::table*> TableReader::tables(std::string_view key) {
   std::vector<const toml::table*> out;
   if (!n) return out;
   const toml::array* a = n->as_array();
-  if (!a || !a->is_array_of_tables())
+  if (!a || (!a->empty() && !a->is_array_of_tables())) // [] has none: "no walls", for --set
     fail(key, "expected an array of tables, written [[" + qualified(key) + "]]");
   for (const auto& e : *a) out.push_back(e.as_table());
   return out;
