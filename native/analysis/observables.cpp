@@ -88,7 +88,8 @@ std::vector<ContactRecord> contact_forces(const Simulation& sim) {
       r.overlap_rate = g.overlap_rate();
       r.m_eff = g.m_eff;
       r.normal_force = f.normal_force;
-      r.tangential_force = dot(force_of(f), tangent_of(v.geometry));
+      r.force = force_of(f);
+      r.tangential_force = dot(r.force, tangent_of(v.geometry));
       ContactGeometry at_rest = g;
       at_rest.v_normal = 0.0;
       r.elastic_force = N::force(*v.parameters, at_rest);

@@ -46,6 +46,7 @@ struct ContactRecord {
   double m_eff = 0.0;            ///< kg: the pair's reduced mass (the grain's against a wall)
   double normal_force = 0.0;     ///< N
   double tangential_force = 0.0; ///< N, signed along t
+  Vec2 force;                    ///< N: the contact's force on i (on j: its opposite)
   double elastic_force = 0.0;    ///< N: the normal law's force at this overlap without motion
   double stiffness = 0.0;        ///< N/m: its slope d F_el / d xi here
 };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analysis/observables.hpp"
+#include "analysis/stress.hpp"
 
 namespace talus {
 
@@ -19,7 +20,7 @@ void array(std::string& out, const char* name, int components, std::size_t n, F 
 
 } // namespace
 
-std::string vtp_particles(const Simulation& sim) {
+std::string vtp_particles(const Simulation& sim, bool stress) {
   const Particles& p = sim.world().particles;
   const std::size_t n = p.size();
   std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
@@ -38,6 +39,13 @@ std::string vtp_particles(const Simulation& sim) {
   array(out, "kind", 1, n,
         [&](std::size_t i) { return fmt::format("{}", static_cast<int>(p.kind[i])); });
   array(out, "material", 1, n, [&](std::size_t i) { return fmt::format("{}", p.material[i]); });
+  if (stress) {
+    const std::vector<Tensor2> s = particle_stresses(sim);
+    array(out, "stress", 9, n, [&](std::size_t i) {
+      return fmt::format("{:.9g} {:.9g} 0 {:.9g} {:.9g} 0 0 0 0", s[i](0, 0), s[i](0, 1),
+                         s[i](1, 0), s[i](1, 1));
+    });
+  }
   out += "      </PointData>\n      <Points>\n";
   array(out, "position", 3, n, [&](std::size_t i) {
     return fmt::format("{:.12g} {:.12g} 0", p.position[i].x, p.position[i].y);

@@ -9,8 +9,10 @@
 namespace talus {
 
 /// The particles as vertices with point data: id, radius, velocity, angular_velocity, force,
-/// kind (0 free, 1 fixed, 2 moved), material. Walls go in a separate file (vtp_walls).
-std::string vtp_particles(const Simulation& sim);
+/// kind (0 free, 1 fixed, 2 moved), material; with `stress`, each grain's contact stress
+/// (analysis/stress.hpp: a 3x3 tensor, N/m, compression positive). Walls go in a separate file
+/// (vtp_walls).
+std::string vtp_particles(const Simulation& sim, bool stress = false);
 /// The segment walls as lines, with the force the grains put on each.
 std::string vtp_walls(const Simulation& sim);
 /// The contacts as lines between the centres (to the contact point for walls), with cell arrays

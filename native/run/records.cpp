@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 #include <utility>
 
 #include <fmt/core.h>
 #include <sys/resource.h>
 
+#include "analysis/stress.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
 #include "io/vtk.hpp"
@@ -43,11 +45,31 @@ double packing(const Simulation& sim, const Scenario& s, const RunBook& book) {
 
 } // namespace
 
-std::string thermo_header(const RunBook& book, bool ledger) {
+Rect stress_region(const Scenario& s, const RunBook& book) {
+  return s.output.stress_region.value_or(book.bounds);
+}
+
+std::string stress_columns(const Simulation& sim, const Rect& region) {
+  const RegionStress s = region_stress(sim, region.lo, region.hi);
+  const Tensor2 total = s.total();
+  const Principal p = principal(total);
+  return fmt::format(
+      ",{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},"
+      "{:.6f},{:.6f},{:.6f}",
+      s.contact(0, 0), s.contact(0, 1), s.contact(1, 0), s.contact(1, 1), s.kinetic(0, 0),
+      s.kinetic(0, 1), s.kinetic(1, 1), 0.5 * total.trace(), p.major, p.minor,
+      p.angle * 180.0 / std::numbers::pi, s.fabric(0, 0), s.fabric(0, 1), s.fabric(1, 1));
+}
+
+std::string thermo_header(const RunBook& book, bool ledger, bool stress) {
   std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
                      "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
                      "packing_fraction";
   if (ledger) head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
+  if (stress)
+    head += ",stress_xx,stress_xy,stress_yx,stress_yy,kinetic_stress_xx,kinetic_stress_xy,"
+            "kinetic_stress_yy,pressure,stress_major,stress_minor,stress_major_angle,fabric_xx,"
+            "fabric_xy,fabric_yy";
   for (const std::string& name : book.force_columns)
     head += ",force_" + name + "_x,force_" + name + "_y";
   return head + "\n";
@@ -116,9 +138,10 @@ std::string snapshot_name(const char* kind, std::uint64_t n, const char* ext = "
 } // namespace
 
 void write_snapshot_files(const fs::path& dir, const Simulation& sim, std::uint64_t n,
-                          bool with_contacts_csv) {
+                          bool with_contacts_csv, bool with_stress) {
   const fs::path snapshots = dir / "snapshots";
-  write_file_atomically((snapshots / snapshot_name("particles", n)).string(), vtp_particles(sim));
+  write_file_atomically((snapshots / snapshot_name("particles", n)).string(),
+                        vtp_particles(sim, with_stress));
   if (!sim.world().walls.empty())
     write_file_atomically((snapshots / snapshot_name("walls", n)).string(), vtp_walls(sim));
   write_file_atomically((snapshots / snapshot_name("contacts", n)).string(), vtp_contacts(sim));

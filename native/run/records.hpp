@@ -15,8 +15,13 @@
 
 namespace talus::run {
 
-/// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger).
-std::string thermo_header(const RunBook& book, bool ledger);
+/// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger);
+/// `stress`: with the stress columns (output.stress).
+std::string thermo_header(const RunBook& book, bool ledger, bool stress);
+/// The region output.stress measures: output.stress_region, or the container's extent.
+Rect stress_region(const Scenario& s, const RunBook& book);
+/// thermo.csv's stress columns (output.stress) over `region` (analysis/stress.hpp).
+std::string stress_columns(const Simulation& sim, const Rect& region);
 /// The columns of a thermo row before the ledger's: time, step, energies e, momenta,
 /// coordination, contacts, packing fraction.
 std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBook& book,
@@ -30,9 +35,10 @@ std::string group_force_columns(const Simulation& sim, const RunBook& book);
 /// track.csv's rows of the tracked particles now.
 std::string track_rows(const Simulation& sim, const std::vector<std::uint32_t>& tracked);
 /// Snapshot n's files in dir/snapshots: particles, walls (if any), contacts, and with
-/// `with_contacts_csv` the contacts as CSV (output.contacts).
+/// `with_contacts_csv` the contacts as CSV (output.contacts); `with_stress`: the grains' stress
+/// in the particles' file (output.stress).
 void write_snapshot_files(const std::filesystem::path& dir, const Simulation& sim, std::uint64_t n,
-                          bool with_contacts_csv);
+                          bool with_contacts_csv, bool with_stress);
 /// The ParaView collections of the snapshots taken at `times` (s), in order.
 void write_collections_of(const std::filesystem::path& dir, const std::vector<double>& times,
                           bool walls);

@@ -38,7 +38,8 @@ void SnapshotObserver::write(RunContext& c) {
   std::vector<double>& times = c.book.snapshot_times;
   times.resize(c.book.snapshots); // those after a checkpoint the outputs were cut back to go
   times.push_back(c.sim.time());
-  write_snapshot_files(c.files.dir(), c.sim, c.book.snapshots++, c.scenario.output.contacts);
+  write_snapshot_files(c.files.dir(), c.sim, c.book.snapshots++, c.scenario.output.contacts,
+                       c.scenario.output.stress);
   write_collections(c);
   if (thesis_out_) *thesis_out_ << thesis_out_block(c.sim);
 }

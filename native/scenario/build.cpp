@@ -291,6 +291,15 @@ void check_stage_groups(const Scenario& s, const BuiltScenario& out) {
   }
 }
 
+// output.stress needs an area: its region, or the container's extent.
+void check_stress_region(const Scenario& s, const BuiltScenario& out) {
+  const Rect& b = out.bounds;
+  if (!s.output.stress || s.output.stress_region || (b.hi.x > b.lo.x && b.hi.y > b.lo.y)) return;
+  throw ScenarioError("key 'output.stress_region': needed with output.stress = true where the "
+                      "geometry has no extent (builder \"none\" without walls); expected [x_min, "
+                      "y_min, x_max, y_max] in m");
+}
+
 void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
   for (const DriverSection& d : drivers) {
     const auto group = out.groups.find(d.target);
@@ -369,6 +378,7 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
 
   place_grains(s, sizes.radii, rng, out);
   check_stage_groups(s, out);
+  check_stress_region(s, out);
   configure(s, sizes.r_min, out);
   if (s.packing.method == "sedimentation" && !sizes.radii.empty())
     sediment(s, shape.gate, wall_mat, wall_joint_tolerance * sizes.r_min, progress, out);

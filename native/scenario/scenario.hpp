@@ -134,7 +134,11 @@ struct OutputSection {
   /// The energy ledger in thermo.csv: the energy dissipated by the dampers and by friction, the
   /// driven walls' work, and the balance's error (the contacts are then looked at every step).
   bool energy_ledger = false;
-  bool picture = true; ///< final.png at the end
+  /// The stress of the grains in thermo.csv (contact and kinetic parts, principal values, the
+  /// fabric) over `stress_region`, and each grain's stress in the snapshots.
+  bool stress = false;
+  std::optional<Rect> stress_region; ///< default: the container's extent
+  bool picture = true;               ///< final.png at the end
   /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
   /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).
   std::vector<std::string> pictures;

@@ -8,6 +8,7 @@
 #include "cli/run/run_loop.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/build.hpp"
+#include "support/run_scenario.hpp"
 
 namespace talus::testing {
 
@@ -23,10 +24,7 @@ inline std::string final_state(const std::filesystem::path& dir) {
 
 /// talus run into `dir`, stopping at `stop_at` s (-1: the end). Returns the exit code.
 inline int start(const Scenario& s, const std::filesystem::path& dir, double stop_at = -1.0) {
-  cli::RunOptions o;
-  o.quiet = true;
-  o.stop_at = stop_at;
-  return cli::start_run(s, build_scenario(s), dir.string(), o);
+  return run_quietly(s, dir, stop_at);
 }
 
 /// talus resume DIR [--stop-at] [--set ...] [--duration]. Returns the exit code.

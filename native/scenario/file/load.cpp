@@ -278,6 +278,8 @@ void read_output(TableReader& r, OutputSection& o) {
   o.thesis_out = r.boolean("thesis_out", o.thesis_out);
   o.contacts = r.boolean("contacts", o.contacts);
   o.energy_ledger = r.boolean("energy_ledger", o.energy_ledger);
+  o.stress = r.boolean("stress", o.stress);
+  if (r.has("stress_region")) o.stress_region = rect(r, "stress_region");
   o.picture = r.boolean("picture", o.picture);
   o.pictures = r.texts("pictures");
   for (const std::string& p : o.pictures)

@@ -194,17 +194,20 @@ toml::table track_table(const TrackSection& t) {
 toml::table output_table(const OutputSection& o) {
   toml::array pictures;
   for (const auto& name : o.pictures) pictures.push_back(name);
-  return toml::table{{"thermo_interval", o.thermo_interval},
-                     {"snapshot_interval", o.snapshot_interval},
-                     {"checkpoint_interval", o.checkpoint_interval},
-                     {"track_interval", o.track_interval},
-                     {"thesis_out", o.thesis_out},
-                     {"contacts", o.contacts},
-                     {"energy_ledger", o.energy_ledger},
-                     {"picture", o.picture},
-                     {"pictures", pictures},
-                     {"movie", o.movie},
-                     {"movie_color", o.movie_color}};
+  toml::table t{{"thermo_interval", o.thermo_interval},
+                {"snapshot_interval", o.snapshot_interval},
+                {"checkpoint_interval", o.checkpoint_interval},
+                {"track_interval", o.track_interval},
+                {"thesis_out", o.thesis_out},
+                {"contacts", o.contacts},
+                {"energy_ledger", o.energy_ledger},
+                {"stress", o.stress},
+                {"picture", o.picture},
+                {"pictures", pictures},
+                {"movie", o.movie},
+                {"movie_color", o.movie_color}};
+  if (o.stress_region) t.insert("stress_region", rect(*o.stress_region));
+  return t;
 }
 
 toml::table frost_table(const FrostSection& f) {
