@@ -224,7 +224,9 @@ void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStr
                   BuiltScenario& out) {
   World& w = out.world;
   check_listed_grains_clear_of_walls(s, w, out.bounds);
-  for (const ExplicitParticle& e : s.particles.list)
+  for (const ExplicitParticle& e : s.particles.list) {
+    // the fixed grains are the wall group "fixed": their force in thermo.csv, a driver by name
+    if (e.kind == "fixed") out.groups["fixed"].particles.push_back(u32(w.particles.size()));
     w.add_particle({.position = e.position,
                     .radius = e.radius,
                     .material = material_index(s, e.material, "particles.list.material"),
@@ -233,6 +235,7 @@ void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStr
                     .velocity = e.velocity,
                     .angular_velocity = e.angular_velocity,
                     .mass = e.mass});
+  }
   if (radii.empty()) return;
   if (!(out.fill.hi.x > out.fill.lo.x && out.fill.hi.y > out.fill.lo.y))
     throw ScenarioError("key 'packing.region': no region to place grains in; give a geometry "
@@ -309,6 +312,9 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
       throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
                           "' in this geometry; groups: " + names);
     }
+    // fixed grains a driver moves are moved grains (the container's wall particles are made so)
+    for (const std::uint32_t i : group->second.particles)
+      if (out.world.particles.kind[i] == Kind::fixed) out.world.particles.kind[i] = Kind::moved;
     Driver driver;
     driver.targets = group->second;
     driver.motion = motion_of(d);
