@@ -12,7 +12,7 @@ void ThermoObserver::open(RunContext& c) {
 }
 
 void ThermoObserver::start(RunContext& c) {
-  *out_ << thermo_header(c.book, ledger_ != nullptr, c.scenario.output.stress);
+  *out_ << thermo_header(c.book, ledger_ != nullptr, c.scenario.output);
   record(c);
 }
 
@@ -25,7 +25,8 @@ void ThermoObserver::record(RunContext& c) {
   const Energies e = energies(c.sim);
   std::string row = thermo_columns(c.sim, c.scenario, c.book, e);
   if (ledger_) row += ledger_->thermo_columns(c, e);
-  if (c.scenario.output.stress) row += stress_columns(c.sim, stress_region(c.scenario, c.book));
+  if (c.scenario.output.stress)
+    row += stress_columns(c.sim, stress_region(c.scenario, c.book), c.scenario.output);
   *out_ << row << group_force_columns(c.sim, c.book) << "\n";
   c.last_kinetic = e.kinetic();
 }

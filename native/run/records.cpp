@@ -49,7 +49,10 @@ Rect stress_region(const Scenario& s, const RunBook& book) {
   return s.output.stress_region.value_or(book.bounds);
 }
 
-std::string stress_columns(const Simulation& sim, const Rect& region) {
+namespace {
+
+// One region's stress columns (analysis/stress.hpp).
+std::string region_columns(const Simulation& sim, const Rect& region) {
   const RegionStress s = region_stress(sim, region.lo, region.hi);
   const Tensor2 total = s.total();
   const Principal p = principal(total);
@@ -61,15 +64,32 @@ std::string stress_columns(const Simulation& sim, const Rect& region) {
       p.angle * 180.0 / std::numbers::pi, s.fabric(0, 0), s.fabric(0, 1), s.fabric(1, 1));
 }
 
-std::string thermo_header(const RunBook& book, bool ledger, bool stress) {
+// One region's stress column names, each with `prefix`.
+std::string region_header(const std::string& prefix) {
+  std::string head;
+  for (const char* name :
+       {"stress_xx", "stress_xy", "stress_yx", "stress_yy", "kinetic_stress_xx",
+        "kinetic_stress_xy", "kinetic_stress_yy", "pressure", "stress_major", "stress_minor",
+        "stress_major_angle", "fabric_xx", "fabric_xy", "fabric_yy"})
+    head += "," + prefix + name;
+  return head;
+}
+
+} // namespace
+
+std::string stress_columns(const Simulation& sim, const Rect& region, const OutputSection& output) {
+  std::string out = region_columns(sim, region);
+  for (const StressRegion& r : output.stress_regions) out += region_columns(sim, r.region);
+  return out;
+}
+
+std::string thermo_header(const RunBook& book, bool ledger, const OutputSection& output) {
   std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
                      "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
                      "packing_fraction";
   if (ledger) head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
-  if (stress)
-    head += ",stress_xx,stress_xy,stress_yx,stress_yy,kinetic_stress_xx,kinetic_stress_xy,"
-            "kinetic_stress_yy,pressure,stress_major,stress_minor,stress_major_angle,fabric_xx,"
-            "fabric_xy,fabric_yy";
+  if (output.stress) head += region_header("");
+  for (const StressRegion& r : output.stress_regions) head += region_header(r.name + "_");
   for (const std::string& name : book.force_columns)
     head += ",force_" + name + "_x,force_" + name + "_y";
   return head + "\n";

@@ -16,12 +16,13 @@
 namespace talus::run {
 
 /// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger);
-/// `stress`: with the stress columns (output.stress).
-std::string thermo_header(const RunBook& book, bool ledger, bool stress);
+/// with output.stress, the stress columns, then those of each of output.stress_regions.
+std::string thermo_header(const RunBook& book, bool ledger, const OutputSection& output);
 /// The region output.stress measures: output.stress_region, or the container's extent.
 Rect stress_region(const Scenario& s, const RunBook& book);
-/// thermo.csv's stress columns (output.stress) over `region` (analysis/stress.hpp).
-std::string stress_columns(const Simulation& sim, const Rect& region);
+/// thermo.csv's stress columns (output.stress) over `region` (analysis/stress.hpp), then over
+/// each of output.stress_regions.
+std::string stress_columns(const Simulation& sim, const Rect& region, const OutputSection& output);
 /// The columns of a thermo row before the ledger's: time, step, energies e, momenta,
 /// coordination, contacts, packing fraction.
 std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBook& book,

@@ -122,6 +122,13 @@ struct TrackSection {
   std::size_t count = 1;
 };
 
+/// A named region whose stress thermo.csv records (output.stress_regions).
+struct StressRegion {
+  std::string name;
+  Rect region;
+  friend bool operator==(const StressRegion&, const StressRegion&) = default;
+};
+
 struct OutputSection {
   double thermo_interval = 0.01;    ///< s
   double snapshot_interval = 0.1;   ///< s; 0: none
@@ -137,8 +144,9 @@ struct OutputSection {
   /// The stress of the grains in thermo.csv (contact and kinetic parts, principal values, the
   /// fabric) over `stress_region`, and each grain's stress in the snapshots.
   bool stress = false;
-  std::optional<Rect> stress_region; ///< default: the container's extent
-  bool picture = true;               ///< final.png at the end
+  std::optional<Rect> stress_region;        ///< default: the container's extent
+  std::vector<StressRegion> stress_regions; ///< more regions, each with its own columns
+  bool picture = true;                      ///< final.png at the end
   /// Pictures of the last snapshot at the end of the run, into pictures/: each "COLOUR" with
   /// optional "+chains" and "+tracks", e.g. "force+chains" (see PictureRequest).
   std::vector<std::string> pictures;

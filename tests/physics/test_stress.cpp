@@ -44,6 +44,19 @@ wall_material = "smooth"
 stress = true
 )";
 
+// thermo.csv's last row by column name.
+std::map<std::string, double> last_thermo_row(const std::filesystem::path& dir) {
+  std::istringstream thermo(read_file((dir / "thermo.csv").string()));
+  std::string header, row, line;
+  std::getline(thermo, header);
+  while (std::getline(thermo, line)) row = line;
+  std::istringstream h(header), r(row);
+  std::map<std::string, double> last;
+  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
+    last[name] = std::stod(value);
+  return last;
+}
+
 Simulation simulation_of(const Scenario& s) {
   BuiltScenario b = build_scenario(s);
   return Simulation(std::move(b.world), b.config);
@@ -170,15 +183,8 @@ TEST(Stress, ARunRecordsItsStress) {
                                     "output.snapshot_interval=0.01", "output.picture=false"});
   const std::filesystem::path dir = testing::fresh_dir("stress_run");
   ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
-  std::istringstream thermo(read_file((dir / "thermo.csv").string()));
-  std::string header, row, line;
-  std::getline(thermo, header);
-  while (std::getline(thermo, line)) row = line;
-  std::istringstream h(header), r(row);
-  std::map<std::string, double> last;
-  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
-    last[name] = std::stod(value);
-  ASSERT_TRUE(last.count("stress_yy") && last.count("fabric_xx")) << header;
+  std::map<std::string, double> last = last_thermo_row(dir);
+  ASSERT_TRUE(last.count("stress_yy") && last.count("fabric_xx"));
   EXPECT_GT(last["pressure"], 0.0);
   EXPECT_GT(last["stress_yy"], last["stress_xx"]);
   EXPECT_GT(std::abs(last["stress_major_angle"]), 45.0);
@@ -186,6 +192,47 @@ TEST(Stress, ARunRecordsItsStress) {
   const std::string vtp = read_file((dir / "snapshots/particles_000001.vtp").string());
   EXPECT_NE(vtp.find("Name=\"stress\" NumberOfComponents=\"9\""), std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+// Named regions have columns of their own: a bed's lower half bears more than its upper half,
+// and the two halves' contact stresses, weighted by their areas, make the whole box's (each
+// grain's centre is in one of them).
+TEST(Stress, NamedRegionsHaveTheirOwnColumns) {
+  const Scenario s = load_scenario(std::string(bed) + R"(
+[[output.stress_regions]]
+name = "lower"
+region = [0.0, 0.0, 0.06, 0.015]
+[[output.stress_regions]]
+name = "upper"
+region = [0.0, 0.015, 0.06, 0.12]
+)",
+                                   "regions.toml",
+                                   {"particles.count=60", "simulation.duration=0.01",
+                                    "output.snapshot_interval=0", "output.picture=false"});
+  const std::filesystem::path dir = testing::fresh_dir("stress_regions");
+  ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
+  std::map<std::string, double> last = last_thermo_row(dir);
+  ASSERT_TRUE(last.count("lower_stress_yy") && last.count("upper_fabric_yy"));
+  EXPECT_GT(last["lower_pressure"], last["upper_pressure"]);
+  const double whole = last["stress_yy"] * 0.06 * 0.12;
+  const double halves =
+      last["lower_stress_yy"] * 0.06 * 0.015 + last["upper_stress_yy"] * 0.06 * 0.105;
+  EXPECT_NEAR(halves, whole, 1e-8 * std::abs(whole)); // the columns' 10 digits
+  std::filesystem::remove_all(dir);
+  // a region without a name, twice the same name, or without output.stress is refused
+  const auto refused = [&](const std::string& extra, const char* words) {
+    try {
+      load_scenario(std::string(bed) + extra, "bad.toml");
+      ADD_FAILURE() << "accepted: " << extra;
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused("[[output.stress_regions]]\nregion = [0, 0, 1, 1]\n",
+          "key 'output.stress_regions.0.name'");
+  refused("[[output.stress_regions]]\nname = \"a\"\nregion = [0, 0, 1, 1]\n"
+          "[[output.stress_regions]]\nname = \"a\"\nregion = [0, 0, 1, 1]\n",
+          "'a' is given twice");
 }
 
 // output.stress needs an area: where the geometry has none, its region must be given.

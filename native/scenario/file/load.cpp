@@ -267,6 +267,26 @@ void read_track(TableReader& r, TrackSection& t) {
   t.count = static_cast<std::size_t>(r.integer("count", 1, 1, 100000));
 }
 
+// [[output.stress_regions]]: a name (a word of letters, digits and _, once each) and a region.
+void read_stress_regions(TableReader& r, OutputSection& o) {
+  const std::vector<const toml::table*> tables = r.tables("stress_regions");
+  if (!tables.empty() && !o.stress) r.fail("stress_regions", "needs output.stress = true");
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    TableReader t(*tables[k], r.file(), r.qualified("stress_regions") + "." + std::to_string(k));
+    StressRegion region;
+    region.name = t.text("name", "");
+    if (region.name.empty() ||
+        region.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      t.fail("name", "expected a word of lower-case letters, digits and _ (its columns' prefix)");
+    for (const StressRegion& other : o.stress_regions)
+      if (other.name == region.name) t.fail("name", "'" + region.name + "' is given twice");
+    if (!t.has("region")) t.fail("region", "missing; expected [x_min, y_min, x_max, y_max] in m");
+    region.region = rect(t, "region");
+    t.finish();
+    o.stress_regions.push_back(std::move(region));
+  }
+}
+
 void read_output(TableReader& r, OutputSection& o) {
   o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
   o.snapshot_interval =
@@ -280,6 +300,7 @@ void read_output(TableReader& r, OutputSection& o) {
   o.energy_ledger = r.boolean("energy_ledger", o.energy_ledger);
   o.stress = r.boolean("stress", o.stress);
   if (r.has("stress_region")) o.stress_region = rect(r, "stress_region");
+  read_stress_regions(r, o);
   o.picture = r.boolean("picture", o.picture);
   o.pictures = r.texts("pictures");
   for (const std::string& p : o.pictures)

@@ -207,6 +207,12 @@ toml::table output_table(const OutputSection& o) {
                 {"movie", o.movie},
                 {"movie_color", o.movie_color}};
   if (o.stress_region) t.insert("stress_region", rect(*o.stress_region));
+  if (!o.stress_regions.empty()) {
+    toml::array regions;
+    for (const StressRegion& r : o.stress_regions)
+      regions.push_back(toml::table{{"name", r.name}, {"region", rect(r.region)}});
+    t.insert("stress_regions", regions);
+  }
   return t;
 }
 
