@@ -15,6 +15,7 @@
 #include "scenario/file/load.hpp"
 #include "support/run_dir.hpp"
 #include "support/run_scenario.hpp"
+#include "support/thermo_rows.hpp"
 
 namespace talus {
 namespace {
@@ -43,19 +44,6 @@ wall_material = "smooth"
 [output]
 stress = true
 )";
-
-// thermo.csv's last row by column name.
-std::map<std::string, double> last_thermo_row(const std::filesystem::path& dir) {
-  std::istringstream thermo(read_file((dir / "thermo.csv").string()));
-  std::string header, row, line;
-  std::getline(thermo, header);
-  while (std::getline(thermo, line)) row = line;
-  std::istringstream h(header), r(row);
-  std::map<std::string, double> last;
-  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
-    last[name] = std::stod(value);
-  return last;
-}
 
 Simulation simulation_of(const Scenario& s) {
   BuiltScenario b = build_scenario(s);
@@ -183,7 +171,7 @@ TEST(Stress, ARunRecordsItsStress) {
                                     "output.snapshot_interval=0.01", "output.picture=false"});
   const std::filesystem::path dir = testing::fresh_dir("stress_run");
   ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
-  std::map<std::string, double> last = last_thermo_row(dir);
+  std::map<std::string, double> last = testing::last_thermo_row(dir);
   ASSERT_TRUE(last.count("stress_yy") && last.count("fabric_xx"));
   EXPECT_GT(last["pressure"], 0.0);
   EXPECT_GT(last["stress_yy"], last["stress_xx"]);
@@ -211,7 +199,7 @@ region = [0.0, 0.015, 0.06, 0.12]
                                     "output.snapshot_interval=0", "output.picture=false"});
   const std::filesystem::path dir = testing::fresh_dir("stress_regions");
   ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
-  std::map<std::string, double> last = last_thermo_row(dir);
+  std::map<std::string, double> last = testing::last_thermo_row(dir);
   ASSERT_TRUE(last.count("lower_stress_yy") && last.count("upper_fabric_yy"));
   EXPECT_GT(last["lower_pressure"], last["upper_pressure"]);
   const double whole = last["stress_yy"] * 0.06 * 0.12;

@@ -10,6 +10,7 @@
 #include "scenario/file/load.hpp"
 #include "support/run_dir.hpp"
 #include "support/run_scenario.hpp"
+#include "support/thermo_rows.hpp"
 
 namespace talus {
 namespace {
@@ -32,18 +33,6 @@ snapshot_interval = 0
 picture = false
 )";
 
-std::map<std::string, double> last_thermo_row(const std::filesystem::path& dir) {
-  std::istringstream in(read_file((dir / "thermo.csv").string()));
-  std::string header, row, line;
-  std::getline(in, header);
-  while (std::getline(in, line)) row = line;
-  std::istringstream h(header), r(row);
-  std::map<std::string, double> out;
-  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
-    out[name] = std::stod(value);
-  return out;
-}
-
 // At rest, the perched grain presses on the fixed one with its weight, m g downward, to the
 // part in a thousand its damped bounce leaves after 0.3 s.
 TEST(FixedGrains, TheForceOnThemIsRecorded) {
@@ -53,7 +42,7 @@ TEST(FixedGrains, TheForceOnThemIsRecorded) {
   const double weight = b.world.particles.mass[1] * 9.81;
   const std::filesystem::path dir = testing::fresh_dir("fixed_force");
   ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
-  std::map<std::string, double> row = last_thermo_row(dir);
+  std::map<std::string, double> row = testing::last_thermo_row(dir);
   ASSERT_TRUE(row.count("force_fixed_y"));
   EXPECT_NEAR(row["force_fixed_y"], -weight, 1e-3 * weight);
   EXPECT_NEAR(row["force_fixed_x"], 0.0, 1e-9 * weight);

@@ -17,6 +17,7 @@
 #include "scenario/file/load.hpp"
 #include "support/run_dir.hpp"
 #include "support/staged_runs.hpp"
+#include "support/thermo_rows.hpp"
 
 namespace fs = std::filesystem;
 
@@ -39,18 +40,6 @@ double stage_end(const std::string& csv, const std::string& name) {
   if (at == std::string::npos) return -1.0;
   const std::size_t start = at + name.size() + 2;
   return std::stod(csv.substr(csv.find(',', start) + 1));
-}
-
-// The value of column `name` in the last row of a CSV file.
-double last_value(const std::string& csv, const std::string& name) {
-  std::istringstream in(csv);
-  std::string header, row, line;
-  std::getline(in, header);
-  while (std::getline(in, line)) row = line;
-  std::istringstream h(header), r(row);
-  for (std::string column, value; std::getline(h, column, ',') && std::getline(r, value, ',');)
-    if (column == name) return std::stod(value);
-  return NAN;
 }
 
 // The first column of every row of a CSV file after its header.
@@ -126,7 +115,7 @@ TEST(StageChanges, ATimestepChangedByAStageCountsTimeFromTheChange) {
   }
   // the ledger takes the gravity's change as the change's, not as energy from nowhere
   // (its terms here are of 1e-7 J, the gravity's change of 0.1 J)
-  EXPECT_LT(std::abs(last_value(file(whole / "thermo.csv"), "energy_imbalance")), 1e-10);
+  EXPECT_LT(std::abs(testing::last_thermo_row(whole)["energy_imbalance"]), 1e-10);
   // the snapshots' times in the collection are those they were taken at: the first after the
   // change an interval after it, on the new timestep's grid
   const std::string pvd = file(whole / "particles.pvd");
@@ -246,7 +235,7 @@ TEST(StageChanges, AGateRemovedOpensTheOrifice) {
     if (e.wall == gate && std::abs(e.end - fill_end) < 1e-8) ++ended_there; // 9 digits
   EXPECT_GT(ended_there, 0u);
   // the ledger takes the springs the gate took away as the change's: the imbalance stays small
-  EXPECT_LT(std::abs(last_value(file(whole / "thermo.csv"), "energy_imbalance")), 1e-6);
+  EXPECT_LT(std::abs(testing::last_thermo_row(whole)["energy_imbalance"]), 1e-6);
   // stopped in each stage (the change at the fill's end) and resumed: the same run
   ASSERT_EQ(start(s, parts, 0.5 * fill_end), cli::exit_stopped);
   ASSERT_EQ(resume(parts, fill_end + 0.02), cli::exit_stopped);
