@@ -18,6 +18,8 @@ packages=(
   liblammps-dev             # the LAMMPS package (lammps-package/): pair_style granthesis
   python3-lammps            # its tests: the styles registered in LAMMPS' Python module
   liggghts libliggghts-dev  # the same pair style in LIGGGHTS (lammps-package/liggghts/)
+  pybind11-dev python3-dev  # the Python module (python/)
+  python3-pytest            # its tests
 )
 
 missing=()

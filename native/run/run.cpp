@@ -76,17 +76,10 @@ void Run::make_observers() {
 
 Run::~Run() = default;
 
-RunOutcome Run::go() {
-  session_start_ = std::chrono::steady_clock::now();
-  session_wall_before_ = book_.wall_seconds;
+RunOutcome Run::go(std::uint64_t pause) {
   try {
-    for (auto& o : observers_) o->open(c_);
-    if (files_.fresh()) start();
-    if (!o_.set_now.empty()) {
-      change(o_.set_now, o_.set_now_source);
-      refresh_observers();
-    }
-    return steps();
+    if (!opened_) open();
+    return steps(pause);
   } catch (const WriteError& e) {
     stop_on_write_failure(e);
   } catch (const InstabilityError&) {
@@ -114,13 +107,26 @@ void Run::out_of_memory() const {
       sim_.time(), expected, dir));
 }
 
+void Run::open() {
+  session_start_ = std::chrono::steady_clock::now();
+  session_wall_before_ = book_.wall_seconds;
+  c_.first_step = sim_.step_count();
+  opened_ = true;
+  for (auto& o : observers_) o->open(c_);
+  if (files_.fresh()) start();
+  if (!o_.set_now.empty()) {
+    change(o_.set_now, o_.set_now_source);
+    refresh_observers();
+  }
+}
+
 void Run::start() {
   for (auto& o : observers_) o->start(c_);
   checkpoint_at(0.0); // a run killed before its first interval continues from here
 }
 
-RunOutcome Run::steps() {
-  c_.first_step = sim_.step_count();
+RunOutcome Run::steps(std::uint64_t pause) {
+  pause_ = pause;
   // a run killed after its last checkpoint, while drawing its pictures, has its end recorded
   const bool finished_before = !book_.ended.empty();
   std::string ended = finished_before ? book_.ended : "duration";
@@ -129,6 +135,7 @@ RunOutcome Run::steps() {
   due_.clear();
   for (const auto& o : observers_) due_.push_back(o->next_look(sim_.step_count()));
   while (!finished_before && sim_.step_count() < c_.stop_step) {
+    if (sim_.step_count() >= pause) return RunOutcome::paused;
     run_stretch(steps_to_next_look());
     follow_renumbering();
     look_after_step();
@@ -179,7 +186,7 @@ void Run::run_stretch(std::uint64_t steps) {
 // (the correction of one and the prediction of the next together).
 std::uint64_t Run::steps_to_next_look() const {
   const std::uint64_t k = sim_.step_count();
-  std::uint64_t next = std::min(c_.stop_step, k + 1000);
+  std::uint64_t next = std::min({c_.stop_step, k + 1000, std::max(pause_, k + 1)});
   for (const std::uint64_t d : due_) next = std::min(next, d);
   // a renumbering the run's own indices follow
   next = std::min(next, next_multiple(k, sim_.config().sort_interval));
@@ -251,6 +258,13 @@ void Run::finish(const std::string& why) {
 
 void Run::checkpoint() {
   checkpoint_at(wall_now());
+}
+
+void Run::stop_here() {
+  if (!opened_ || ended()) return;
+  checkpoint_at(wall_now());
+  progress_.finish();
+  write_run_json(wall_now(), sim_.step_count() - c_.first_step, "stop_at");
 }
 
 void Run::checkpoint_at(double wall) {

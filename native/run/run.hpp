@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -45,8 +46,9 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// How a call of Run::go ended.
-enum class RunOutcome { completed, stopped_at, interrupted };
+/// How a call of Run::go ended: at the run's end, at RunControl::stop_at (with a checkpoint), at
+/// a stop request (with a checkpoint), or at the step the caller paused it at (without one).
+enum class RunOutcome { completed, stopped_at, interrupted, paused };
 
 class SnapshotObserver;
 
@@ -57,13 +59,30 @@ public:
   Run(const Scenario& s, Simulation sim, RunBook book, std::filesystem::path dir, RunControl o,
       bool fresh);
   ~Run();
-  /// Opens the outputs, records a new run's start, and steps to the end, to
-  /// RunControl::stop_at or to a stop request, with a checkpoint there. Throws WriteError with
-  /// the outputs cut back to the last checkpoint, and InstabilityError with run.json saying so.
-  RunOutcome go();
+  /// Opens the outputs and records a new run's start (at the first call), and steps to the end,
+  /// to RunControl::stop_at or to a stop request, with a checkpoint there, or to step `pause`
+  /// (with every look due there done, and nothing else written): a caller that drives the run in
+  /// pieces (the Python module) calls go again to continue, with the same results, bit for bit,
+  /// as one call. Throws WriteError with the outputs cut back to the last checkpoint, and
+  /// InstabilityError with run.json saying so.
+  RunOutcome go(std::uint64_t pause = std::numeric_limits<std::uint64_t>::max());
+  /// The run as it stands now: its scenario with the changes made so far, and its book.
+  const Scenario& scenario() const { return s_; }
+  const RunBook& book() const { return book_; }
+  /// Whether the run has ended (and recorded its end); a change of simulation.duration to a
+  /// later time lets it go on (as talus resume --duration does).
+  bool ended() const { return !book_.ended.empty(); }
+  /// An ended run goes on, after a change of simulation.duration to a later time (its end's
+  /// records stay as they were written).
+  void go_on() { book_.ended.clear(); }
   const Simulation& simulation() const { return sim_; }
   /// Writes a checkpoint of the engine's state and the run's book now (the previous one kept).
   void checkpoint();
+  /// Stops a run paused before its end as RunControl::stop_at does: a checkpoint and run.json
+  /// (talus resume continues it). Does nothing to a run that has ended.
+  void stop_here();
+  /// Writes what the outputs hold in memory to their files (thermo.csv and the others).
+  void flush() { files_.flush(); }
   /// Changes the run from this step on: the scenario with every change so far and `set`; what
   /// changed in the engine (gravity, materials, the tangential law, drivers, the timestep,
   /// walls) is applied to it (apply_scenario_change), the events and observers are told
@@ -73,7 +92,8 @@ public:
   void change(const std::vector<std::string>& set, const std::string& source);
 
 private:
-  RunOutcome steps();
+  RunOutcome steps(std::uint64_t pause);
+  void open();
   void start();
   std::uint64_t steps_to_next_look() const;
   void look_after_step();
@@ -104,6 +124,8 @@ private:
   std::vector<std::uint64_t> due_; ///< the step each observer looks at next
   SnapshotObserver* snapshots_ = nullptr;
   std::uint64_t renumberings_seen_ = 0;
+  bool opened_ = false;                      ///< go was called: outputs open, start recorded
+  std::uint64_t pause_ = 0;                  ///< the step this call of go stops at, unrecorded
   bool checkpointed_ = false;                ///< a checkpoint of this run exists
   std::uint64_t checkpointed_snapshots_ = 0; ///< the snapshots the last checkpoint counts
   double session_wall_before_ = 0.0;         ///< wall seconds of the sessions before this one

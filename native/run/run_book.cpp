@@ -1,8 +1,10 @@
 // The run's bookkeeping (RunBook) as the text saved inside every checkpoint: one line per
 // item, numbers at full precision so a resume continues exactly.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <set>
 #include <sstream>
 
 #include <fmt/core.h>
@@ -70,8 +72,17 @@ std::string unescaped(const std::string& word) {
 } // namespace
 
 std::vector<std::string> RunBook::overrides() const {
+  std::vector<std::string> all;
+  for (const RunChange& c : changes) all.insert(all.end(), c.set.begin(), c.set.end());
+  // A key set again replaces what it was set to before, whatever came between (an override
+  // assigns), so only its last setting is kept, in the order of the last settings: a run
+  // changed at every few steps (a controller) loads its scenario with one override a key.
+  const auto key = [](const std::string& x) { return x.substr(0, x.find('=')); };
   std::vector<std::string> out;
-  for (const RunChange& c : changes) out.insert(out.end(), c.set.begin(), c.set.end());
+  std::set<std::string> seen;
+  for (auto x = all.rbegin(); x != all.rend(); ++x)
+    if (seen.insert(key(*x)).second) out.push_back(*x);
+  std::reverse(out.begin(), out.end());
   return out;
 }
 

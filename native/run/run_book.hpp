@@ -45,8 +45,8 @@ struct RunBook {
   std::vector<RunChange> changes;  ///< in the order they were made
   std::uint64_t scenario_hash = 0; ///< of the run folder's scenario.toml (0: not recorded)
   std::uint64_t run_id = 0;        ///< the run's identity (run_id_line; 0: not recorded)
-  /// Every change's "key=value" in order: the scenario of the run now is its folder's
-  /// scenario.toml with these.
+  /// Every change's "key=value" in order, each key's last setting only: the scenario of the run
+  /// now is its folder's scenario.toml with these.
   std::vector<std::string> overrides() const;
   /// The book of a run about to start from a built scenario.
   static RunBook of(const BuiltScenario& built);

@@ -99,7 +99,6 @@ ContainerShape build_container(const GeometrySection& g) {
     rectangle(c, g.width, g.height, b == "box" || b == "grain_press");
     c.fill = {{0.0, 0.0}, {g.width, b == "grain_press" ? g.height : g.height}};
     if (b == "grain_press") {
-      need(g.lid_speed > 0.0, "lid_speed", "the grain press needs lid_speed > 0 m/s");
       DriverSection d;
       d.type = "translate";
       d.target = "lid";

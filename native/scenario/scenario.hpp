@@ -92,7 +92,7 @@ struct GeometrySection {
   /// The orifice closed by a gate, the wall group "gate", after the packing too, until a driver
   /// moves it away (a stage that slides it open). Silo with an orifice, hopper, hourglass.
   bool gate = false;
-  double lid_speed = 0.0;            ///< m/s downward (grain_press)
+  double lid_speed = 0.0;            ///< m/s downward, negative upward (grain_press)
   double radius = 0.0;               ///< m (drum)
   double angular_velocity = 0.0;     ///< rad/s (drum)
   std::string walls = "segments";    ///< segments | particles

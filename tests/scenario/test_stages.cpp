@@ -323,3 +323,25 @@ TEST(Stages, BadStagesAreRefusedNamingTheKey) {
 
 } // namespace
 } // namespace talus
+
+namespace talus {
+namespace {
+
+// A key changed again and again (a controller's) is loaded once, at its last value, and the
+// scenario it gives is the one every change in order gives.
+TEST(Stages, AKeyChangedAgainIsLoadedOnceAtItsLastValue) {
+  run::RunBook book;
+  book.changes.push_back({1, 0.1, "a", {"simulation.gravity=[0, -1]", "materials.0.friction=0.2"}});
+  book.changes.push_back({2, 0.2, "b", {"simulation.gravity=[0, -2]"}});
+  book.changes.push_back({3, 0.3, "c", {"materials.0.friction=0.4", "simulation.gravity=[1, -3]"}});
+  EXPECT_EQ(book.overrides(),
+            (std::vector<std::string>{"materials.0.friction=0.4", "simulation.gravity=[1, -3]"}));
+  std::vector<std::string> every;
+  for (const run::RunChange& c : book.changes)
+    every.insert(every.end(), c.set.begin(), c.set.end());
+  EXPECT_EQ(to_toml(testing::builtin("tilted_box", every)),
+            to_toml(testing::builtin("tilted_box", book.overrides())));
+}
+
+} // namespace
+} // namespace talus

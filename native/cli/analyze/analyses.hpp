@@ -99,6 +99,12 @@ Section analyze_frost(RunData& run);
 /// The angle of repose of the heap in the last snapshot (post/repose.hpp).
 Section analyze_repose(RunData& run);
 
+/// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
+/// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose).
+void check_analysis_name(const std::string& what);
+/// The analysis `what` names (check_analysis_name), as `talus analyze DIR WHAT` runs it.
+Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o);
+
 /// DIR/analysis/report.html: one page, images embedded, readable offline.
 std::filesystem::path write_report(RunData& run, const std::vector<Section>& sections);
 

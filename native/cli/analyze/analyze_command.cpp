@@ -112,6 +112,28 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 
 } // namespace
 
+void check_analysis_name(const std::string& what) {
+  const std::vector<std::string> allowed{"thermo",      "forces", "profiles", "tracks",
+                                         "segregation", "frost",  "contacts", "repose"};
+  if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
+    throw InvalidArgument("analyze: '" + what +
+                          "' is not an analysis of a run folder; allowed: "
+                          "thermo, forces, profiles, tracks, segregation, frost, contacts, "
+                          "repose, all");
+}
+
+Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
+  check_analysis_name(what);
+  if (what == "thermo") return analyze_thermo(run);
+  if (what == "forces") return analyze_forces(run, o);
+  if (what == "profiles") return analyze_profiles(run, o);
+  if (what == "tracks") return analyze_tracks(run);
+  if (what == "contacts") return analyze_contacts(run);
+  if (what == "segregation") return analyze_segregation(run, o);
+  if (what == "repose") return analyze_repose(run);
+  return analyze_frost(run);
+}
+
 void add_analyze_command(CLI::App& app) {
   struct Options {
     std::string dir, what = "all", band, window;
@@ -165,34 +187,13 @@ void add_analyze_command(CLI::App& app) {
       analyze_sweep(o->dir, w, o->a);
       return;
     }
-    const std::vector<std::string> allowed{"thermo",   "forces",      "profiles",
-                                           "tracks",   "segregation", "frost",
-                                           "contacts", "repose",      "all"};
-    if (std::find(allowed.begin(), allowed.end(), w) == allowed.end())
-      throw InvalidArgument("analyze: '" + w +
-                            "' is not an analysis of a run folder; allowed: "
-                            "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                            "repose, all");
+    if (w != "all") check_analysis_name(w);
     RunData run{fs::path(o->dir)};
     if (w == "all") {
       const auto sections = analyze_all(run, o->a);
       fmt::print("report: {}\n", write_report(run, sections).string());
-    } else if (w == "thermo") {
-      analyze_thermo(run);
-    } else if (w == "forces") {
-      analyze_forces(run, o->a);
-    } else if (w == "profiles") {
-      analyze_profiles(run, o->a);
-    } else if (w == "tracks") {
-      analyze_tracks(run);
-    } else if (w == "contacts") {
-      analyze_contacts(run);
-    } else if (w == "segregation") {
-      analyze_segregation(run, o->a);
-    } else if (w == "repose") {
-      analyze_repose(run);
     } else {
-      analyze_frost(run);
+      analyze_one(run, w, o->a);
     }
     if (failed_charts() > 0) {
       fmt::print(stderr,

@@ -41,9 +41,6 @@ bool stop_signal() {
   return stop_requested != 0;
 }
 
-namespace {
-
-// The pictures and the movie the scenario asks for (output.pictures, output.movie).
 void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBook& book,
                        bool quiet) {
   for (const std::string& p : s.output.pictures) {
@@ -60,6 +57,8 @@ void scenario_pictures(const Scenario& s, const fs::path& dir, const run::RunBoo
     if (!quiet) fmt::print("movie: {} ({} frames)\n", (dir / "movie.mp4").string(), n);
   }
 }
+
+namespace {
 
 // Runs to the end (or a stop) in dir, answering SIGINT and SIGTERM with a checkpoint. `set`: the
 // changes this session makes as it starts (talus resume --set, --duration), from `source`.
@@ -87,6 +86,7 @@ int go(const Scenario& s, Simulation sim, run::RunBook book, const RunFolder& fo
   case run::RunOutcome::stopped_at:
     return exit_stopped;
   case run::RunOutcome::interrupted:
+  case run::RunOutcome::paused: // go() without a pause step never pauses
     break;
   }
   fmt::print(stderr,
@@ -94,11 +94,6 @@ int go(const Scenario& s, Simulation sim, run::RunBook book, const RunFolder& fo
              "talus resume {}\n",
              r.simulation().time(), dir.string());
   return exit_interrupted;
-}
-
-SimulationConfig with_threads(SimulationConfig c, const RunOptions& o) {
-  if (o.threads >= 0) c.threads = o.threads;
-  return c;
 }
 
 // A run stopped before its first checkpoint (killed while settling, say) has nothing to
@@ -154,7 +149,8 @@ int start_again(const std::string& text, const std::string& scenario_file, RunFo
 
 } // namespace
 
-int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
+std::pair<Simulation, run::RunBook> begin_run(const Scenario& s, BuiltScenario built,
+                                              const RunFolder& folder, int threads) {
   run::RunBook book = run::RunBook::of(built);
   // the resolved scenario, now with the dampers derived for the built grains
   book.run_id = run::new_run_id();
@@ -163,7 +159,13 @@ int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const Ru
   write_file_atomically((folder.path() / "scenario.toml").string(), text);
   write_file_atomically(started_copy(folder.path()).string(), text);
   book.scenario_hash = fnv1a_hash(text);
-  Simulation sim(std::move(built.world), with_threads(built.config, o));
+  SimulationConfig config = built.config;
+  if (threads >= 0) config.threads = threads;
+  return {Simulation(std::move(built.world), config), std::move(book)};
+}
+
+int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o) {
+  auto [sim, book] = begin_run(s, std::move(built), folder, o.threads);
   run::report_opening(sim, o.quiet);
   return go(s, std::move(sim), std::move(book), folder, o, true);
 }
@@ -213,17 +215,10 @@ std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const fs::path& d,
                         scenario_file + " --out NEW_FOLDER");
 }
 
-int resume_run(const std::string& dir, const RunOptions& o) {
-  const fs::path d(dir);
-  if (!fs::exists(d / "scenario.toml") && !never_checkpointed(d))
-    throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
-  RunFolder folder = RunFolder::open(dir); // held until the run ends
-  if (!fs::exists(d / "scenario.toml"))    // killed before it wrote even its scenario
-    throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped at its start; " +
-                          "start it again with: talus run SCENARIO --out " + dir);
-  const std::string scenario_file = (d / "scenario.toml").string();
+Resumption prepare_resume(const RunFolder& folder, const RunOptions& o) {
+  const fs::path& d = folder.path();
+  const std::string dir = d.string(), scenario_file = (d / "scenario.toml").string();
   const std::string text = read_file(scenario_file);
-  if (never_checkpointed(d)) return start_again(text, scenario_file, folder, o);
   auto [c, book] = checkpoint_to_resume(d, text);
   // an edit of scenario.toml: the keys a run may change, changed from here as --set does
   std::string started = text;
@@ -265,12 +260,28 @@ int resume_run(const std::string& dir, const RunOptions& o) {
   if (cut)
     throw WriteError("cannot cut the outputs of '" + dir +
                      "' back to its checkpoint: " + cut.message());
-  Simulation sim = Simulation::restore(std::move(c.state), with_threads(c.config, o));
-  run::report_opening(sim, o.quiet);
+  SimulationConfig config = c.config;
+  if (o.threads >= 0) config.threads = o.threads;
+  return {s, Simulation::restore(std::move(c.state), config), std::move(book), std::move(set),
+          std::move(source)};
+}
+
+int resume_run(const std::string& dir, const RunOptions& o) {
+  const fs::path d(dir);
+  if (!fs::exists(d / "scenario.toml") && !never_checkpointed(d))
+    throw InvalidArgument("'" + dir + "' is not a talus run folder (no scenario.toml)");
+  RunFolder folder = RunFolder::open(dir); // held until the run ends
+  if (!fs::exists(d / "scenario.toml"))    // killed before it wrote even its scenario
+    throw InvalidArgument("'" + dir + "' has no checkpoint: the run was stopped at its start; " +
+                          "start it again with: talus run SCENARIO --out " + dir);
+  const std::string scenario_file = (d / "scenario.toml").string();
+  if (never_checkpointed(d)) return start_again(read_file(scenario_file), scenario_file, folder, o);
+  Resumption r = prepare_resume(folder, o);
+  run::report_opening(r.sim, o.quiet);
   if (!o.quiet)
-    fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, sim.time(), sim.step_count());
-  return go(s, std::move(sim), std::move(book), folder, o, false, std::move(set),
-            std::move(source));
+    fmt::print("resuming {} at t = {:.6g} s (step {})\n", dir, r.sim.time(), r.sim.step_count());
+  return go(r.scenario, std::move(r.sim), std::move(r.book), folder, o, false, std::move(r.set),
+            std::move(r.source));
 }
 
 } // namespace talus::cli

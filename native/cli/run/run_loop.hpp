@@ -32,6 +32,15 @@ inline constexpr int exit_stopped = 4;       ///< stopped by --stop-at after a c
 void catch_stop_signals();
 bool stop_signal();
 
+/// The pictures and the movie the scenario asks for (output.pictures, output.movie), into `dir`.
+void scenario_pictures(const Scenario& s, const std::filesystem::path& dir,
+                       const run::RunBook& book, bool quiet);
+
+/// A new run's engine and book from a built scenario, with the resolved scenario (its dampers
+/// derived for the built grains) written as the folder's scenario.toml. `threads` >= 0 replaces
+/// the scenario's simulation.threads.
+std::pair<Simulation, run::RunBook> begin_run(const Scenario& s, BuiltScenario built,
+                                              const RunFolder& folder, int threads);
 /// Starts a new run in a run folder made (and locked) by RunFolder::create.
 int start_run(const Scenario& s, BuiltScenario built, RunFolder folder, const RunOptions& o);
 /// Starts a new run in `dir` (see RunFolder::create for what dir may hold) from a built scenario.
@@ -47,6 +56,18 @@ int settle_and_start(const Scenario& s, RunFolder folder, const RunOptions& o,
 /// Throws InvalidArgument with every reason when none is.
 std::pair<Checkpoint, run::RunBook> checkpoint_to_resume(const std::filesystem::path& d,
                                                          const std::string& scenario_text);
+/// What a resume continues from: the run's scenario now, its engine restored from the last good
+/// checkpoint with its book, and the changes the session makes as it starts (edits of
+/// scenario.toml, RunOptions::set and duration, checked on a copy), with the outputs cut back to
+/// the checkpoint. The folder must hold a checkpoint (never_checkpointed is false).
+struct Resumption {
+  Scenario scenario;
+  Simulation sim;
+  run::RunBook book;
+  std::vector<std::string> set;
+  std::string source;
+};
+Resumption prepare_resume(const RunFolder& folder, const RunOptions& o);
 /// Continues the run in `dir` from its last good checkpoint.
 int resume_run(const std::string& dir, const RunOptions& o);
 

@@ -223,7 +223,8 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
   g.wall_angle = r.number("wall_angle", g.wall_angle, 1.0, 89.0,
                           "(1, 89) degrees (a flat floor with an orifice: builder = \"silo\" "
                           "with orifice = WIDTH)");
-  g.lid_speed = r.number("lid_speed", g.lid_speed, 0.0, inf, ">= 0 m/s");
+  // signed, so that a controller (a stage, or Python) can stop the lid or lift it
+  g.lid_speed = r.number("lid_speed", g.lid_speed, -inf, inf, "a finite speed in m/s");
   g.radius = r.number("radius", g.radius, 0.0, inf, ">= 0 m");
   g.angular_velocity = r.number("angular_velocity", g.angular_velocity, -inf, inf, "rad/s");
   g.walls = r.choice("walls", g.walls, {"segments", "particles"});
