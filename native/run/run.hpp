@@ -78,6 +78,17 @@ public:
   const Simulation& simulation() const { return sim_; }
   /// Writes a checkpoint of the engine's state and the run's book now (the previous one kept).
   void checkpoint();
+  /// Between steps: adds free grains (ParticleSpec; mass and inertia 0: from the scenario's shape
+  /// and the material's density) after the checks a scenario's grains get: a finite place and
+  /// velocity, a radius > 0, a material of the scenario, no overlap with a grain or a wall, inside
+  /// the region the run's grains may be in. Returns their ids; recorded in changes.csv with
+  /// `source`, and the energy ledger takes their energy as the change's. Throws ScenarioError
+  /// with the run as it was.
+  std::vector<std::uint32_t> add_grains(std::vector<ParticleSpec> grains,
+                                        const std::string& source);
+  /// Between steps: removes the free grains with these ids (their contacts end), as add_grains
+  /// records it. Refuses, naming the id, an unknown one, a wall particle and a tracked grain.
+  void remove_grains(const std::vector<std::uint32_t>& ids, const std::string& source);
   /// Stops a run paused before its end as RunControl::stop_at does: a checkpoint and run.json
   /// (talus resume continues it). Does nothing to a run that has ended.
   void stop_here();
@@ -106,6 +117,8 @@ private:
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
   double wall_now() const;
 
+  void record_grain_change(const std::string& what, const std::string& source,
+                           double energy_before);
   void make_observers();
   void refresh_observers();
   void set_length();

@@ -125,6 +125,17 @@ public:
   /// springs); the list is built again before the next step's forces, so added walls are seen.
   /// Throws InvalidArgument for a removed wall that a driver moves.
   std::vector<std::int64_t> change_walls(const std::vector<bool>& removed, const Segments& added);
+  /// Between steps: appends particles (mass and inertia resolved, free or fixed), each with a new
+  /// id after the largest, and returns the index of the first. Their integrators' history is
+  /// that of free flight (gravity's acceleration, Verlet's previous force m g). The neighbour
+  /// list is built again at once, the other contacts keeping their springs. Throws InvalidArgument
+  /// for a material out of range or a moved particle.
+  std::size_t add_particles(const std::vector<ParticleSpec>& specs);
+  /// Between steps: removes the free particles marked in `removed` (one flag per particle); the
+  /// others keep their order, their ids and their contacts' springs (the list is built again at
+  /// once), and the drivers' targets follow. Returns each old index's new one, or -1 where it was
+  /// removed. Throws InvalidArgument for a wall or held particle marked.
+  std::vector<std::int64_t> remove_particles(const std::vector<bool>& removed);
   const World& world() const { return world_; }
   /// Mutable access, for setting up or changing the world between steps (not while stepping).
   /// The next steps test the neighbour list against every particle's build position, since

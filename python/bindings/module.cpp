@@ -2,6 +2,8 @@
 // docs/python.md). Errors carry the scenario's key and the allowed values, as on the command line.
 #include <Python.h>
 
+#include <array>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -87,6 +89,32 @@ void bind_session(py::module_& m) {
            })
       .def("change", &Session::change, py::arg("set"), py::arg("source"))
       .def("extend_to", &Session::extend_to)
+      .def("add_grains",
+           [](Session& s, const std::vector<std::array<double, 2>>& position,
+              const std::vector<double>& radius, const std::vector<std::array<double, 2>>& velocity,
+              const std::vector<double>& spin, std::uint16_t material, const std::string& source) {
+             const std::size_t k = position.size();
+             if (radius.size() != k || velocity.size() != k || spin.size() != k)
+               throw std::invalid_argument("add_grains: positions, radii, velocities and spins "
+                                           "must be as many");
+             std::vector<talus::ParticleSpec> grains(k);
+             for (std::size_t k = 0; k < grains.size(); ++k) {
+               grains[k].position = {position[k][0], position[k][1]};
+               grains[k].radius = radius[k];
+               grains[k].velocity = {velocity[k][0], velocity[k][1]};
+               grains[k].angular_velocity = spin[k];
+               grains[k].material = material;
+             }
+             return s.add_grains(grains, source);
+           })
+      .def("remove_grains", &Session::remove_grains)
+      .def("material_names",
+           [](const Session& s) {
+             std::vector<std::string> names;
+             for (const talus::Material& material : s.scenario().materials)
+               names.push_back(material.name);
+             return names;
+           })
       .def("checkpoint", &Session::checkpoint)
       .def("stop_here", &Session::stop_here)
       .def("flush", &Session::flush)

@@ -31,6 +31,15 @@ public:
   run::RunOutcome go(std::uint64_t until);
   /// "key=value" changes from this step on, checked and recorded as a stage's are.
   void change(const std::vector<std::string>& set, const std::string& source);
+  /// Grains added between steps (run::Run::add_grains): their ids.
+  std::vector<std::uint32_t> add_grains(const std::vector<ParticleSpec>& grains,
+                                        const std::string& source) {
+    return run_->add_grains(grains, source);
+  }
+  /// Grains removed between steps by id (run::Run::remove_grains).
+  void remove_grains(const std::vector<std::uint32_t>& ids, const std::string& source) {
+    run_->remove_grains(ids, source);
+  }
   /// Runs on to `duration` s in all (simulation.duration changed; an ended run goes on).
   void extend_to(double duration);
   /// A checkpoint now; stop_here: the checkpoint and run.json of a run stopped before its end.

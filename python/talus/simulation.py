@@ -3,7 +3,10 @@ import os
 import shutil
 import tempfile
 
+import numpy as np
+
 from . import _talus, toml_text
+from ._talus import ScenarioError
 from .analysis import read_table
 from .scenario import scenario as make_scenario
 
@@ -92,6 +95,42 @@ class Simulation:
         stage's set or `talus resume --set` change it, checked as the scenario loader checks it and
         recorded in changes.csv. talus.changeable_keys() lists the keys."""
         self._live().change(toml_text.assignments(changes), source)
+
+    def add_grains(self, positions, radii, *, velocities=None, spins=None, material=None,
+                   source="python"):
+        """Adds free grains between steps: positions (k, 2) m, radii (k,) m, velocities (k, 2)
+        m/s and spins (k,) rad/s (default 0), of one material (a name or an index; default the
+        scenario's first). Their mass and inertia follow from the scenario's particles.shape and
+        the material's density. Checked as a scenario's grains are (no overlap with a grain or a
+        wall; inside the region grains may be in): a ScenarioError leaves the run as it was.
+        Recorded in changes.csv. Returns the new grains' ids."""
+        s = self._live()
+        x = np.asarray(positions, dtype=float).reshape(-1, 2)
+        k = len(x)
+        r = np.broadcast_to(np.asarray(radii, dtype=float), (k,))
+        v = np.zeros((k, 2)) if velocities is None else np.asarray(velocities, float).reshape(k, 2)
+        w = np.zeros(k) if spins is None else np.broadcast_to(np.asarray(spins, float), (k,))
+        names = s.material_names()
+        if material is None:
+            m = 0
+        elif isinstance(material, str):
+            if material not in names:
+                raise ScenarioError(f"material '{material}' of the grains to add; allowed: "
+                                    + ", ".join(names))
+            m = names.index(material)
+        else:
+            m = int(material)
+            if not 0 <= m < len(names):
+                raise ScenarioError(f"material {material} of the grains to add; allowed: 0 to "
+                                    f"{len(names) - 1} ({', '.join(names)})")
+        return np.array(s.add_grains(x.tolist(), r.tolist(), v.tolist(), w.tolist(), m, source),
+                        dtype=np.uint32)
+
+    def remove_grains(self, ids, source="python"):
+        """Removes the free grains with these ids (sim.ids gives them) between steps; their
+        contacts end. Refused, naming the id, for an unknown id, a wall particle or a tracked
+        grain. Recorded in changes.csv."""
+        self._live().remove_grains([int(i) for i in np.atleast_1d(ids)], source)
 
     def checkpoint(self):
         """Writes a checkpoint now (talus.resume(folder) continues from the last one)."""

@@ -152,3 +152,30 @@ def test_bad_arguments_say_what_is_allowed(sim):
         sim.run(steps=10, callback=print)
     with pytest.raises(ValueError, match="allowed: 0"):
         talus.Simulation(SMALL, threads=-2)
+
+
+def test_ctrl_c_checkpoints_and_raises(tmp_path):
+    import signal
+    import threading
+
+    long = dict(SMALL, simulation=dict(SMALL["simulation"], duration=100.0))
+    sim = talus.Simulation(long, tmp_path / "r")
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.run()
+    timer.join()
+    stopped = sim.time
+    assert 0 < stopped < 100.0
+    sim.close()
+    with talus.resume(tmp_path / "r") as again:
+        assert again.time == stopped  # the checkpoint the interrupt wrote
+
+
+def test_stages_and_the_scenario_as_it_stands(tmp_path):
+    with talus.Simulation("tilted_box", set={"particles.count": 40, "simulation.duration": 0.2,
+                                             "simulation.threads": 1}) as sim:
+        assert sim.stage == 0
+        sim.run()
+        assert sim.stage >= 1  # settled, then tilted by the next stage
+        assert "1.703489" in sim.scenario_toml  # the tilt stage's gravity
