@@ -93,11 +93,11 @@ void bind_session(py::module_& m) {
            [](Session& s, const std::vector<std::array<double, 2>>& position,
               const std::vector<double>& radius, const std::vector<std::array<double, 2>>& velocity,
               const std::vector<double>& spin, std::uint16_t material, const std::string& source) {
-             const std::size_t k = position.size();
-             if (radius.size() != k || velocity.size() != k || spin.size() != k)
+             const std::size_t n = position.size();
+             if (radius.size() != n || velocity.size() != n || spin.size() != n)
                throw std::invalid_argument("add_grains: positions, radii, velocities and spins "
                                            "must be as many");
-             std::vector<talus::ParticleSpec> grains(k);
+             std::vector<talus::ParticleSpec> grains(n);
              for (std::size_t k = 0; k < grains.size(); ++k) {
                grains[k].position = {position[k][0], position[k][1]};
                grains[k].radius = radius[k];
