@@ -39,6 +39,7 @@ std::string vtp_particles(const Simulation& sim, bool stress) {
   array(out, "kind", 1, n,
         [&](std::size_t i) { return fmt::format("{}", static_cast<int>(p.kind[i])); });
   array(out, "material", 1, n, [&](std::size_t i) { return fmt::format("{}", p.material[i]); });
+  array(out, "mass", 1, n, [&](std::size_t i) { return fmt::format("{:.9g}", p.mass[i]); });
   if (stress) {
     const std::vector<Tensor2> s = particle_stresses(sim);
     array(out, "stress", 9, n, [&](std::size_t i) {
@@ -115,6 +116,10 @@ std::string vtp_contacts(const Simulation& sim) {
               [&](std::size_t k) { return fmt::format("{:.9g}", c[k].overlap); });
         array(out, "contact_point", 3, c.size(), [&](std::size_t k) {
           return fmt::format("{:.9g} {:.9g} 0", c[k].point.x, c[k].point.y);
+        });
+        // the force on `particle` (on `partner`: its opposite), for stresses and fields
+        array(out, "force", 3, c.size(), [&](std::size_t k) {
+          return fmt::format("{:.9g} {:.9g} 0", c[k].force.x, c[k].force.y);
         });
         // ids, as the particles' "id" array: indices change when the engine renumbers
         array(out, "particle", 1, c.size(),

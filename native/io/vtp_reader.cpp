@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "io/checkpoint.hpp"
 #include "io/whole_number.hpp"
@@ -65,6 +66,51 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::string& path) {
   return out;
 }
 
+namespace {
+
+bool has_array(const std::string& xml, const std::string& name) {
+  return xml.find("Name=\"" + name + "\"") != std::string::npos;
+}
+
+// The contacts of a contacts .vtp file into f's chains; the force vectors, contact points and
+// partners' kinds where the file has them (snapshots from before they were written lack them).
+void read_chains(const std::string& contacts, Frame& f) {
+  const std::string c = read_file(contacts);
+  const auto points = data_array(c, "position", contacts);
+  const auto normal = data_array(c, "normal_force", contacts);
+  const std::size_t n = normal.size();
+  if (points.size() != 6 * n) throw std::runtime_error(contacts + ": arrays of different lengths");
+  const bool vectors = has_array(c, "force") && has_array(c, "particle");
+  std::vector<double> force, point, particle, partner;
+  if (vectors) {
+    force = data_array(c, "force", contacts), point = data_array(c, "contact_point", contacts);
+    particle = data_array(c, "particle", contacts), partner = data_array(c, "partner", contacts);
+    if (force.size() != 3 * n || point.size() != 3 * n || particle.size() != n ||
+        partner.size() != n)
+      throw std::runtime_error(contacts + ": arrays of different lengths");
+  }
+  std::unordered_map<std::int64_t, bool> free_by_id;
+  for (std::size_t i = 0; i < f.id.size(); ++i) free_by_id[f.id[i]] = f.kind[i] == 0;
+  const auto is_free = [&](double id) {
+    const auto at = free_by_id.find(static_cast<std::int64_t>(id));
+    return at != free_by_id.end() && at->second;
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    Frame::Chain ch{
+        {points[6 * k], points[6 * k + 1]}, {points[6 * k + 3], points[6 * k + 4]}, normal[k]};
+    if (vectors) {
+      ch.force_on_from = {force[3 * k], force[3 * k + 1]};
+      ch.point = {point[3 * k], point[3 * k + 1]};
+      ch.from_free = is_free(particle[k]);
+      ch.to_free = partner[k] >= 0 && is_free(partner[k]);
+      ch.has_vector = true;
+    }
+    f.chains.push_back(ch);
+  }
+}
+
+} // namespace
+
 std::vector<double> read_contact_normal_forces(const std::string& contacts) {
   return data_array(read_file(contacts), "normal_force", contacts);
 }
@@ -82,6 +128,10 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
   const auto material = data_array(xml, "material", particles);
   const auto ids = data_array(xml, "id", particles);
   const std::size_t n = radius.size();
+  if (has_array(xml, "mass")) {
+    f.mass = data_array(xml, "mass", particles);
+    if (f.mass.size() != n) throw std::runtime_error(particles + ": arrays of different lengths");
+  }
   if (pos.size() != 3 * n || vel.size() != 3 * n || force.size() != 3 * n || kind.size() != n ||
       material.size() != n || ids.size() != n)
     throw std::runtime_error(particles + ": arrays of different lengths");
@@ -99,16 +149,7 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
     for (std::size_t k = 0; k + 6 <= w.size(); k += 6) // a, b as (x, y, 0) each
       f.walls.emplace_back(Vec2{w[k], w[k + 1]}, Vec2{w[k + 3], w[k + 4]});
   }
-  if (!contacts.empty() && std::filesystem::exists(contacts)) {
-    const std::string c = read_file(contacts);
-    const auto points = data_array(c, "position", contacts);
-    const auto normal = data_array(c, "normal_force", contacts);
-    if (points.size() != 6 * normal.size())
-      throw std::runtime_error(contacts + ": arrays of different lengths");
-    for (std::size_t k = 0; k < normal.size(); ++k)
-      f.chains.push_back(
-          {{points[6 * k], points[6 * k + 1]}, {points[6 * k + 3], points[6 * k + 4]}, normal[k]});
-  }
+  if (!contacts.empty() && std::filesystem::exists(contacts)) read_chains(contacts, f);
   return f;
 }
 

@@ -46,13 +46,17 @@ const char* outcome_name(talus::run::RunOutcome r) {
 }
 
 py::dict analyze(const std::string& dir, const std::string& what, const std::string& frames,
-                 double from, std::size_t bins, double cell) {
+                 double from, std::size_t bins, double cell, const std::string& axis,
+                 const std::string& kernel, double width) {
   talus::cli::check_analysis_name(what);
   talus::cli::AnalysisOptions o;
   o.frames = frames;
   o.from = from;
   o.bins = bins;
   o.cell = cell;
+  o.axis = axis;
+  o.kernel = kernel;
+  o.width = width;
   talus::cli::RunData run{std::filesystem::path(dir)};
   const talus::cli::Section s = talus::cli::analyze_one(run, what, o);
   py::dict d;
@@ -171,6 +175,7 @@ PYBIND11_MODULE(_talus, m) {
   m.def("changeable_keys", &talus::changeable_keys_text);
   m.def("changeable", &talus::changeable_during_run);
   m.def("analyze", &analyze, py::arg("folder"), py::arg("what"), py::arg("frames"),
-        py::arg("start"), py::arg("bins"), py::arg("cell"));
+        py::arg("start"), py::arg("bins"), py::arg("cell"), py::arg("axis"), py::arg("kernel"),
+        py::arg("width"));
   bind_session(m);
 }

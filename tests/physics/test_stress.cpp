@@ -15,6 +15,7 @@
 #include "scenario/file/load.hpp"
 #include "support/run_dir.hpp"
 #include "support/run_scenario.hpp"
+#include "support/smooth_bed.hpp"
 #include "support/thermo_rows.hpp"
 
 namespace talus {
@@ -22,28 +23,8 @@ namespace {
 
 constexpr double g = 9.81;
 
-// A frictionless bed settled in a box of frictionless walls, floor at y = 0.
-const char* bed = R"(
-name = "bed"
-[[materials]]
-name = "smooth"
-friction = 0.0
-[particles]
-count = 120
-material = "smooth"
-size = { distribution = "uniform", mean_radius = 0.003, spread = 0.0005 }
-[packing]
-method = "sedimentation"
-settle_energy = 1e-9
-settle_max_time = 3.0
-[geometry]
-builder = "box"
-width = 0.06
-height = 0.12
-wall_material = "smooth"
-[output]
-stress = true
-)";
+// A frictionless bed settled in a box of frictionless walls, floor at y = 0, with its stress.
+const std::string bed = std::string(testing::smooth_bed) + "[output]\nstress = true\n";
 
 Simulation simulation_of(const Scenario& s) {
   BuiltScenario b = build_scenario(s);

@@ -21,3 +21,20 @@ def test_an_unknown_analysis_names_the_allowed_ones(tmp_path):
         sim.run(steps=10)
     with pytest.raises(ValueError, match="allowed: thermo, forces"):
         talus.analyze(tmp_path / "r", "force")
+
+
+def test_fields_integrate_to_the_grains_mass(tmp_path):
+    with talus.Simulation(SMALL, tmp_path / "r") as sim:
+        sim.run()
+    r = talus.analyze(tmp_path / "r", "fields", start=0.02)
+    f = r["data"]["fields"]
+    assert f["axis"] == "y" and f["kernel"] == "gaussian" and f["frames"] >= 2
+    table = talus.read_table(tmp_path / "r" / "analysis" / "fields.csv")
+    assert {"y", "density", "contact_yy", "kinetic_xy"} <= set(table)
+    lucy = talus.analyze(tmp_path / "r", "fields", axis="x", kernel="lucy", width=0.006)
+    assert lucy["data"]["fields"]["width"] == 0.006 and lucy["data"]["fields"]["axis"] == "x"
+    with pytest.raises(ValueError, match="allowed: gaussian, lucy"):
+        talus.analyze(tmp_path / "r", "fields", kernel="box")
+    # the profile reaches four widths past the grains, beyond a Gaussian's tails: the mass to
+    # the trapezoid rule's error over points a quarter width apart
+    assert f["mass_integral"] == pytest.approx(f["mass"], rel=1e-4)

@@ -26,6 +26,13 @@ if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   [ -s "$dir/run/analysis/thermo.png" ] && [ -s "$dir/run/analysis/forces.png" ] || { echo "charts missing"; exit 1; }
 fi
 "$talus" analyze "$dir/run" nonsense 2> /dev/null && { echo "a bad analysis name was accepted"; exit 1; }
+# coarse-grained fields: the documented columns, and a chart
+"$talus" analyze "$dir/run" fields --kernel lucy > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+head -1 "$dir/run/analysis/fields.csv" | grep -q "^y,density,velocity_x,velocity_y,kinetic_xx,kinetic_xy,kinetic_yy,contact_xx,contact_xy,contact_yx,contact_yy$" || { echo "fields.csv columns"; exit 1; }
+grep -q '"kernel": "lucy"' "$dir/run/analysis/fields.json" || exit 1
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  [ -s "$dir/run/analysis/fields.png" ] || { echo "fields chart missing"; exit 1; }
+fi
 # a chart that fails (a damaged thermo.csv) makes the command fail, naming the chart
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   printf 'not,a,number\0\0\0\n' >> "$dir/run/thermo.csv"

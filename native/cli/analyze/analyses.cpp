@@ -30,6 +30,17 @@ const fs::path& RunData::out() {
   return out_;
 }
 
+std::vector<Frame> RunData::frames_with_contacts(double from) {
+  std::vector<Frame> out;
+  for (const Snapshot& s : snapshots_of(dir_))
+    if (s.time >= from - 1e-12)
+      out.push_back(
+          read_vtp_frame(s.particles.string(), s.walls.string(), s.time, s.contacts.string()));
+  if (out.empty())
+    throw InvalidArgument(fmt::format("--from {}: the run has no snapshots from then on", from));
+  return out;
+}
+
 bool RunData::has_snapshots() const {
   return fs::exists(dir_ / "particles.pvd");
 }

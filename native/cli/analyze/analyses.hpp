@@ -27,6 +27,8 @@ public:
   /// The snapshots (particles and walls, no contacts) from time `from` on; throws
   /// InvalidArgument when there are none.
   const std::vector<Frame>& frames(double from = 0.0);
+  /// The snapshots from `from` on with their contacts (force chains and force vectors).
+  std::vector<Frame> frames_with_contacts(double from);
   /// The mean radius of the free grains in the first snapshot, m.
   double mean_radius();
 
@@ -46,6 +48,9 @@ struct AnalysisOptions {
                       ///< the others nothing)
   double cell = 0.0;  ///< speed map cell, m (0: automatic)
   std::optional<std::pair<double, double>> window; ///< discharge: t0, t1 in s (none: steady)
+  std::string axis = "y";                          ///< fields: the profile's axis, x or y
+  std::string kernel = "gaussian";                 ///< fields: gaussian or lucy
+  double width = 0.0; ///< fields: the kernel's width, m (0: the mean grain radius)
 };
 
 /// What one analysis gives the report: its charts and key numbers.
@@ -98,9 +103,12 @@ Section analyze_segregation(RunData& run, const AnalysisOptions& o);
 Section analyze_frost(RunData& run);
 /// The angle of repose of the heap in the last snapshot (post/repose.hpp).
 Section analyze_repose(RunData& run);
+/// Coarse-grained profiles (post/coarse_grain.hpp) of density, velocity and stress along an
+/// axis, averaged over the snapshots from AnalysisOptions::from on.
+Section analyze_fields(RunData& run, const AnalysisOptions& o);
 
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
-/// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose).
+/// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields).
 void check_analysis_name(const std::string& what);
 /// The analysis `what` names (check_analysis_name), as `talus analyze DIR WHAT` runs it.
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o);

@@ -113,13 +113,13 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 } // namespace
 
 void check_analysis_name(const std::string& what) {
-  const std::vector<std::string> allowed{"thermo",      "forces", "profiles", "tracks",
-                                         "segregation", "frost",  "contacts", "repose"};
+  const std::vector<std::string> allowed{"thermo", "forces",   "profiles", "tracks", "segregation",
+                                         "frost",  "contacts", "repose",   "fields"};
   if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
     throw InvalidArgument("analyze: '" + what +
                           "' is not an analysis of a run folder; allowed: "
                           "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                          "repose, all");
+                          "repose, fields, all");
 }
 
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
@@ -131,6 +131,7 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
   if (what == "contacts") return analyze_contacts(run);
   if (what == "segregation") return analyze_segregation(run, o);
   if (what == "repose") return analyze_repose(run);
+  if (what == "fields") return analyze_fields(run, o);
   return analyze_frost(run);
 }
 
@@ -145,17 +146,19 @@ void add_analyze_command(CLI::App& app) {
       "analyses of a run folder, as CSV, JSON and PNG in DIR/analysis: thermo (energies, Z, "
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
       "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
-      "heap's angle of repose); with no WHAT "
+      "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles); "
+      "with no WHAT "
       "every one that applies, "
       "and report.html");
   cmd->add_option("dir", o->dir, "the run folder or sweep folder")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option("what", o->what,
-                  "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, or all "
-                  "(with "
-                  "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
-                  "result of its index.csv")
+  cmd->add_option(
+         "what", o->what,
+         "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, or "
+         "all (with "
+         "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
+         "result of its index.csv")
       ->capture_default_str();
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")
       ->capture_default_str()
@@ -175,6 +178,17 @@ void add_analyze_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0, 10000));
   cmd->add_option("--cell", o->a.cell, "profiles: speed map cell in m (0: two mean diameters)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--axis", o->a.axis, "fields: the profiles' axis")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"x", "y"}));
+  cmd->add_option("--kernel", o->a.kernel, "fields: the coarse-graining kernel")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"gaussian", "lucy"}));
+  cmd->add_option("--width", o->a.width,
+                  "fields: the kernel's width in m, a Gaussian's standard deviation or Lucy's "
+                  "cutoff (0: the mean grain radius; Lucy: twice it)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->callback([o] {

@@ -211,6 +211,24 @@ elif kind == "frost":
     c.axhline(0.0, color="grey", lw=0.5)
     c.set_xlabel("stone radius [mm]")
     c.set_ylabel("rise per cycle [mm]")
+elif kind == "fields":
+    axis = extra["axis"]
+    y = col(axis)
+    fig, (a, b, c) = plt.subplots(1, 3, figsize=(13, 4.5), sharey=True)
+    a.plot(col("density"), y)
+    a.set_xlabel("density [kg/m^2]")
+    a.set_ylabel(f"{axis} [m]")
+    b.plot(col("velocity_x"), y, label="v_x")
+    b.plot(col("velocity_y"), y, label="v_y")
+    b.set_xlabel("velocity [m/s]")
+    b.legend(fontsize=8)
+    for comp, label in [("xx", "sigma_xx"), ("yy", "sigma_yy"), ("xy", "sigma_xy")]:
+        c.plot([p + q for p, q in zip(col("contact_" + comp), col("kinetic_" + comp))], y,
+               label=label)
+    c.set_xlabel("stress, contact + kinetic [N/m]")
+    c.legend(fontsize=8)
+    fig.suptitle(f"{extra['kernel']} kernel, width {extra['width']:.3g} m, "
+                 f"{extra['frames']} snapshots")
 elif kind == "contacts":
     ended = [r for r in rows if r["touching"] == "0"]
     fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 11))

@@ -1,0 +1,120 @@
+// `talus analyze DIR fields`: coarse-grained profiles of density, velocity and stress along an
+// axis (post/coarse_grain.hpp), averaged over the snapshots, with the totals they integrate to.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/core.h>
+
+#include "cli/analyze/analyses.hpp"
+#include "io/checkpoint.hpp"
+#include "post/coarse_grain.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+double along(Vec2 v, int axis) {
+  return axis == 0 ? v.x : v.y;
+}
+
+// The profile's span and the extent across from the scenario's periodic box where there is one
+// along a direction, else from the free grains' extent over the frames.
+void span_and_across(const Scenario& s, const std::vector<Frame>& frames, CgOptions& o) {
+  double lo[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for (const Frame& f : frames)
+    for (std::size_t i = 0; i < f.position.size(); ++i)
+      if (f.kind[i] == 0)
+        for (int a = 0; a < 2; ++a) {
+          lo[a] = std::min(lo[a], along(f.position[i], a) - f.radius[i]);
+          hi[a] = std::max(hi[a], along(f.position[i], a) + f.radius[i]);
+        }
+  if (!(hi[0] > lo[0])) throw InvalidArgument("fields: the snapshots hold no free grains");
+  const std::string& periodic = s.geometry.periodic;
+  const bool wraps[2] = {periodic == "x" || periodic == "xy", periodic == "y" || periodic == "xy"};
+  const auto box = [&](int a, bool high) {
+    const Rect& b = *s.geometry.box;
+    return along(high ? b.hi : b.lo, a);
+  };
+  const int a = o.axis, b = 1 - o.axis;
+  if (wraps[a]) {
+    o.lo = box(a, false), o.hi = box(a, true), o.period = o.hi - o.lo;
+  } else {
+    o.lo = lo[a] - 4.0 * o.width, o.hi = hi[a] + 4.0 * o.width; // past a Gaussian's tails
+  }
+  o.across = wraps[b] ? box(b, true) - box(b, false) : hi[b] - lo[b];
+}
+
+} // namespace
+
+Section analyze_fields(RunData& run, const AnalysisOptions& a) {
+  const std::vector<Frame> frames = run.frames_with_contacts(std::max(a.from, 0.0));
+  CgOptions o;
+  o.kernel = parse_cg_kernel(a.kernel);
+  o.axis = a.axis == "x" ? 0 : 1;
+  o.width = a.width > 0.0 ? a.width : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * run.mean_radius();
+  span_and_across(run.scenario(), frames, o);
+  o.points = static_cast<std::size_t>(
+      std::clamp(std::ceil(4.0 * (o.hi - o.lo) / o.width) + 1.0, 50.0, 4000.0));
+  const FieldProfile p = coarse_grain(frames, o);
+
+  const char* name = o.axis == 0 ? "x" : "y";
+  std::string csv = fmt::format("{},density,velocity_x,velocity_y,kinetic_xx,kinetic_xy,"
+                                "kinetic_yy,contact_xx,contact_xy,contact_yx,contact_yy\n",
+                                name);
+  double mass_integral = 0.0;
+  Tensor2 contact_integral = Tensor2::Zero();
+  const double dy = (o.hi - o.lo) / static_cast<double>(o.points - 1);
+  for (std::size_t k = 0; k < p.at.size(); ++k) {
+    const Vec2 v = p.velocity(k);
+    const Tensor2& K = p.kinetic[k];
+    const Tensor2& C = p.contact[k];
+    csv += fmt::format(
+        "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}\n", p.at[k],
+        p.density[k], v.x, v.y, K(0, 0), K(0, 1), K(1, 1), C(0, 0), C(0, 1), C(1, 0), C(1, 1));
+    const double w = (k == 0 || k + 1 == p.at.size()) ? 0.5 * dy : dy; // trapezoids
+    mass_integral += w * o.across * p.density[k];
+    contact_integral += (w * o.across) * C;
+  }
+  double mass = 0.0;
+  for (const Frame& f : frames)
+    for (std::size_t i = 0; i < f.mass.size(); ++i)
+      if (f.kind[i] == 0) mass += f.mass[i];
+  mass /= static_cast<double>(frames.size());
+
+  const fs::path out = run.out();
+  write_file_atomically((out / "fields.csv").string(), csv);
+  write_file_atomically(
+      (out / "fields.json").string(),
+      fmt::format("{{\"axis\": \"{}\", \"kernel\": \"{}\", \"width\": {}, \"across\": {}, "
+                  "\"points\": {}, \"frames\": {}, \"from\": {}, \"to\": {}, \"mass\": {}, "
+                  "\"mass_integral\": {}, \"contact_integral\": [[{}, {}], [{}, {}]]}}\n",
+                  name, cg_kernel_name(o.kernel), json_number(o.width), json_number(o.across),
+                  o.points, frames.size(), json_number(frames.front().time),
+                  json_number(frames.back().time), json_number(mass), json_number(mass_integral),
+                  json_number(contact_integral(0, 0)), json_number(contact_integral(0, 1)),
+                  json_number(contact_integral(1, 0)), json_number(contact_integral(1, 1))));
+  Section s{"Coarse-grained fields", {}, {}, {}};
+  s.summary = fmt::format(
+      "Density, velocity and stress (kinetic and contact, compression positive, N/m in 2D) along "
+      "{}, coarse-grained with a {} kernel of width {:.3g} m over {:.3g} m across (Weinhart et al. "
+      "2012), averaged over {} snapshots from t = {:.3g} to {:.3g} s.",
+      name, cg_kernel_name(o.kernel), o.width, o.across, frames.size(), frames.front().time,
+      frames.back().time);
+  s.numbers = {{"kernel, width", fmt::format("{}, {:.3g} m", cg_kernel_name(o.kernel), o.width)},
+               {"mass: grains, integral of the density",
+                fmt::format("{:.6g} kg, {:.6g} kg", mass, mass_integral)},
+               {"snapshots", fmt::format("{}", frames.size())}};
+  fmt::print("fields: along {}, {} kernel of width {:.3g} m, {} snapshots; mass {:.6g} kg, "
+             "integral of the density {:.6g} kg\n",
+             name, cg_kernel_name(o.kernel), o.width, frames.size(), mass, mass_integral);
+  if (plot(out, "fields", out / "fields.csv", out / "fields.png", out / "fields.json"))
+    s.charts.push_back(out / "fields.png");
+  for (const auto& chart : s.charts) fmt::print("  chart: {}\n", chart.string());
+  return s;
+}
+
+} // namespace talus::cli
