@@ -148,7 +148,7 @@ ContainerShape build_container(const GeometrySection& g) {
     c.bounds = c.fill;
   }
   for (const SegmentSpec& s : g.segments) {
-    add(c, "extra", s.a, s.b);
+    add(c, s.group, s.a, s.b);
     // the extra walls are part of the container: a grain on them has not escaped it
     if (c.bounds.hi.x > c.bounds.lo.x && c.bounds.hi.y > c.bounds.lo.y)
       for (const Vec2 end : {s.a, s.b}) {

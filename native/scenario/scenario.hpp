@@ -77,6 +77,7 @@ struct PackingSection {
 struct SegmentSpec {
   Vec2 a;
   Vec2 b;
+  std::string group = "extra"; ///< the wall group it joins (driven, measured by this name)
   friend bool operator==(const SegmentSpec&, const SegmentSpec&) = default;
 };
 

@@ -8,6 +8,7 @@
 
 #include "io/checkpoint.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/file/toml_reader.hpp"
 #include "support/run_dir.hpp"
 #include "support/run_scenario.hpp"
 #include "support/thermo_rows.hpp"
@@ -68,6 +69,41 @@ velocity = [0.0, 0.05]
   EXPECT_NEAR(p.position[0].y, 0.02 + 0.05 * c.state.time, 1e-12);
   EXPECT_GT(p.position[1].y, 0.04 + 0.009); // lifted on top of it
   std::filesystem::remove_all(dir);
+}
+
+// Hand-made walls join the groups they name: a plate under the perched grains (group "plate"),
+// driven up by name, lifts them, and thermo.csv has its force; the group's name is checked.
+TEST(FixedGrains, NamedSegmentGroupsAreDrivenAndMeasured) {
+  const Scenario s = load_scenario(std::string(perched) + R"(
+[[geometry.segments]]
+a = [0.02, 0.005]
+b = [0.08, 0.005]
+group = "plate"
+[[drivers]]
+type = "translate"
+target = "plate"
+velocity = [0.0, 0.02]
+)",
+                                   "plate.toml", {"simulation.duration=0.2"});
+  const BuiltScenario b = build_scenario(s);
+  ASSERT_EQ(b.groups.at("plate").segments.size(), 1u);
+  EXPECT_FALSE(b.groups.count("extra"));
+  const std::filesystem::path dir = testing::fresh_dir("segment_group");
+  ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
+  const Checkpoint c = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "x");
+  const Segment& plate = c.state.world.walls[b.groups.at("plate").segments[0]];
+  EXPECT_NEAR(plate.a.y, 0.005 + 0.02 * c.state.time, 1e-12);
+  std::map<std::string, double> row = testing::last_thermo_row(dir);
+  EXPECT_TRUE(row.count("force_plate_y"));
+  std::filesystem::remove_all(dir);
+  for (const char* bad : {"walls", "fixed", "top plate", ""})
+    EXPECT_THROW(load_scenario(std::string(perched) +
+                                   "[[geometry.segments]]\na = [0, 0]\nb = [1, "
+                                   "0]\ngroup = \"" +
+                                   bad + "\"\n",
+                               "bad.toml"),
+                 ScenarioError)
+        << bad;
 }
 
 } // namespace

@@ -241,7 +241,17 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
   for (const toml::table* t : r.tables("segments")) {
     TableReader sr(*t, file, r.qualified("segments") + "." + std::to_string(k++));
     if (!sr.has("a") || !sr.has("b")) sr.fail_table("a = [x, y] and b = [x, y] are required");
-    g.segments.push_back({sr.vec2("a", {}), sr.vec2("b", {})});
+    SegmentSpec seg{sr.vec2("a", {}), sr.vec2("b", {})};
+    seg.group = sr.text("group", seg.group);
+    // a name thermo.csv's columns (force_NAME_x) and a driver's target can carry; "walls" is
+    // every wall's group and "fixed" the fixed grains'
+    if (seg.group.empty() || seg.group == "walls" || seg.group == "fixed" ||
+        seg.group.find_first_not_of(
+            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+      sr.fail("group", "'" + seg.group +
+                           "'; allowed: a name of letters, digits and _, other than walls and "
+                           "fixed (default extra)");
+    g.segments.push_back(seg);
     sr.finish();
   }
 }

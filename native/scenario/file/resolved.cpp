@@ -162,7 +162,7 @@ toml::table geometry_table(const GeometrySection& g) {
   if (g.box) geometry.insert("box", rect(*g.box));
   toml::array segments;
   for (const SegmentSpec& seg : g.segments)
-    segments.push_back(toml::table{{"a", vec(seg.a)}, {"b", vec(seg.b)}});
+    segments.push_back(toml::table{{"a", vec(seg.a)}, {"b", vec(seg.b)}, {"group", seg.group}});
   if (!segments.empty()) geometry.insert("segments", segments);
   return geometry;
 }
