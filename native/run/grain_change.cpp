@@ -62,8 +62,7 @@ void Run::record_grain_change(const std::string& what, const std::string& source
   WorldChange done;
   done.energy_before = energy_before;
   for (auto& o : observers_) o->changed(c_, done);
-  std::ostream& log = files_.open("changes.csv", "time,step,source,change\n");
-  log << fmt::format("{:.9g},{},\"{}\",\"{}\"\n", sim_.time(), sim_.step_count(), source, what);
+  log_change(source, what);
 }
 
 std::vector<std::uint32_t> Run::add_grains(std::vector<ParticleSpec> grains,

@@ -19,6 +19,8 @@ namespace talus::run {
 
 namespace {
 
+constexpr const char* changes_header = "time,step,source,change\n";
+
 // output.checkpoint_interval: a checkpoint now and then, after the other observers have looked.
 class CheckpointEvent final : public Observer {
 public:
@@ -224,18 +226,22 @@ void Run::change(const std::vector<std::string>& set, const std::string& source)
   done.wall_index = apply_scenario_change(sim_, s_, next, book_);
   for (auto& o : observers_) o->changed(c_, done);
   book_.changes.push_back({sim_.step_count(), sim_.time(), source, set});
-  std::ostream& log = files_.open("changes.csv", "time,step,source,change\n");
+  files_.open("changes.csv", changes_header); // a change of nothing is listed too: the header
+  for (const std::string& x : set) log_change(source, x);
+  s_ = std::move(next);
+  set_length();
+  observers_stale_ = true;
+}
+
+void Run::log_change(const std::string& source, const std::string& change) {
+  std::ostream& log = files_.open("changes.csv", changes_header);
   const auto quoted = [](std::string text) { // a CSV field: its quotes doubled
     for (std::size_t at = text.find('"'); at != std::string::npos; at = text.find('"', at + 2))
       text.insert(at, 1, '"');
     return '"' + text + '"';
   };
-  for (const std::string& x : set)
-    log << fmt::format("{:.9g},{},{},{}\n", sim_.time(), sim_.step_count(), quoted(source),
-                       quoted(x));
-  s_ = std::move(next);
-  set_length();
-  observers_stale_ = true;
+  log << fmt::format("{:.9g},{},{},{}\n", sim_.time(), sim_.step_count(), quoted(source),
+                     quoted(change));
 }
 
 // The engine renumbers the particles now and then (simulation.sort_every): the run's own

@@ -117,6 +117,8 @@ private:
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
   double wall_now() const;
 
+  /// One row of changes.csv: now, `source` and what changed, each quoted as CSV.
+  void log_change(const std::string& source, const std::string& change);
   void record_grain_change(const std::string& what, const std::string& source,
                            double energy_before);
   void make_observers();
