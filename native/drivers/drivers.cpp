@@ -1,5 +1,6 @@
 #include "drivers/drivers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -7,6 +8,49 @@
 #include "talus/vibration.hpp"
 
 namespace talus {
+
+namespace {
+// The width of the servo's walls across its direction: the span of their end points on the
+// perpendicular.
+double width_across(const Servo& s, const DriverTargets& t, const Segments& walls) {
+  const Vec2 across{-s.direction.y, s.direction.x};
+  double lo = 0.0, hi = 0.0;
+  bool first = true;
+  for (const auto k : t.segments)
+    for (const Vec2 end : {walls[k].a, walls[k].b}) {
+      const double u = dot(end, across);
+      lo = first ? u : std::min(lo, u), hi = first ? u : std::max(hi, u), first = false;
+    }
+  return hi - lo;
+}
+
+void attach_servo(Servo& s, const DriverTargets& t, const Segments& walls) {
+  const double l = norm(s.direction);
+  require(l > 0.0, "servo driver: direction must be a non-zero vector");
+  s.direction = s.direction / l;
+  require(t.particles.empty(), "servo driver: its group holds " +
+                                   std::to_string(t.particles.size()) +
+                                   " wall particles; a servo drives wall segments only");
+  require(!t.segments.empty(), "servo driver: its group has no wall segment");
+  for (const auto k : t.segments)
+    require(k < walls.size(), "driver: segment index " + std::to_string(k) + " out of range");
+  require(std::isfinite(s.max_speed) && s.max_speed > 0.0,
+          "servo driver: max_speed must be > 0 m/s");
+  require(s.relaxation > 0.0 && s.relaxation <= 1.0,
+          "servo driver: relaxation must be in (0, 1] (the fraction of the load's error closed "
+          "per step: above 1 the wall overshoots)");
+  require(std::isfinite(s.force) && std::isfinite(s.stress) && s.stress >= 0.0,
+          "servo driver: force (N) and stress (N/m) must be finite, stress >= 0");
+  if (s.stress > 0.0) {
+    const double width = width_across(s, t, walls);
+    require(width > 0.0, "servo driver: stress needs walls with a width across direction "
+                         "(these are parallel to it); give force instead");
+    s.force = s.stress * width;
+  }
+  s.displacement = 0.0;
+  s.speed = 0.0;
+}
+} // namespace
 
 void attach(Driver& d, const Particles& p, const Segments& walls) {
   if (auto* v = std::get_if<Vibrate>(&d.motion)) {
@@ -16,6 +60,7 @@ void attach(Driver& d, const Particles& p, const Segments& walls) {
             "vibrate driver: amplitude (m) and frequency (Hz) must be >= 0");
     v->direction = v->direction / l;
   }
+  if (auto* s = std::get_if<Servo>(&d.motion)) attach_servo(*s, d.targets, walls);
   d.particle_origin.clear();
   d.angle_origin.clear();
   for (const auto i : d.targets.particles) {
@@ -64,6 +109,9 @@ Pose pose_at(const Motion& m, double t) {
   } else if (const auto* tr = std::get_if<Translate>(&m)) {
     pose.offset = t * tr->velocity;
     pose.velocity = tr->velocity;
+  } else if (const auto* servo = std::get_if<Servo>(&m)) {
+    pose.offset = servo->displacement * servo->direction;
+    pose.velocity = servo->speed * servo->direction;
   } else if (const auto* r = std::get_if<Rotate>(&m)) {
     pose.angle = r->angular_velocity * t;
     pose.omega = r->angular_velocity;

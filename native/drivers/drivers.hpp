@@ -37,7 +37,22 @@ struct Rotate {
   double angular_velocity = 0.0; ///< rad/s, counter-clockwise positive
 };
 
-using Motion = std::variant<Vibrate, Translate, Rotate>;
+/// A wall held at a target load by a servo controller (docs/model.md, "Servo walls"): after each
+/// step the wall takes the speed along `direction` that would close the fraction `relaxation` of
+/// the load's error in the next step if the grains stood still, given the stiffness and the
+/// damping of the wall's contacts (servo.hpp). Drives wall segments only.
+struct Servo {
+  Vec2 direction{0.0,
+                 -1.0};    ///< the way the wall moves to press on the grains; normalised on attach
+  double force = 0.0;      ///< N: the load wanted (stress times the wall's width, on attach)
+  double stress = 0.0;     ///< N/m: the load per width of the wall across direction, or 0
+  double max_speed = 0.0;  ///< m/s: the fastest the wall moves, either way
+  double relaxation = 0.5; ///< the fraction of the error closed per step, in (0, 1]
+  double displacement = 0.0; ///< m along direction since start_time (the controller's state)
+  double speed = 0.0;        ///< m/s along direction, chosen after the last step
+};
+
+using Motion = std::variant<Vibrate, Translate, Rotate, Servo>;
 
 struct Driver {
   Motion motion;
@@ -51,7 +66,8 @@ struct Driver {
   std::vector<Vec2> segment_origin; ///< a, b, a, b, ...
 };
 
-/// Checks the targets and records their reference positions (the time origin, start_time).
+/// Checks the motion and the targets and records their reference positions (the time origin,
+/// start_time); a servo starts at rest where its walls are.
 void attach(Driver& d, const Particles& p, const Segments& walls);
 /// For a driver read back from a checkpoint (attached when it was saved): what does not fit the
 /// particles and walls, in words, or "" (its targets in range, a particle target of kind moved,

@@ -227,6 +227,9 @@ Driver read_driver(Reader& r, std::uint32_t version) {
   case 2:
     d.motion = r.pod<Rotate>();
     break;
+  case 3:
+    d.motion = r.pod<Servo>();
+    break;
   default:
     r.fail("unknown driver type");
   }

@@ -49,6 +49,11 @@ std::optional<std::string> refusal(const Scenario& s) {
       return refused("materials", "material '" + m.name +
                                       "' is rigid, which pair_coeff does not express yet; allowed: "
                                       "rigid = false");
+  for (const DriverSection& d : s.drivers)
+    if (d.type == "servo")
+      return refused("drivers", "a servo driver has no counterpart in fix granthesis/wall; "
+                                "allowed types: vibrate, translate, rotate (docs/lammps.md names "
+                                "LAMMPS' own ways to hold a wall at a load)");
   if (s.frost.model == "front")
     return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
                                   "(fix frost/heave)");

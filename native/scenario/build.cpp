@@ -43,6 +43,7 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
 Motion motion_of(const DriverSection& d) {
   if (d.type == "vibrate") return Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
   if (d.type == "translate") return Translate{d.velocity};
+  if (d.type == "servo") return Servo{d.direction, d.force, d.stress, d.max_speed, d.relaxation};
   return Rotate{d.centre, d.angular_velocity};
 }
 
@@ -312,12 +313,22 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
       throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
                           "' in this geometry; groups: " + names);
     }
+    if (d.type == "servo" && !group->second.particles.empty())
+      throw ScenarioError("key 'drivers.target': the group '" + d.target + "' holds " +
+                          std::to_string(group->second.particles.size()) +
+                          " wall particles; a servo drives wall segments only (a group of "
+                          "segments: floor, left, right, lid, or one of geometry.segments)");
     // fixed grains a driver moves are moved grains (the container's wall particles are made so)
     for (const std::uint32_t i : group->second.particles)
       if (out.world.particles.kind[i] == Kind::fixed) out.world.particles.kind[i] = Kind::moved;
     Driver driver;
     driver.targets = group->second;
     driver.motion = motion_of(d);
+    try { // the checks the engine makes as it starts, made here with the key to name
+      attach(driver, out.world.particles, out.world.walls);
+    } catch (const InvalidArgument& e) {
+      throw ScenarioError("drivers (target '" + d.target + "'): " + e.what());
+    }
     out.world.drivers.push_back(std::move(driver));
   }
 }

@@ -105,7 +105,7 @@ struct GeometrySection {
 };
 
 struct DriverSection {
-  std::string type;             ///< vibrate | translate | rotate
+  std::string type;             ///< vibrate | translate | rotate | servo
   std::string target = "walls"; ///< a wall group of the geometry
   double amplitude = 0.0;       ///< m
   double frequency = 0.0;       ///< Hz
@@ -114,6 +114,10 @@ struct DriverSection {
   Vec2 velocity{};               ///< m/s
   Vec2 centre{};                 ///< m
   double angular_velocity = 0.0; ///< rad/s
+  double force = 0.0;            ///< servo: N, the load wanted
+  double stress = 0.0;           ///< servo: N/m, the load per width of the walls (or force)
+  double max_speed = 0.0;        ///< servo: m/s (simulation.impact_speed unless given)
+  double relaxation = 0.5;       ///< servo: the fraction of the load's error closed per step
 };
 
 struct TrackSection {

@@ -159,7 +159,9 @@ void Simulation::choose_features() {
 
 void Simulation::advance(bool fuse) {
   if (features_stale_) choose_features(); // edits happen between run() calls: nothing is fused
-  fuse = fuse && !features_.rolling;      // the rolling pass comes between forces and correction
+  // the rolling pass comes between forces and correction; a servo reads the contacts between
+  // the force stage and the next prediction, which a fused step does at once
+  fuse = fuse && !features_.rolling && !has_servo();
   // from the clock's origin, not by adding dt: no rounding builds up (and with the origin at 0,
   // the same bits as (steps + 1) dt)
   const double t_next =
@@ -168,6 +170,7 @@ void Simulation::advance(bool fuse) {
   move_bodies(t_next);
   update_neighbours(drifted);
   const PassReport forces = contacts(fuse);
+  if (features_.driven) drive_servos();
   correct(fuse, forces);
   ++steps_;
   time_ = t_next;

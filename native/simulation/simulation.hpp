@@ -211,6 +211,10 @@ private:
   /// prediction) done in it, particle by particle. Stops the run on an overlap past the guard's
   /// limit while it is there.
   PassReport contacts(bool fuse);
+  /// After stage 4: each servo reads its walls' load and contacts and takes its next speed
+  /// (drivers/servo.hpp).
+  void drive_servos();
+  bool has_servo() const;
   /// Stage 5: the integrator's correction (and with `fuse` the next step's prediction).
   void correct(bool fuse, const PassReport& forces);
   /// Stage 6: the stability guard (non-finite state, overlap too deep, a grain escaped).

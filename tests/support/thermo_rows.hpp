@@ -4,22 +4,31 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/checkpoint.hpp"
 
 namespace talus::testing {
 
+/// Every row of dir/thermo.csv, each value under its column's name.
+inline std::vector<std::map<std::string, double>> thermo_rows(const std::filesystem::path& dir) {
+  std::istringstream thermo(read_file((dir / "thermo.csv").string()));
+  std::string header, line;
+  std::getline(thermo, header);
+  std::vector<std::map<std::string, double>> rows;
+  while (std::getline(thermo, line)) {
+    std::istringstream h(header), r(line);
+    std::map<std::string, double>& row = rows.emplace_back();
+    for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
+      row[name] = std::stod(value);
+  }
+  return rows;
+}
+
 /// The last row of dir/thermo.csv, each value under its column's name.
 inline std::map<std::string, double> last_thermo_row(const std::filesystem::path& dir) {
-  std::istringstream thermo(read_file((dir / "thermo.csv").string()));
-  std::string header, row, line;
-  std::getline(thermo, header);
-  while (std::getline(thermo, line)) row = line;
-  std::istringstream h(header), r(row);
-  std::map<std::string, double> last;
-  for (std::string name, value; std::getline(h, name, ',') && std::getline(r, value, ',');)
-    last[name] = std::stod(value);
-  return last;
+  const auto rows = thermo_rows(dir);
+  return rows.empty() ? std::map<std::string, double>{} : rows.back();
 }
 
 } // namespace talus::testing

@@ -256,9 +256,27 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
   }
 }
 
-DriverSection read_driver(TableReader& r) {
+// A servo's keys (docs/scenarios.md): one target, force or stress, and a direction given.
+void read_servo(TableReader& r, DriverSection& d, double impact_speed) {
+  d.force = r.number("force", 0.0, -inf, inf, "N");
+  d.stress = r.number("stress", 0.0, 0.0, inf, ">= 0 N/m");
+  d.max_speed = r.number("max_speed", impact_speed, 1e-12, inf, "> 0 m/s");
+  d.relaxation = r.number("relaxation", d.relaxation, 1e-9, 1.0, "in (0, 1]");
+  if (d.type != "servo") {
+    for (const char* key : {"force", "stress", "max_speed", "relaxation"})
+      if (r.has(key)) r.fail(key, "only a servo driver has it (this one is " + d.type + ")");
+    return;
+  }
+  if (r.has("force") == r.has("stress"))
+    r.fail("force", "a servo needs one target: force (N) or stress (N/m), not both");
+  if (!r.has("direction"))
+    r.fail("direction", "a servo needs it: the way its walls move to press on the grains, "
+                        "[0, -1] for a lid");
+}
+
+DriverSection read_driver(TableReader& r, double impact_speed) {
   DriverSection d;
-  d.type = r.choice("type", "", {"vibrate", "translate", "rotate"});
+  d.type = r.choice("type", "", {"vibrate", "translate", "rotate", "servo"});
   d.target = r.text("target", d.target);
   d.amplitude = r.number("amplitude", 0.0, 0.0, inf, ">= 0 m");
   d.frequency = r.number("frequency", 0.0, 0.0, inf, ">= 0 Hz");
@@ -267,6 +285,7 @@ DriverSection read_driver(TableReader& r) {
   d.velocity = r.vec2("velocity", d.velocity);
   d.centre = r.vec2("centre", d.centre);
   d.angular_velocity = r.number("angular_velocity", 0.0, -inf, inf, "rad/s");
+  read_servo(r, d, impact_speed);
   return d;
 }
 
@@ -454,7 +473,7 @@ Scenario load_root(const toml::table& root, const std::string& file, bool check_
   k = 0;
   for (const toml::table* t : top.tables("drivers")) {
     TableReader r(*t, file, "drivers." + std::to_string(k++));
-    s.drivers.push_back(read_driver(r));
+    s.drivers.push_back(read_driver(r, s.simulation.impact_speed));
     r.finish();
   }
   section(top, "track", file, [&](TableReader& r) { read_track(r, s.track); });

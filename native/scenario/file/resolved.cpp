@@ -169,16 +169,23 @@ toml::table geometry_table(const GeometrySection& g) {
 
 toml::array drivers_array(const std::vector<DriverSection>& drivers) {
   toml::array out;
-  for (const DriverSection& d : drivers)
-    out.push_back(toml::table{{"type", d.type},
-                              {"target", d.target},
-                              {"amplitude", d.amplitude},
-                              {"frequency", d.frequency},
-                              {"phase", d.phase},
-                              {"direction", vec(d.direction)},
-                              {"velocity", vec(d.velocity)},
-                              {"centre", vec(d.centre)},
-                              {"angular_velocity", d.angular_velocity}});
+  for (const DriverSection& d : drivers) {
+    toml::table t{{"type", d.type},
+                  {"target", d.target},
+                  {"amplitude", d.amplitude},
+                  {"frequency", d.frequency},
+                  {"phase", d.phase},
+                  {"direction", vec(d.direction)},
+                  {"velocity", vec(d.velocity)},
+                  {"centre", vec(d.centre)},
+                  {"angular_velocity", d.angular_velocity}};
+    if (d.type == "servo") { // the target the file gave, force or stress
+      t.insert(d.stress > 0.0 ? "stress" : "force", d.stress > 0.0 ? d.stress : d.force);
+      t.insert("max_speed", d.max_speed);
+      t.insert("relaxation", d.relaxation);
+    }
+    out.push_back(std::move(t));
+  }
   return out;
 }
 

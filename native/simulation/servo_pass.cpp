@@ -1,0 +1,59 @@
+// The servo walls' controller step: what each servo's walls feel after the force stage.
+#include <cstdint>
+#include <vector>
+
+#include "drivers/servo.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/wall_pass.hpp"
+
+namespace talus {
+
+bool Simulation::has_servo() const {
+  for (const Driver& d : world_.drivers)
+    if (std::holds_alternative<Servo>(d.motion)) return true;
+  return false;
+}
+
+void Simulation::drive_servos() {
+  if (!has_servo()) return;
+  const Segments& walls = world_.walls;
+  // which servo owns each wall segment, and what its walls feel
+  std::vector<std::int32_t> owner(walls.size(), -1);
+  std::vector<ServoReading> reading(world_.drivers.size());
+  for (std::size_t k = 0; k < world_.drivers.size(); ++k) {
+    const auto* servo = std::get_if<Servo>(&world_.drivers[k].motion);
+    if (servo == nullptr) continue;
+    for (const auto s : world_.drivers[k].targets.segments) {
+      owner[s] = static_cast<std::int32_t>(k);
+      reading[k].load -= dot(walls[s].force, servo->direction);
+    }
+  }
+  // Each touching contact's tangent stiffness and damping coefficient, from the normal law's own
+  // force: both laws are linear in the overlap rate, so the force at rate 1 less that at rate 0
+  // is the damping coefficient (both positive for an overlap, so no floor cuts them).
+  const Particles& p = world_.particles;
+  const LeverShares shares = lever_shares(config_.lever_arm);
+  std::vector<WallHit> hits;
+  with_normal_law(config_.normal_law, [&]<class N>() {
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      for_each_wall_contact(
+          p, list_, walls, i, hits, shares,
+          [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
+            const std::int32_t k = owner[list_.wall_segment[e]];
+            if (k < 0) return;
+            const PairParameters& pair = pairs_(p.material[i], s.material);
+            ContactGeometry at = g;
+            at.v_normal = 0.0;
+            const double resting = N::force(pair, at);
+            at.v_normal = -1.0;
+            reading[static_cast<std::size_t>(k)].stiffness += N::stiffness(pair, g);
+            reading[static_cast<std::size_t>(k)].damping += N::force(pair, at) - resting;
+          },
+          [](std::uint32_t) {});
+  });
+  for (std::size_t k = 0; k < world_.drivers.size(); ++k)
+    if (auto* servo = std::get_if<Servo>(&world_.drivers[k].motion))
+      servo_advance(*servo, reading[k], config_.timestep);
+}
+
+} // namespace talus
