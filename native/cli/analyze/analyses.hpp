@@ -106,6 +106,8 @@ Section analyze_repose(RunData& run);
 /// Coarse-grained profiles (post/coarse_grain.hpp) of density, velocity and stress along an
 /// axis, averaged over the snapshots from AnalysisOptions::from on.
 Section analyze_fields(RunData& run, const AnalysisOptions& o);
+/// The side walls' stress against depth in a silo, and Janssen's fit (post/janssen.hpp).
+Section analyze_janssen(RunData& run, const AnalysisOptions& o);
 
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
 /// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields).

@@ -80,9 +80,13 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     if (fs::exists(run.dir() / "frost.csv")) attempt("frost", [&] { return analyze_frost(run); });
     // a heap's slope: what rolling resistance is there for (`talus analyze DIR repose` measures
     // any run's)
-    if (std::any_of(s.materials.begin(), s.materials.end(),
+    if (s.geometry.builder != "silo" &&
+        std::any_of(s.materials.begin(), s.materials.end(),
                     [](const Material& m) { return m.rolling_friction > 0.0; }))
       attempt("repose", [&] { return analyze_repose(run); });
+    // a silo at rest: the wall stress against depth
+    if (s.geometry.builder == "silo" && s.geometry.orifice == 0.0 && !driven)
+      attempt("janssen", [&] { return analyze_janssen(run, o); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
   if (fs::exists(run.dir() / "contact_events.csv"))
@@ -114,12 +118,12 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 
 void check_analysis_name(const std::string& what) {
   const std::vector<std::string> allowed{"thermo", "forces",   "profiles", "tracks", "segregation",
-                                         "frost",  "contacts", "repose",   "fields"};
+                                         "frost",  "contacts", "repose",   "fields", "janssen"};
   if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
     throw InvalidArgument("analyze: '" + what +
                           "' is not an analysis of a run folder; allowed: "
                           "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                          "repose, fields, all");
+                          "repose, fields, janssen, all");
 }
 
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
@@ -132,6 +136,7 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
   if (what == "segregation") return analyze_segregation(run, o);
   if (what == "repose") return analyze_repose(run);
   if (what == "fields") return analyze_fields(run, o);
+  if (what == "janssen") return analyze_janssen(run, o);
   return analyze_frost(run);
 }
 
@@ -146,19 +151,20 @@ void add_analyze_command(CLI::App& app) {
       "analyses of a run folder, as CSV, JSON and PNG in DIR/analysis: thermo (energies, Z, "
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
       "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
-      "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles); "
+      "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles), "
+      "janssen (a silo's wall stress against depth); "
       "with no WHAT "
       "every one that applies, "
       "and report.html");
   cmd->add_option("dir", o->dir, "the run folder or sweep folder")
       ->required()
       ->check(CLI::ExistingDirectory);
-  cmd->add_option(
-         "what", o->what,
-         "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, or "
-         "all (with "
-         "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
-         "result of its index.csv")
+  cmd->add_option("what", o->what,
+                  "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, "
+                  "janssen, or "
+                  "all (with "
+                  "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
+                  "result of its index.csv")
       ->capture_default_str();
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")
       ->capture_default_str()

@@ -229,6 +229,24 @@ elif kind == "fields":
     c.legend(fontsize=8)
     fig.suptitle(f"{extra['kernel']} kernel, width {extra['width']:.3g} m, "
                  f"{extra['frames']} snapshots")
+elif kind == "janssen":
+    fig, a = plt.subplots(figsize=(8, 4.5))
+    depth = col("depth")
+    a.plot(depth, col("wall_normal_stress"), "o", ms=4, label="wall normal stress")
+    a.plot(depth, col("wall_shear_stress"), "s", ms=3, mfc="none", label="wall friction")
+    if extra["measured"]:
+        a.plot(depth, [float(r["fit"]) for r in rows], "k-", lw=1.5,
+               label=f"fit: sigma_inf = {extra['saturation']:.3g} N/m, "
+                     f"lambda = {extra['length']:.3g} m")
+        a.axhline(extra["predicted_saturation"], color="grey", ls="--", lw=1,
+                  label=f"rho_b g W / (2 mu), mu = {extra['mobilised_friction']:.2f}")
+    unfit = [r for r in rows if r["fitted"] == "0"]
+    if unfit:
+        a.axvspan(min(col("depth", unfit)) - 0.5 * extra["bin"], max(depth) + 0.5 * extra["bin"],
+                  color="grey", alpha=0.15, label="left out (the floor's corners)")
+    a.set_xlabel("depth below the free surface [m]")
+    a.set_ylabel("stress on the side walls [N/m]")
+    a.legend(fontsize=8)
 elif kind == "contacts":
     ended = [r for r in rows if r["touching"] == "0"]
     fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 11))
