@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 #include <sys/resource.h>
 
+#include "analysis/rattlers.hpp"
 #include "analysis/stress.hpp"
 #include "io/checkpoint.hpp"
 #include "io/contact_csv.hpp"
@@ -51,17 +52,22 @@ Rect stress_region(const Scenario& s, const RunBook& book) {
 
 namespace {
 
-// One region's stress columns (analysis/stress.hpp).
+// One region's stress and structure columns (analysis/stress.hpp, analysis/rattlers.hpp).
 std::string region_columns(const Simulation& sim, const Rect& region) {
   const RegionStress s = region_stress(sim, region.lo, region.hi);
   const Tensor2 total = s.total();
   const Principal p = principal(total);
+  const LoadBearing network = load_bearing(sim, region.lo, region.hi, contacts_needed(sim));
   return fmt::format(
       ",{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6f},"
-      "{:.6f},{:.6f},{:.6f}",
+      "{:.6f},{:.6f},{:.6f},{:.9f},{:.6f},{:.6f}",
       s.contact(0, 0), s.contact(0, 1), s.contact(1, 0), s.contact(1, 1), s.kinetic(0, 0),
       s.kinetic(0, 1), s.kinetic(1, 1), 0.5 * total.trace(), p.major, p.minor,
-      p.angle * 180.0 / std::numbers::pi, s.fabric(0, 0), s.fabric(0, 1), s.fabric(1, 1));
+      p.angle * 180.0 / std::numbers::pi, s.fabric(0, 0), s.fabric(0, 1), s.fabric(1, 1),
+      packing_fraction(sim, region.lo, region.hi), network.coordination,
+      network.grains > 0
+          ? static_cast<double>(network.rattlers) / static_cast<double>(network.grains)
+          : 0.0);
 }
 
 // One region's stress column names, each with `prefix`.
@@ -70,7 +76,8 @@ std::string region_header(const std::string& prefix) {
   for (const char* name :
        {"stress_xx", "stress_xy", "stress_yx", "stress_yy", "kinetic_stress_xx",
         "kinetic_stress_xy", "kinetic_stress_yy", "pressure", "stress_major", "stress_minor",
-        "stress_major_angle", "fabric_xx", "fabric_xy", "fabric_yy"})
+        "stress_major_angle", "fabric_xx", "fabric_xy", "fabric_yy", "region_packing_fraction",
+        "load_bearing_coordination", "rattler_fraction"})
     head += "," + prefix + name;
   return head;
 }

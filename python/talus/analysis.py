@@ -11,7 +11,7 @@ from . import _talus
 def analyze(folder, what, *, frames="all", start=None, bins=0, cell=0.0, axis="y",
             kernel="gaussian", width=0.0):
     """Runs one analysis of a run folder (thermo, forces, profiles, tracks, segregation, frost,
-    contacts, repose, fields, janssen) as `talus analyze FOLDER WHAT` does, with its options (start is
+    contacts, repose, fields, janssen, jamming) as `talus analyze FOLDER WHAT` does, with its options (start is
     --from; axis, kernel and width are the fields'), writing FOLDER/analysis, and returns
     {"title", "summary", "numbers": {label: text}, "charts": [paths], "data": {name: the JSON
     of key numbers it wrote}}."""

@@ -27,6 +27,10 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
                        --set stages.2.duration=0.05) ;;
     silo_gate) short=(--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5) ;;
     heap) short=(--set particles.count=80 --set stages.1.duration=0.1 --set stages.2.duration=0.2) ;;
+    jamming) short=(--set particles.count=100 --set geometry.width=0.16 --set geometry.height=0.16
+                    --set "output.stress_region=[0.02,0.02,0.1,0.1]" --set stages.0.duration=0.3
+                    --set stages.1.duration=0.1 --set stages.2.duration=0.1 --set stages.3.duration=0.1
+                    --set stages.4.duration=0.1 --set stages.5.duration=0.1) ;;
     janssen) short=(--set particles.count=300 --set geometry.height=0.3 --set packing.settle_max_time=0.2
                     --set stages.0.duration=0.02 --set stages.1.duration=0.03) ;;
     *) fail "no short version in $0" ;;
@@ -51,6 +55,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     silo_shake) [ -s "$run/analysis/segregation.csv" ] || fail "no segregation.csv" ;;
     heap) [ -s "$run/analysis/repose.json" ] || fail "no repose.json" ;;
     janssen) [ -s "$run/analysis/janssen.json" ] || fail "no janssen.json" ;;
+    jamming) [ -s "$run/analysis/jamming.json" ] || fail "no jamming.json" ;;
     frost_heave|frost_front) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
                  [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;
   esac

@@ -108,6 +108,8 @@ Section analyze_repose(RunData& run);
 Section analyze_fields(RunData& run, const AnalysisOptions& o);
 /// The side walls' stress against depth in a silo, and Janssen's fit (post/janssen.hpp).
 Section analyze_janssen(RunData& run, const AnalysisOptions& o);
+/// A run let down in steps of pressure: the jamming point (post/jamming.hpp).
+Section analyze_jamming(RunData& run, const AnalysisOptions& o);
 
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
 /// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields).

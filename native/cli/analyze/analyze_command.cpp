@@ -84,6 +84,11 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
         std::any_of(s.materials.begin(), s.materials.end(),
                     [](const Material& m) { return m.rolling_friction > 0.0; }))
       attempt("repose", [&] { return analyze_repose(run); });
+    // a packing let down in steps of pressure by servo walls, its structure recorded
+    const bool servo = std::any_of(s.drivers.begin(), s.drivers.end(),
+                                   [](const DriverSection& d) { return d.type == "servo"; });
+    if (servo && s.output.stress && s.stages.size() >= 3)
+      attempt("jamming", [&] { return analyze_jamming(run, o); });
     // a silo at rest: the wall stress against depth
     if (s.geometry.builder == "silo" && s.geometry.orifice == 0.0 && !driven)
       attempt("janssen", [&] { return analyze_janssen(run, o); });
@@ -117,13 +122,14 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 } // namespace
 
 void check_analysis_name(const std::string& what) {
-  const std::vector<std::string> allowed{"thermo", "forces",   "profiles", "tracks", "segregation",
-                                         "frost",  "contacts", "repose",   "fields", "janssen"};
+  const std::vector<std::string> allowed{"thermo",      "forces",  "profiles", "tracks",
+                                         "segregation", "frost",   "contacts", "repose",
+                                         "fields",      "janssen", "jamming"};
   if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
     throw InvalidArgument("analyze: '" + what +
                           "' is not an analysis of a run folder; allowed: "
                           "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                          "repose, fields, janssen, all");
+                          "repose, fields, janssen, jamming, all");
 }
 
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
@@ -137,6 +143,7 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
   if (what == "repose") return analyze_repose(run);
   if (what == "fields") return analyze_fields(run, o);
   if (what == "janssen") return analyze_janssen(run, o);
+  if (what == "jamming") return analyze_jamming(run, o);
   return analyze_frost(run);
 }
 
@@ -152,7 +159,8 @@ void add_analyze_command(CLI::App& app) {
       "packing fraction), forces (contact force distribution), profiles (velocity across a band, "
       "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
       "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles), "
-      "janssen (a silo's wall stress against depth); "
+      "janssen (a silo's wall stress against depth), jamming (the jamming point of a run let down "
+      "in steps of pressure); "
       "with no WHAT "
       "every one that applies, "
       "and report.html");
@@ -161,7 +169,7 @@ void add_analyze_command(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
                   "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, "
-                  "janssen, or "
+                  "janssen, jamming, or "
                   "all (with "
                   "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
                   "result of its index.csv")

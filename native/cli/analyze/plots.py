@@ -247,6 +247,31 @@ elif kind == "janssen":
     a.set_xlabel("depth below the free surface [m]")
     a.set_ylabel("stress on the side walls [N/m]")
     a.legend(fontsize=8)
+elif kind == "jamming":
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.5))
+    p, phi, z = col("pressure"), col("packing_fraction"), col("coordination")
+    a.plot(p, phi, "o", label="at rest after each stage")
+    if extra["measured"]:
+        ps = [0.0] + sorted(p)
+        a.plot(ps, [extra["phi_j"] + q / extra["bulk"] for q in ps], "k-", lw=1,
+               label=f"phi_J + p / B, phi_J = {extra['phi_j']:.4f}")
+    a.axhline(0.842, color="grey", ls="--", lw=1, label="O'Hern et al. 2003: 0.842")
+    a.set_xlabel("pressure of the interior region [N/m]")
+    a.set_ylabel("packing fraction of the interior region [-]")
+    a.legend(fontsize=8)
+    if extra["measured"]:
+        dphi = [max(q - extra["phi_j"], 0.0) for q in phi]
+        b.errorbar(dphi, z, yerr=col("coordination_spread"), fmt="o", label="load-bearing Z")
+        xs = sorted(dphi)
+        b.plot(xs, [extra["z_j"] + extra["z_slope"] * math.sqrt(x) for x in xs], "k-", lw=1,
+               label=f"Z_J + A sqrt(phi - phi_J), Z_J = {extra['z_j']:.2f}")
+        b.set_xlabel("phi - phi_J [-]")
+    else:
+        b.plot(phi, z, "o")
+        b.set_xlabel("packing fraction [-]")
+    b.axhline(4.0, color="grey", ls="--", lw=1, label="isostatic: 4")
+    b.set_ylabel("coordination, rattlers out [-]")
+    b.legend(fontsize=8)
 elif kind == "contacts":
     ended = [r for r in rows if r["touching"] == "0"]
     fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 11))

@@ -1,0 +1,67 @@
+#include "analysis/rattlers.hpp"
+
+#include <algorithm>
+
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+namespace {
+bool inside(Vec2 p, Vec2 lo, Vec2 hi) {
+  return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
+}
+} // namespace
+
+int contacts_needed(const Simulation& sim) {
+  if (sim.config().tangential_law == law_id<Frictionless>) return 3;
+  const auto& m = sim.world().materials;
+  return std::all_of(m.begin(), m.end(), [](const Material& x) { return x.friction == 0.0; }) ? 3
+                                                                                              : 2;
+}
+
+LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
+  const Particles& p = sim.world().particles;
+  // each free grain's partners: other free grains by index, walls and wall particles as -1
+  std::vector<std::vector<std::int64_t>> partners(p.size());
+  sim.for_each_contact([&](const ContactView& v) {
+    const bool wall = v.wall >= 0 || !p.is_free(v.j);
+    if (p.is_free(v.i)) partners[v.i].push_back(wall ? -1 : static_cast<std::int64_t>(v.j));
+    if (v.wall < 0 && p.is_free(v.j)) partners[v.j].push_back(p.is_free(v.i) ? v.i : -1);
+  });
+  LoadBearing out;
+  out.rattler.assign(p.size(), false);
+  std::vector<int> count(p.size(), 0);
+  std::vector<std::uint32_t> pending;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i)) continue;
+    count[i] = static_cast<int>(partners[i].size());
+    if (count[i] < needed) pending.push_back(i);
+  }
+  // take out each grain with too few contacts; its partners lose one and may follow it
+  while (!pending.empty()) {
+    const std::uint32_t i = pending.back();
+    pending.pop_back();
+    if (out.rattler[i]) continue;
+    out.rattler[i] = true;
+    for (const std::int64_t j : partners[i]) {
+      if (j < 0 || out.rattler[static_cast<std::size_t>(j)]) continue;
+      if (--count[static_cast<std::size_t>(j)] < needed)
+        pending.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  double contacts = 0.0;
+  for (std::uint32_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i) || !inside(p.position[i], lo, hi)) continue;
+    ++out.grains;
+    if (out.rattler[i]) {
+      ++out.rattlers;
+      continue;
+    }
+    contacts += count[i];
+  }
+  const std::size_t held = out.grains - out.rattlers;
+  out.coordination = held > 0 ? contacts / static_cast<double>(held) : 0.0;
+  return out;
+}
+
+} // namespace talus
