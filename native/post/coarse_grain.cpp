@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "post/coarse_grain_sums.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -17,12 +18,6 @@ double lucy_half(double q) {
 // The axis coordinate of v.
 double along(Vec2 v, int axis) {
   return axis == 0 ? v.x : v.y;
-}
-
-Tensor2 outer(Vec2 a, Vec2 b) {
-  Tensor2 t;
-  t << a.x * b.x, a.x * b.y, a.y * b.x, a.y * b.y;
-  return t;
 }
 
 // The points of the profile each term reaches: phi is summed over the periodic images.
@@ -92,51 +87,16 @@ FieldProfile coarse_grain(const std::vector<Frame>& frames, const CgOptions& o) 
   for (std::size_t k = 0; k < o.points; ++k)
     s.at.push_back(o.lo +
                    (o.hi - o.lo) * static_cast<double>(k) / static_cast<double>(o.points - 1));
-  const std::size_t n = o.points;
+  CgSums sums = cg_sums(
+      frames, o.points, [&](Vec2 at, auto&& f) { s.spread(along(at, o.axis), 0.0, f); },
+      [&](Vec2 centre, Vec2 point, auto&& f) {
+        s.spread(along(centre, o.axis), along(point - centre, o.axis), f);
+      });
   FieldProfile out;
   out.at = s.at;
-  out.density.assign(n, 0.0), out.momentum.assign(n, Vec2{});
-  out.kinetic.assign(n, Tensor2::Zero()), out.contact.assign(n, Tensor2::Zero());
-  for (const Frame& f : frames) {
-    if (f.mass.size() != f.position.size())
-      throw InvalidArgument("the snapshots lack the grains' masses (written by an older talus): "
-                            "run the scenario again to coarse-grain it");
-    std::vector<double> rho(n, 0.0);
-    std::vector<Vec2> p(n, Vec2{});
-    std::vector<Tensor2> mvv(n, Tensor2::Zero());
-    for (std::size_t i = 0; i < f.position.size(); ++i) {
-      if (f.kind[i] != 0) continue;
-      const double m = f.mass[i];
-      const Vec2 v = f.velocity[i];
-      s.spread(along(f.position[i], o.axis), 0.0, [&](std::size_t k, double phi) {
-        rho[k] += m * phi, p[k] += (m * phi) * v, mvv[k] += (m * phi) * outer(v, v);
-      });
-    }
-    for (const Frame::Chain& c : f.chains) {
-      if (!c.has_vector)
-        throw InvalidArgument("the snapshots' contacts lack their force vectors (written by an "
-                              "older talus): run the scenario again to coarse-grain it");
-      const auto side = [&](Vec2 force, Vec2 centre) {
-        const Tensor2 fb = outer(force, centre - c.point);
-        s.spread(along(centre, o.axis), along(c.point - centre, o.axis),
-                 [&](std::size_t k, double phi) { out.contact[k] += phi * fb; });
-      };
-      if (c.from_free) side(c.force_on_from, c.from);
-      if (c.to_free) side(-1.0 * c.force_on_from, c.to);
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-      out.density[k] += rho[k], out.momentum[k] += p[k];
-      const Vec2 v = rho[k] > 0.0 ? (1.0 / rho[k]) * p[k] : Vec2{};
-      out.kinetic[k] += mvv[k] - rho[k] * outer(v, v);
-    }
-    ++out.frames;
-  }
-  if (out.frames == 0) throw InvalidArgument("coarse graining: no snapshots to average");
-  const double per = 1.0 / static_cast<double>(out.frames);
-  for (std::size_t k = 0; k < n; ++k) {
-    out.density[k] *= per, out.momentum[k] = per * out.momentum[k];
-    out.kinetic[k] *= per, out.contact[k] *= per;
-  }
+  out.density = std::move(sums.density), out.momentum = std::move(sums.momentum);
+  out.kinetic = std::move(sums.kinetic), out.contact = std::move(sums.contact);
+  out.frames = sums.frames;
   return out;
 }
 

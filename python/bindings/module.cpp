@@ -47,7 +47,7 @@ const char* outcome_name(talus::run::RunOutcome r) {
 
 py::dict analyze(const std::string& dir, const std::string& what, const std::string& frames,
                  double from, std::size_t bins, double cell, const std::string& axis,
-                 const std::string& kernel, double width) {
+                 const std::string& kernel, double width, bool map) {
   talus::cli::check_analysis_name(what);
   talus::cli::AnalysisOptions o;
   o.frames = frames;
@@ -57,6 +57,7 @@ py::dict analyze(const std::string& dir, const std::string& what, const std::str
   o.axis = axis;
   o.kernel = kernel;
   o.width = width;
+  o.map = map;
   talus::cli::RunData run{std::filesystem::path(dir)};
   const talus::cli::Section s = talus::cli::analyze_one(run, what, o);
   py::dict d;
@@ -176,6 +177,6 @@ PYBIND11_MODULE(_talus, m) {
   m.def("changeable", &talus::changeable_during_run);
   m.def("analyze", &analyze, py::arg("folder"), py::arg("what"), py::arg("frames"),
         py::arg("start"), py::arg("bins"), py::arg("cell"), py::arg("axis"), py::arg("kernel"),
-        py::arg("width"));
+        py::arg("width"), py::arg("map"));
   bind_session(m);
 }

@@ -9,10 +9,11 @@ from . import _talus
 
 
 def analyze(folder, what, *, frames="all", start=None, bins=0, cell=0.0, axis="y",
-            kernel="gaussian", width=0.0):
+            kernel="gaussian", width=0.0, map=False):
     """Runs one analysis of a run folder (thermo, forces, profiles, tracks, segregation, frost,
-    contacts, repose, fields, janssen, jamming) as `talus analyze FOLDER WHAT` does, with its options (start is
-    --from; axis, kernel and width are the fields'), writing FOLDER/analysis, and returns
+    contacts, repose, fields, janssen, jamming) as `talus analyze FOLDER WHAT` does, with its
+    options (start is --from; axis, kernel, width and map are the fields'), writing
+    FOLDER/analysis, and returns
     {"title", "summary", "numbers": {label: text}, "charts": [paths], "data": {name: the JSON
     of key numbers it wrote}}."""
     folder = os.fspath(folder)
@@ -21,7 +22,7 @@ def analyze(folder, what, *, frames="all", start=None, bins=0, cell=0.0, axis="y
     if axis not in ("x", "y"):
         raise ValueError(f"axis {axis!r}; allowed: x, y")
     r = _talus.analyze(folder, what, frames, -1.0 if start is None else float(start), int(bins),
-                       float(cell), axis, kernel, float(width))
+                       float(cell), axis, kernel, float(width), bool(map))
     data = {}
     for p in sorted(glob.glob(os.path.join(out, "*.json"))):
         if p not in before or os.path.getmtime(p) != before[p]:

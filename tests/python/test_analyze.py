@@ -38,3 +38,7 @@ def test_fields_integrate_to_the_grains_mass(tmp_path):
     # the profile reaches four widths past the grains, beyond a Gaussian's tails: the mass to
     # the trapezoid rule's error over points a quarter width apart
     assert f["mass_integral"] == pytest.approx(f["mass"], rel=1e-4)
+    # maps of the plane: cells as wide as the kernel, which reaches five widths
+    m = talus.analyze(tmp_path / "r", "fields", start=0.02, map=True)["data"]["fields_map"]
+    assert m["nx"] >= 2 and m["ny"] >= 2
+    assert m["mass_integral"] == pytest.approx(f["mass"], rel=1e-4)

@@ -33,6 +33,12 @@ grep -q '"kernel": "lucy"' "$dir/run/analysis/fields.json" || exit 1
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   [ -s "$dir/run/analysis/fields.png" ] || { echo "fields chart missing"; exit 1; }
 fi
+# and as maps
+"$talus" analyze "$dir/run" fields --map > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+head -1 "$dir/run/analysis/fields_map.csv" | grep -q "^x,y,density,velocity_x,velocity_y,kinetic_xx,kinetic_xy,kinetic_yy,contact_xx,contact_xy,contact_yx,contact_yy$" || { echo "fields_map.csv columns"; exit 1; }
+if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+  [ -s "$dir/run/analysis/fields_map.png" ] || { echo "fields_map chart missing"; exit 1; }
+fi
 # a chart that fails (a damaged thermo.csv) makes the command fail, naming the chart
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   printf 'not,a,number\0\0\0\n' >> "$dir/run/thermo.csv"

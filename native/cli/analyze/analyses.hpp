@@ -51,6 +51,7 @@ struct AnalysisOptions {
   std::string axis = "y";                          ///< fields: the profile's axis, x or y
   std::string kernel = "gaussian";                 ///< fields: gaussian or lucy
   double width = 0.0; ///< fields: the kernel's width, m (0: the mean grain radius)
+  bool map = false;   ///< fields: a map of the plane instead of profiles
 };
 
 /// What one analysis gives the report: its charts and key numbers.

@@ -191,7 +191,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--bins", o->a.bins, "profiles, segregation: bins across x (0: automatic)")
       ->capture_default_str()
       ->check(CLI::Range(0, 10000));
-  cmd->add_option("--cell", o->a.cell, "profiles: speed map cell in m (0: two mean diameters)")
+  cmd->add_option("--cell", o->a.cell,
+                  "profiles: speed map cell in m (0: two mean diameters); fields --map: the map's "
+                  "cell (0: the kernel's width)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--axis", o->a.axis, "fields: the profiles' axis")
@@ -200,6 +202,9 @@ void add_analyze_command(CLI::App& app) {
   cmd->add_option("--kernel", o->a.kernel, "fields: the coarse-graining kernel")
       ->capture_default_str()
       ->check(CLI::IsMember({"gaussian", "lucy"}));
+  cmd->add_flag("--map", o->a.map,
+                "fields: maps of the plane (cells of --cell m, default the kernel's width) "
+                "instead of profiles along --axis");
   cmd->add_option("--width", o->a.width,
                   "fields: the kernel's width in m, a Gaussian's standard deviation or Lucy's "
                   "cutoff (0: the mean grain radius; Lucy: twice it)")

@@ -9,6 +9,7 @@
 #include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "post/coarse_grain.hpp"
+#include "post/coarse_grain_map.hpp"
 
 namespace fs = std::filesystem;
 
@@ -48,6 +49,66 @@ void span_and_across(const Scenario& s, const std::vector<Frame>& frames, CgOpti
   o.across = wraps[b] ? box(b, true) - box(b, false) : hi[b] - lo[b];
 }
 
+// `--map`: the fields over the plane, in cells of --cell (default: the kernel's width).
+Section analyze_field_map(RunData& run, const AnalysisOptions& a, const std::vector<Frame>& frames,
+                          CgKernel kernel, double width) {
+  CgMapOptions m;
+  m.kernel = kernel, m.width = width;
+  CgOptions along[2];
+  for (int axis = 0; axis < 2; ++axis) {
+    along[axis].axis = axis, along[axis].width = width;
+    span_and_across(run.scenario(), frames, along[axis]);
+  }
+  m.lo = {along[0].lo, along[1].lo}, m.hi = {along[0].hi, along[1].hi};
+  m.period = {along[0].period, along[1].period};
+  const double cell = a.cell > 0.0 ? a.cell : width;
+  m.nx = static_cast<std::size_t>(std::max(1.0, std::round((m.hi.x - m.lo.x) / cell)));
+  m.ny = static_cast<std::size_t>(std::max(1.0, std::round((m.hi.y - m.lo.y) / cell)));
+  if (m.nx * m.ny > 4'000'000)
+    throw InvalidArgument(fmt::format("fields --map: {} x {} cells of {:.3g} m; allowed: up to 4e6 "
+                                      "cells (a larger --cell)",
+                                      m.nx, m.ny, cell));
+  const FieldMap f = coarse_grain_map(frames, m);
+  std::string csv = "x,y,density,velocity_x,velocity_y,kinetic_xx,kinetic_xy,kinetic_yy,"
+                    "contact_xx,contact_xy,contact_yx,contact_yy\n";
+  double mass_integral = 0.0;
+  for (std::size_t k = 0; k < f.density.size(); ++k) {
+    const Vec2 c = f.centre(k), v = f.velocity(k);
+    const Tensor2& K = f.kinetic[k];
+    const Tensor2& C = f.contact[k];
+    csv +=
+        fmt::format("{:.6g},{:.6g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
+                    "{:.9g}\n",
+                    c.x, c.y, f.density[k], v.x, v.y, K(0, 0), K(0, 1), K(1, 1), C(0, 0), C(0, 1),
+                    C(1, 0), C(1, 1));
+    mass_integral += f.density[k] * f.cell_x * f.cell_y;
+  }
+  const fs::path out = run.out();
+  write_file_atomically((out / "fields_map.csv").string(), csv);
+  write_file_atomically(
+      (out / "fields_map.json").string(),
+      fmt::format("{{\"kernel\": \"{}\", \"width\": {}, \"nx\": {}, \"ny\": {}, \"cell_x\": {}, "
+                  "\"cell_y\": {}, \"frames\": {}, \"mass_integral\": {}}}\n",
+                  cg_kernel_name(kernel), json_number(width), f.nx, f.ny, json_number(f.cell_x),
+                  json_number(f.cell_y), f.frames, json_number(mass_integral)));
+  Section s{"Coarse-grained field maps", {}, {}, {}};
+  s.summary = fmt::format(
+      "Density, velocity and stress (kinetic and contact, compression positive, N/m in 2D) over "
+      "the plane in {} x {} cells, coarse-grained with a {} kernel of width {:.3g} m (Weinhart et "
+      "al. 2012), averaged over {} snapshots.",
+      f.nx, f.ny, cg_kernel_name(kernel), width, f.frames);
+  s.numbers = {{"cells", fmt::format("{} x {} of {:.3g} m", f.nx, f.ny, f.cell_x)},
+               {"mass, integral of the density", fmt::format("{:.6g} kg", mass_integral)}};
+  fmt::print("fields: maps of {} x {} cells, {} kernel of width {:.3g} m, {} snapshots; integral "
+             "of the density {:.6g} kg\n",
+             f.nx, f.ny, cg_kernel_name(kernel), width, f.frames, mass_integral);
+  if (plot(out, "fields_map", out / "fields_map.csv", out / "fields_map.png",
+           out / "fields_map.json"))
+    s.charts.push_back(out / "fields_map.png");
+  for (const auto& chart : s.charts) fmt::print("  chart: {}\n", chart.string());
+  return s;
+}
+
 } // namespace
 
 Section analyze_fields(RunData& run, const AnalysisOptions& a) {
@@ -56,6 +117,7 @@ Section analyze_fields(RunData& run, const AnalysisOptions& a) {
   o.kernel = parse_cg_kernel(a.kernel);
   o.axis = a.axis == "x" ? 0 : 1;
   o.width = a.width > 0.0 ? a.width : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * run.mean_radius();
+  if (a.map) return analyze_field_map(run, a, frames, o.kernel, o.width);
   span_and_across(run.scenario(), frames, o);
   o.points = static_cast<std::size_t>(
       std::clamp(std::ceil(4.0 * (o.hi - o.lo) / o.width) + 1.0, 50.0, 4000.0));

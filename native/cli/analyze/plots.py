@@ -272,6 +272,27 @@ elif kind == "jamming":
     b.axhline(4.0, color="grey", ls="--", lw=1, label="isostatic: 4")
     b.set_ylabel("coordination, rattlers out [-]")
     b.legend(fontsize=8)
+elif kind == "fields_map":
+    nx, ny = extra["nx"], extra["ny"]
+    xs, ys = col("x"), col("y")
+    extent = [min(xs) - 0.5 * extra["cell_x"], max(xs) + 0.5 * extra["cell_x"],
+              min(ys) - 0.5 * extra["cell_y"], max(ys) + 0.5 * extra["cell_y"]]
+
+    def grid(values):
+        return [values[row * nx:(row + 1) * nx] for row in range(ny)]
+
+    speed = [math.hypot(u, v) for u, v in zip(col("velocity_x"), col("velocity_y"))]
+    pressure = [0.5 * (a + b + c + d) for a, b, c, d in
+                zip(col("contact_xx"), col("contact_yy"), col("kinetic_xx"), col("kinetic_yy"))]
+    fig, panels = plt.subplots(1, 3, figsize=(14, 4.8))
+    for a, values, label in zip(panels, [col("density"), speed, pressure],
+                                ["density [kg/m^2]", "speed [m/s]", "pressure [N/m]"]):
+        im = a.imshow(grid(values), origin="lower", extent=extent, aspect="equal")
+        fig.colorbar(im, ax=a, label=label, shrink=0.8)
+        a.set_xlabel("x [m]")
+    panels[0].set_ylabel("y [m]")
+    fig.suptitle(f"{extra['kernel']} kernel, width {extra['width']:.3g} m, "
+                 f"{extra['frames']} snapshots")
 elif kind == "contacts":
     ended = [r for r in rows if r["touching"] == "0"]
     fig, (a, b, c) = plt.subplots(3, 1, figsize=(8, 11))
