@@ -224,6 +224,9 @@ void Run::change(const std::vector<std::string>& set, const std::string& source)
   WorldChange done;
   done.energy_before = energies(sim_).total();
   done.wall_index = apply_scenario_change(sim_, s_, next, book_);
+  // the engine starts again from its state, with its count of renumberings from 0: the run's
+  // indices are the state's, nothing to follow
+  renumberings_seen_ = sim_.renumberings();
   for (auto& o : observers_) o->changed(c_, done);
   book_.changes.push_back({sim_.step_count(), sim_.time(), source, set});
   files_.open("changes.csv", changes_header); // a change of nothing is listed too: the header

@@ -149,11 +149,13 @@ std::vector<std::int64_t> apply_wall_edit(Simulation& sim, const WallEdit& e,
   const std::vector<std::int64_t> to = sim.change_walls(e.removed, e.added);
   const auto kept =
       static_cast<std::int64_t>(std::count(e.removed.begin(), e.removed.end(), false));
+  // the wall particles stay in their groups, those of particles alone ("fixed") too: a wall
+  // edit changes segments only
   std::map<std::string, DriverTargets> next;
+  for (const auto& [name, old] : groups)
+    if (!old.particles.empty()) next[name].particles = old.particles;
   for (const auto& [name, walls] : e.groups) {
     DriverTargets& g = next[name];
-    if (const auto old = groups.find(name); old != groups.end())
-      g.particles = old->second.particles;
     for (const std::int64_t k : walls)
       g.segments.push_back(static_cast<std::uint32_t>(k >= 0 ? to[k] : kept + (-1 - k)));
   }

@@ -2,6 +2,8 @@
 // and a driver moves them by that name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -68,6 +70,43 @@ velocity = [0.0, 0.05]
   const Particles& p = c.state.world.particles;
   EXPECT_NEAR(p.position[0].y, 0.02 + 0.05 * c.state.time, 1e-12);
   EXPECT_GT(p.position[1].y, 0.04 + 0.009); // lifted on top of it
+  std::filesystem::remove_all(dir);
+}
+
+// A stage change starts the engine again from its state, with its count of renumberings back
+// at 0. The run's indices of the fixed grains must not be mapped then by the old run's last
+// renumbering (there was none to map by: an empty map read out of bounds and the run crashed),
+// and the group keeps its grains and its force column through a change of walls: at the end,
+// the column is the force on the fixed grain, found by its kind in the last checkpoint (30
+// grains renumbered every 7 steps around it).
+TEST(FixedGrains, AStageChangeKeepsThemAndTheirForce) {
+  const Scenario s =
+      load_scenario(std::string(perched) + R"(
+[[geometry.segments]]
+a = [0.0, 0.09]
+b = [0.01, 0.09]
+[[stages]]
+name = "a"
+duration = 0.1
+[[stages]]
+name = "b"
+duration = 0.2
+set = { "geometry.segments" = [] }
+)",
+                    "staged.toml", {"simulation.sort_every=7", "particles.count=30"});
+  const std::filesystem::path dir = testing::fresh_dir("fixed_staged");
+  ASSERT_EQ(testing::run_quietly(s, dir), cli::exit_completed);
+  std::map<std::string, double> row = testing::last_thermo_row(dir);
+  ASSERT_TRUE(row.count("force_fixed_y"));
+  const Checkpoint c = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "x");
+  const Particles& p = c.state.world.particles;
+  const auto fixed = static_cast<std::size_t>(std::find(p.kind.begin(), p.kind.end(), Kind::fixed) -
+                                              p.kind.begin());
+  ASSERT_LT(fixed, p.size());
+  EXPECT_GT(c.state.steps, 7u * 10u); // renumbered many times
+  EXPECT_NE(p.force[fixed].y, 0.0);
+  EXPECT_NEAR(row["force_fixed_y"], p.force[fixed].y, 1e-8 * std::abs(p.force[fixed].y));
+  EXPECT_NEAR(row["force_fixed_x"], p.force[fixed].x, 1e-8 * std::abs(p.force[fixed].y));
   std::filesystem::remove_all(dir);
 }
 
