@@ -18,8 +18,10 @@ void Simulation::drive_servos() {
   if (!has_servo()) return;
   const Segments& walls = world_.walls;
   // which servo owns each wall segment, and what its walls feel
-  std::vector<std::int32_t> owner(walls.size(), -1);
-  std::vector<ServoReading> reading(world_.drivers.size());
+  std::vector<std::int32_t>& owner = servo_owner_;
+  std::vector<ServoReading>& reading = servo_reading_;
+  owner.assign(walls.size(), -1);
+  reading.assign(world_.drivers.size(), ServoReading{});
   for (std::size_t k = 0; k < world_.drivers.size(); ++k) {
     const auto* servo = std::get_if<Servo>(&world_.drivers[k].motion);
     if (servo == nullptr) continue;
@@ -33,11 +35,10 @@ void Simulation::drive_servos() {
   // is the damping coefficient (both positive for an overlap, so no floor cuts them).
   const Particles& p = world_.particles;
   const LeverShares shares = lever_shares(config_.lever_arm);
-  std::vector<WallHit> hits;
   with_normal_law(config_.normal_law, [&]<class N>() {
     for (std::uint32_t i = 0; i < p.size(); ++i)
       for_each_wall_contact(
-          p, list_, walls, i, hits, shares,
+          p, list_, walls, i, servo_hits_, shares,
           [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
             const std::int32_t k = owner[list_.wall_segment[e]];
             if (k < 0) return;

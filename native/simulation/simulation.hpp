@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/contact_vectors.hpp"
+#include "drivers/servo.hpp"
 #include "integrate/integrator.hpp"
 #include "materials/pair_table.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -16,6 +17,7 @@
 #include "simulation/step_features.hpp"
 #include "simulation/world.hpp"
 #include "talus/law_table.hpp"
+#include "talus/segment_contact.hpp"
 
 namespace talus {
 
@@ -262,6 +264,11 @@ private:
   double drift_bound_ = unknown_drift;
   std::uint64_t drift_tests_ = 0;
   StepFeatures features_;
+  // drive_servos' scratch, kept so that a step allocates nothing: the servo owning each segment
+  // (-1: none), each driver's reading, the wall contacts of one particle
+  std::vector<std::int32_t> servo_owner_;
+  std::vector<ServoReading> servo_reading_;
+  std::vector<SegmentHit> servo_hits_;
   bool features_stale_ = false; ///< the world or a particle was edited since they were chosen
   bool general_step_ = false;
 };
