@@ -33,6 +33,7 @@ short_of() {
     tilted_box) echo "--set particles.count=60 --set simulation.duration=0.2 --set stages.1.duration=0.05
                   --set stages.2.duration=0.05" ;;
     silo_gate) echo "--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5" ;;
+    shear) echo "--set simulation.duration=0.3" ;;
     *) echo "scripts/state-hashes.sh: no short version of '$1'" >&2; exit 1 ;;
   esac
 }

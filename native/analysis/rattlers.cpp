@@ -26,7 +26,9 @@ LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
   sim.for_each_contact([&](const ContactView& v) {
     const bool wall = v.wall >= 0 || !p.is_free(v.j);
     if (p.is_free(v.i)) partners[v.i].push_back(wall ? -1 : static_cast<std::int64_t>(v.j));
-    if (v.wall < 0 && p.is_free(v.j)) partners[v.j].push_back(p.is_free(v.i) ? v.i : -1);
+    // (signed before the choice: with v.i's unsigned type, -1 would become a huge index)
+    if (v.wall < 0 && p.is_free(v.j))
+      partners[v.j].push_back(p.is_free(v.i) ? static_cast<std::int64_t>(v.i) : -1);
   });
   LoadBearing out;
   out.rattler.assign(p.size(), false);

@@ -10,30 +10,35 @@
 namespace talus {
 
 namespace {
-// The width of the servo's walls across its direction: the span of their end points on the
-// perpendicular.
-double width_across(const Servo& s, const DriverTargets& t, const Segments& walls) {
-  const Vec2 across{-s.direction.y, s.direction.x};
+// The width of the servo's walls across its direction: the span of their segments' end points
+// and of their wall particles (each to its edge) on the perpendicular. A row of touching grains
+// across a periodic box spans the box.
+double width_across(const Servo& s, const DriverTargets& t, const Particles& p,
+                    const Segments& walls) {
+  const Vec2 side = across(s.direction);
   double lo = 0.0, hi = 0.0;
   bool first = true;
+  const auto span = [&](double u_lo, double u_hi) {
+    lo = first ? u_lo : std::min(lo, u_lo), hi = first ? u_hi : std::max(hi, u_hi), first = false;
+  };
   for (const auto k : t.segments)
-    for (const Vec2 end : {walls[k].a, walls[k].b}) {
-      const double u = dot(end, across);
-      lo = first ? u : std::min(lo, u), hi = first ? u : std::max(hi, u), first = false;
-    }
+    for (const Vec2 end : {walls[k].a, walls[k].b}) span(dot(end, side), dot(end, side));
+  for (const auto i : t.particles)
+    span(dot(p.position[i], side) - p.radius[i], dot(p.position[i], side) + p.radius[i]);
   return hi - lo;
 }
 
-void attach_servo(Servo& s, const DriverTargets& t, const Segments& walls) {
+void attach_servo(Servo& s, const DriverTargets& t, const Particles& p, const Segments& walls) {
   const double l = norm(s.direction);
   require(l > 0.0, "servo driver: direction must be a non-zero vector");
   s.direction = s.direction / l;
-  require(t.particles.empty(), "servo driver: its group holds " +
-                                   std::to_string(t.particles.size()) +
-                                   " wall particles; a servo drives wall segments only");
-  require(!t.segments.empty(), "servo driver: its group has no wall segment");
+  require(!t.segments.empty() || !t.particles.empty(),
+          "servo driver: its group has no wall segment and no wall particle");
   for (const auto k : t.segments)
     require(k < walls.size(), "driver: segment index " + std::to_string(k) + " out of range");
+  for (const auto i : t.particles)
+    require(i < p.size(), "driver: particle index " + std::to_string(i) + " out of range");
+  require(std::isfinite(s.slide_speed), "servo driver: slide_speed must be finite (m/s)");
   require(std::isfinite(s.max_speed) && s.max_speed > 0.0,
           "servo driver: max_speed must be > 0 m/s");
   require(s.relaxation > 0.0 && s.relaxation <= 1.0,
@@ -42,7 +47,7 @@ void attach_servo(Servo& s, const DriverTargets& t, const Segments& walls) {
   require(std::isfinite(s.force) && std::isfinite(s.stress) && s.stress >= 0.0,
           "servo driver: force (N) and stress (N/m) must be finite, stress >= 0");
   if (s.stress > 0.0) {
-    const double width = width_across(s, t, walls);
+    const double width = width_across(s, t, p, walls);
     require(width > 0.0, "servo driver: stress needs walls with a width across direction "
                          "(these are parallel to it); give force instead");
     s.force = s.stress * width;
@@ -60,7 +65,7 @@ void attach(Driver& d, const Particles& p, const Segments& walls) {
             "vibrate driver: amplitude (m) and frequency (Hz) must be >= 0");
     v->direction = v->direction / l;
   }
-  if (auto* s = std::get_if<Servo>(&d.motion)) attach_servo(*s, d.targets, walls);
+  if (auto* s = std::get_if<Servo>(&d.motion)) attach_servo(*s, d.targets, p, walls);
   d.particle_origin.clear();
   d.angle_origin.clear();
   for (const auto i : d.targets.particles) {
@@ -110,8 +115,9 @@ Pose pose_at(const Motion& m, double t) {
     pose.offset = t * tr->velocity;
     pose.velocity = tr->velocity;
   } else if (const auto* servo = std::get_if<Servo>(&m)) {
-    pose.offset = servo->displacement * servo->direction;
-    pose.velocity = servo->speed * servo->direction;
+    const Vec2 side = across(servo->direction);
+    pose.offset = servo->displacement * servo->direction + (t * servo->slide_speed) * side;
+    pose.velocity = servo->speed * servo->direction + servo->slide_speed * side;
   } else if (const auto* r = std::get_if<Rotate>(&m)) {
     pose.angle = r->angular_velocity * t;
     pose.omega = r->angular_velocity;

@@ -40,7 +40,8 @@ struct Rotate {
 /// A wall held at a target load by a servo controller (docs/model.md, "Servo walls"): after each
 /// step the wall takes the speed along `direction` that would close the fraction `relaxation` of
 /// the load's error in the next step if the grains stood still, given the stiffness and the
-/// damping of the wall's contacts (servo.hpp). Drives wall segments only.
+/// damping of the wall's contacts (servo.hpp). Drives wall segments or wall particles (of kind
+/// `moved`), and may slide them across its direction at a set speed (a shear cell's plate).
 struct Servo {
   Vec2 direction{0.0,
                  -1.0};    ///< the way the wall moves to press on the grains; normalised on attach
@@ -50,7 +51,15 @@ struct Servo {
   double relaxation = 0.5; ///< the fraction of the error closed per step, in (0, 1]
   double displacement = 0.0; ///< m along direction since start_time (the controller's state)
   double speed = 0.0;        ///< m/s along direction, chosen after the last step
+  /// m/s: the walls also move at this speed along `across(direction)`, a quarter turn
+  /// anticlockwise from direction ([1, 0] for a lid pressing down)
+  double slide_speed = 0.0;
 };
+
+/// The way a servo's walls slide: its direction turned a quarter turn anticlockwise.
+inline Vec2 across(Vec2 direction) {
+  return {-direction.y, direction.x};
+}
 
 using Motion = std::variant<Vibrate, Translate, Rotate, Servo>;
 

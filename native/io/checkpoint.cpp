@@ -213,6 +213,26 @@ void write_driver(Writer& w, const Driver& d) {
   w.pod(d.start_time);
 }
 
+// A servo as format 13 stored it, before its slide speed.
+struct Servo13 {
+  Vec2 direction;
+  double force, stress, max_speed, relaxation, displacement, speed;
+};
+static_assert(sizeof(Servo) == sizeof(Servo13) + sizeof(double),
+              "a member was added to Servo: read it in a new format version");
+
+Servo read_servo(Reader& r, std::uint32_t version) {
+  if (version >= 14) return r.pod<Servo>();
+  const auto s = r.pod<Servo13>();
+  return Servo{.direction = s.direction,
+               .force = s.force,
+               .stress = s.stress,
+               .max_speed = s.max_speed,
+               .relaxation = s.relaxation,
+               .displacement = s.displacement,
+               .speed = s.speed};
+}
+
 // Format 9 added the driver's start time (a driver changed during a run); before, every driver
 // started at 0.
 Driver read_driver(Reader& r, std::uint32_t version) {
@@ -228,7 +248,7 @@ Driver read_driver(Reader& r, std::uint32_t version) {
     d.motion = r.pod<Rotate>();
     break;
   case 3:
-    d.motion = r.pod<Servo>();
+    d.motion = read_servo(r, version);
     break;
   default:
     r.fail("unknown driver type");

@@ -30,9 +30,9 @@ struct Checkpoint {
 /// The format written. 7: the lever arm in the config; 8: FNV-1a's own offset basis in the
 /// checksum (7 had one a digit short); 9: a driver's start time; 10: the particles' periodic
 /// image counts; 11: rolling resistance (the materials' keys and the rolling springs); 12: the
-/// linear law's damping convention; 13: the timestep's clock (a timestep changed during a run).
-/// Versions 7 to 12 are read.
-inline constexpr std::uint32_t checkpoint_version = 13;
+/// linear law's damping convention; 13: the timestep's clock (a timestep changed during a run);
+/// 14: a servo's slide speed. Versions 7 to 13 are read.
+inline constexpr std::uint32_t checkpoint_version = 14;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

@@ -31,6 +31,7 @@ Scenario with_changeable_of(Scenario s, const Scenario& like) {
     d.velocity = l.velocity, d.angular_velocity = l.angular_velocity, d.amplitude = l.amplitude;
     d.frequency = l.frequency, d.phase = l.phase, d.direction = l.direction, d.centre = l.centre;
     d.force = l.force, d.stress = l.stress, d.max_speed = l.max_speed, d.relaxation = l.relaxation;
+    d.slide_speed = l.slide_speed;
   }
   s.output.thermo_interval = like.output.thermo_interval;
   s.output.snapshot_interval = like.output.snapshot_interval;
@@ -43,7 +44,8 @@ bool same_motion(const DriverSection& a, const DriverSection& b) {
   return a.velocity == b.velocity && a.angular_velocity == b.angular_velocity &&
          a.amplitude == b.amplitude && a.frequency == b.frequency && a.phase == b.phase &&
          a.direction == b.direction && a.centre == b.centre && a.force == b.force &&
-         a.stress == b.stress && a.max_speed == b.max_speed && a.relaxation == b.relaxation;
+         a.stress == b.stress && a.max_speed == b.max_speed && a.relaxation == b.relaxation &&
+         a.slide_speed == b.slide_speed;
 }
 
 // A driver whose motion changed starts its new motion from where its targets are now: no jump

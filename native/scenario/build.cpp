@@ -43,7 +43,13 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
 Motion motion_of(const DriverSection& d) {
   if (d.type == "vibrate") return Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
   if (d.type == "translate") return Translate{d.velocity};
-  if (d.type == "servo") return Servo{d.direction, d.force, d.stress, d.max_speed, d.relaxation};
+  if (d.type == "servo")
+    return Servo{.direction = d.direction,
+                 .force = d.force,
+                 .stress = d.stress,
+                 .max_speed = d.max_speed,
+                 .relaxation = d.relaxation,
+                 .slide_speed = d.slide_speed};
   return Rotate{d.centre, d.angular_velocity};
 }
 
@@ -226,8 +232,8 @@ void place_grains(const Scenario& s, const std::vector<double>& radii, RandomStr
   World& w = out.world;
   check_listed_grains_clear_of_walls(s, w, out.bounds);
   for (const ExplicitParticle& e : s.particles.list) {
-    // the fixed grains are the wall group "fixed": their force in thermo.csv, a driver by name
-    if (e.kind == "fixed") out.groups["fixed"].particles.push_back(u32(w.particles.size()));
+    // fixed grains are a wall group ("fixed" unless named): their force in thermo.csv, a driver
+    if (e.kind == "fixed") out.groups[e.group].particles.push_back(u32(w.particles.size()));
     w.add_particle({.position = e.position,
                     .radius = e.radius,
                     .material = material_index(s, e.material, "particles.list.material"),
@@ -313,11 +319,6 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
       throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
                           "' in this geometry; groups: " + names);
     }
-    if (d.type == "servo" && !group->second.particles.empty())
-      throw ScenarioError("key 'drivers.target': the group '" + d.target + "' holds " +
-                          std::to_string(group->second.particles.size()) +
-                          " wall particles; a servo drives wall segments only (a group of "
-                          "segments: floor, left, right, lid, or one of geometry.segments)");
     // fixed grains a driver moves are moved grains (the container's wall particles are made so)
     for (const std::uint32_t i : group->second.particles)
       if (out.world.particles.kind[i] == Kind::fixed) out.world.particles.kind[i] = Kind::moved;

@@ -56,6 +56,7 @@ struct ExplicitParticle {
   double angular_velocity = 0.0;
   double mass = 0.0; ///< 0: from shape and density
   std::string kind = "free";
+  std::string group = "fixed"; ///< a fixed grain's wall group
   std::string material;
 };
 
@@ -118,6 +119,7 @@ struct DriverSection {
   double stress = 0.0;           ///< servo: N/m, the load per width of the walls (or force)
   double max_speed = 0.0;        ///< servo: m/s (simulation.impact_speed unless given)
   double relaxation = 0.5;       ///< servo: the fraction of the load's error closed per step
+  double slide_speed = 0.0;      ///< servo: m/s across direction (a quarter turn anticlockwise)
 };
 
 struct TrackSection {

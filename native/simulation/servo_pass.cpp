@@ -1,7 +1,9 @@
 // The servo walls' controller step: what each servo's walls feel after the force stage.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
+#include "core/contact_vectors.hpp"
 #include "drivers/servo.hpp"
 #include "simulation/simulation.hpp"
 #include "simulation/wall_pass.hpp"
@@ -52,9 +54,51 @@ void Simulation::drive_servos() {
           },
           [](std::uint32_t) {});
   });
+  read_servo_particles(reading);
   for (std::size_t k = 0; k < world_.drivers.size(); ++k)
     if (auto* servo = std::get_if<Servo>(&world_.drivers[k].motion))
       servo_advance(*servo, reading[k], config_.timestep);
+}
+
+void Simulation::read_servo_particles(std::vector<ServoReading>& reading) {
+  const Particles& p = world_.particles;
+  std::vector<std::int32_t>& owner = servo_particle_owner_;
+  bool any = false;
+  owner.assign(p.size(), -1);
+  for (std::size_t k = 0; k < world_.drivers.size(); ++k) {
+    const auto* servo = std::get_if<Servo>(&world_.drivers[k].motion);
+    if (servo == nullptr) continue;
+    for (const auto i : world_.drivers[k].targets.particles) {
+      owner[i] = static_cast<std::int32_t>(k);
+      reading[k].load -= dot(p.force[i], servo->direction);
+      any = true;
+    }
+  }
+  if (!any) return;
+  // The contacts of the wall particles with grains (two wall particles never meet in the list),
+  // their stiffness and damping read as for segments above.
+  const LeverShares shares = lever_shares(config_.lever_arm);
+  with_normal_law(config_.normal_law, [&]<class N>() {
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      for (std::uint32_t e = list_.row_offset[i]; e < list_.row_offset[i + 1]; ++e) {
+        const std::uint32_t j = list_.neighbour[e];
+        const std::int32_t k = owner[i] >= 0 ? owner[i] : owner[j];
+        if (k < 0) continue;
+        const Vec2 d = p.position[i] - (p.position[j] + list_.shift(e, world_.domain));
+        const double dist2 = norm2(d), reach = p.radius[i] + p.radius[j];
+        if (dist2 >= reach * reach || dist2 == 0.0) continue;
+        ContactGeometry g = pair_geometry(
+            d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
+            p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, shares);
+        const PairParameters& pair = pairs_(p.material[i], p.material[j]);
+        ServoReading& r = reading[static_cast<std::size_t>(k)];
+        r.stiffness += N::stiffness(pair, g);
+        g.v_normal = 0.0;
+        const double resting = N::force(pair, g);
+        g.v_normal = -1.0;
+        r.damping += N::force(pair, g) - resting;
+      }
+  });
 }
 
 } // namespace talus

@@ -198,6 +198,12 @@ bool Simulation::predict() {
 void Simulation::move_bodies(double t) {
   if (!features_.driven) return;
   for (const Driver& d : world_.drivers) apply(d, t, world_.particles, world_.walls);
+  // a driven grain that slides out of a periodic box comes in on the other side, as free ones
+  // do (the move past the skin rebuilds the list, with its new image)
+  if (world_.domain.any_periodic())
+    for (const Driver& d : world_.drivers)
+      for (const auto i : d.targets.particles)
+        world_.particles.position[i] = world_.domain.wrap(world_.particles.position[i]);
 }
 
 void Simulation::update_neighbours(bool drifted) {

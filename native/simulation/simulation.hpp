@@ -264,9 +264,12 @@ private:
   double drift_bound_ = unknown_drift;
   std::uint64_t drift_tests_ = 0;
   StepFeatures features_;
+  /// drive_servos' part for the servos' wall particles: their contacts with grains.
+  void read_servo_particles(std::vector<ServoReading>& reading);
   // drive_servos' scratch, kept so that a step allocates nothing: the servo owning each segment
-  // (-1: none), each driver's reading, the wall contacts of one particle
+  // and each particle (-1: none), each driver's reading, the wall contacts of one particle
   std::vector<std::int32_t> servo_owner_;
+  std::vector<std::int32_t> servo_particle_owner_;
   std::vector<ServoReading> servo_reading_;
   std::vector<SegmentHit> servo_hits_;
   bool features_stale_ = false; ///< the world or a particle was edited since they were chosen

@@ -66,6 +66,32 @@ TEST(LoadBearing, TakesOutRattlersOneAfterTheOther) {
   EXPECT_EQ(load_bearing(hung, {-0.5 * r, -0.5 * r}, {0.5 * r, 0.5 * r}, 3).grains, 1u);
 }
 
+// A fixed grain counts as a wall for the grains it touches, whatever its index: with it first
+// in the list it is the first particle of its pairs (this once read a wall as grain 2^32 - 1).
+// The hexagon's centre fixed: each outer disk keeps its 3 contacts, one of them the wall.
+TEST(LoadBearing, AFixedGrainIsAWallToTheGrainsItHolds) {
+  World w;
+  Material m;
+  m.friction = 0.0;
+  w.materials = {m};
+  w.gravity = {0.0, 0.0};
+  w.add_particle({.position = {0.0, 0.0}, .radius = r, .kind = Kind::fixed, .shape = Shape::disk});
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::numbers::pi / 3.0;
+    w.add_particle({.position = {touching * std::cos(a), touching * std::sin(a)},
+                    .radius = r,
+                    .shape = Shape::disk});
+  }
+  SimulationConfig c;
+  c.timestep = 1e-6;
+  c.tangential_law = law_id<Frictionless>;
+  const Simulation ring(std::move(w), c);
+  const LoadBearing net = load_bearing(ring, {-1.0, -1.0}, {1.0, 1.0}, 3);
+  EXPECT_EQ(net.grains, 6u);
+  EXPECT_EQ(net.rattlers, 0u);
+  EXPECT_NEAR(net.coordination, 3.0, 1e-12);
+}
+
 // Steps on phi = phi_J + p / B and Z = Z_J + A sqrt(phi - phi_J) give back the four numbers to
 // rounding (1e-9: the least squares of exact data).
 TEST(JammingFit, GivesBackTheClosedForms) {

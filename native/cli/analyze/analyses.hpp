@@ -11,6 +11,7 @@
 
 #include "analysis/frame.hpp"
 #include "post/discharge.hpp"
+#include "post/rheology.hpp"
 #include "scenario/scenario.hpp"
 
 namespace talus::cli {
@@ -112,8 +113,16 @@ Section analyze_janssen(RunData& run, const AnalysisOptions& o);
 /// A run let down in steps of pressure: the jamming point (post/jamming.hpp).
 Section analyze_jamming(RunData& run, const AnalysisOptions& o);
 
+/// A plane shear flow's mu, phi and I (post/rheology.hpp), from --from or the second half of the
+/// snapshots; throws InvalidArgument for a run that is not periodic along x.
+RheologyPoint run_rheology(RunData& run, const AnalysisOptions& o);
+/// One point as a JSON object (rheology.json).
+std::string rheology_json(const RheologyPoint& r);
+Section analyze_rheology(RunData& run, const AnalysisOptions& o);
+
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
-/// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields).
+/// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields,
+/// janssen, jamming, rheology).
 void check_analysis_name(const std::string& what);
 /// The analysis `what` names (check_analysis_name), as `talus analyze DIR WHAT` runs it.
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o);

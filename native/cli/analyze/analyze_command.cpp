@@ -92,6 +92,12 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     // a silo at rest: the wall stress against depth
     if (s.geometry.builder == "silo" && s.geometry.orifice == 0.0 && !driven)
       attempt("janssen", [&] { return analyze_janssen(run, o); });
+    // a layer sheared by a sliding servo plate: its rheology
+    const bool shear = std::any_of(s.drivers.begin(), s.drivers.end(), [](const DriverSection& d) {
+      return d.type == "servo" && d.slide_speed != 0.0;
+    });
+    if (shear && s.geometry.periodic == "x")
+      attempt("rheology", [&] { return analyze_rheology(run, o); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
   if (fs::exists(run.dir() / "contact_events.csv"))
@@ -103,6 +109,7 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
 // the discharge where the container has an orifice, and the final state's main numbers.
 void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
   if (what == "discharge") return analyze_sweep_discharge(dir, o);
+  if (what == "rheology") return analyze_sweep_rheology(dir, o);
   if (what != "all") return analyze_sweep_result(dir, what);
   const SweepPlan plan = read_plan(dir);
   if (plan.runs.empty()) return;
@@ -124,12 +131,12 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 void check_analysis_name(const std::string& what) {
   const std::vector<std::string> allowed{"thermo",      "forces",  "profiles", "tracks",
                                          "segregation", "frost",   "contacts", "repose",
-                                         "fields",      "janssen", "jamming"};
+                                         "fields",      "janssen", "jamming",  "rheology"};
   if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
     throw InvalidArgument("analyze: '" + what +
                           "' is not an analysis of a run folder; allowed: "
                           "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                          "repose, fields, janssen, jamming, all");
+                          "repose, fields, janssen, jamming, rheology, all");
 }
 
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
@@ -144,6 +151,7 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
   if (what == "fields") return analyze_fields(run, o);
   if (what == "janssen") return analyze_janssen(run, o);
   if (what == "jamming") return analyze_jamming(run, o);
+  if (what == "rheology") return analyze_rheology(run, o);
   return analyze_frost(run);
 }
 
@@ -160,7 +168,7 @@ void add_analyze_command(CLI::App& app) {
       "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
       "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles), "
       "janssen (a silo's wall stress against depth), jamming (the jamming point of a run let down "
-      "in steps of pressure); "
+      "in steps of pressure), rheology (mu, phi and I of a plane shear flow); "
       "with no WHAT "
       "every one that applies, "
       "and report.html");
@@ -169,9 +177,10 @@ void add_analyze_command(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
                   "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, "
-                  "janssen, jamming, or "
+                  "janssen, jamming, rheology, or "
                   "all (with "
-                  "report.html); for a sweep folder: discharge (with the Beverloo fit), or a "
+                  "report.html); for a sweep folder: discharge (with the Beverloo fit), "
+                  "rheology (the mu(I) and phi(I) fits), or a "
                   "result of its index.csv")
       ->capture_default_str();
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")

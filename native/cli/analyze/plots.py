@@ -385,6 +385,50 @@ elif kind == "beverloo":
     a.set_ylabel("discharge rate W [grains/s]")
     a.set_title(f"Beverloo fits, d = {1e3 * d:.3g} mm")
     a.legend(fontsize=8)
+elif kind == "rheology":
+    fig, axes = plt.subplots(1, 3, figsize=(12, 4.5), sharey=True)
+    y = col("y")
+    bulk = [float(r["y"]) for r in rows if r["bulk"] == "1"]
+    for a, key, label in ((axes[0], "velocity_x", "v_x [m/s]"),
+                          (axes[1], "packing_fraction", "packing fraction [-]"),
+                          (axes[2], "friction", "|sigma_xy| / sigma_yy [-]")):
+        rs = [r for r in rows if r[key] != ""]
+        a.plot(col(key, rs), col("y", rs), "-")
+        a.axhspan(min(bulk), max(bulk), color="grey", alpha=0.15, label="bulk measured")
+        a.set_xlabel(label)
+    axes[0].set_ylabel("height [m]")
+    axes[2].axvline(extra["friction"], color="k", ls="--", lw=1,
+                    label=f"mu = {extra['friction']:.3f}, I = {extra['inertial']:.3g}")
+    axes[2].legend(fontsize=8)
+    axes[0].legend(fontsize=8)
+elif kind == "rheology_sweep":
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.5))
+    rs = [r for r in rows if r["measured"] == "1"]
+    i, ie = col("inertial", rs), col("inertial_error", rs)
+    a.errorbar(i, col("friction", rs), xerr=ie, yerr=col("friction_error", rs), fmt="o",
+               capsize=3, label="runs")
+    b.errorbar(i, col("packing", rs), xerr=ie, yerr=col("packing_error", rs), fmt="o",
+               capsize=3, label="runs")
+    u = [max(i) * 1.1 * k / 200 for k in range(1, 201)] if i else []
+    f = extra["mu_of_i"]
+    if f["ok"]:
+        a.plot(u, [f["mu_s"] + (f["mu_2"] - f["mu_s"]) / (f["i_0"] / v + 1) for v in u], "k-",
+               lw=1, label=f"mu_s = {f['mu_s']:.3f}, mu_2 = {f['mu_2']:.3f}, "
+                           f"I_0 = {f['i_0']:.3g}")
+    f = extra["mu_line"]
+    if f["ok"]:
+        a.plot(u, [f["intercept"] + f["slope"] * v for v in u], "k--", lw=1,
+               label=f"mu_1 + b I: mu_1 = {f['intercept']:.3f}, b = {f['slope']:.2f}")
+    f = extra["phi_line"]
+    if f["ok"]:
+        b.plot(u, [f["intercept"] + f["slope"] * v for v in u], "k-", lw=1,
+               label=f"phi_max - a I: phi_max = {f['intercept']:.3f}, a = {-f['slope']:.2f}")
+    a.set_xlabel("inertial number I [-]")
+    a.set_ylabel("friction coefficient mu [-]")
+    b.set_xlabel("inertial number I [-]")
+    b.set_ylabel("packing fraction phi [-]")
+    a.legend(fontsize=8)
+    b.legend(fontsize=8)
 else:
     sys.exit(f"unknown chart {kind}")
 if fig.get_layout_engine() is None:  # a figure with a colour bar lays itself out

@@ -17,4 +17,9 @@ void analyze_sweep_result(const std::filesystem::path& dir, const std::string& r
 /// for each combination of the other keys: beverloo.csv, beverloo.json, beverloo.png.
 void analyze_sweep_discharge(const std::filesystem::path& dir, const AnalysisOptions& o);
 
+/// Every finished run's rheology (run_rheology, with o.from): rheology_points.csv, and the fits
+/// of mu(I) (mu_s, mu_2, I_0; and mu_1 + b I) and phi(I) = phi_max - a I over them:
+/// rheology.json, rheology.png.
+void analyze_sweep_rheology(const std::filesystem::path& dir, const AnalysisOptions& o);
+
 } // namespace talus::cli

@@ -154,6 +154,13 @@ Material read_material(TableReader& r, std::size_t index) {
   return m;
 }
 
+// A name thermo.csv's columns (force_NAME_x) and a driver's target can carry.
+bool is_group_name(const std::string& name) {
+  return !name.empty() && name.find_first_not_of(
+                              "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+                              std::string::npos;
+}
+
 void read_size(TableReader& r, SizeSpec& s) {
   s.distribution = r.choice("distribution", "uniform", {"uniform", "wentworth", "discrete"});
   s.mean_radius = r.number("mean_radius", s.mean_radius, 1e-12, inf, "> 0 m");
@@ -194,6 +201,13 @@ void read_particles(TableReader& r, ParticlesSection& p, const std::string& file
     e.angular_velocity = lr.number("angular_velocity", 0.0, -inf, inf, "any, rad/s");
     e.mass = lr.number("mass", 0.0, 0.0, inf, ">= 0 kg (0: from density)");
     e.kind = lr.choice("kind", "free", {"free", "fixed"});
+    e.group = lr.text("group", e.group);
+    if (e.kind != "fixed" && lr.has("group"))
+      lr.fail("group", "only a fixed grain joins a wall group (this one is free)");
+    if (e.group == "walls" || !is_group_name(e.group))
+      lr.fail("group", "'" + e.group +
+                           "'; allowed: a name of letters, digits and _, other than walls "
+                           "(default fixed)");
     e.material = lr.text("material", "");
     lr.finish();
     p.list.push_back(e);
@@ -245,9 +259,7 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
     seg.group = sr.text("group", seg.group);
     // a name thermo.csv's columns (force_NAME_x) and a driver's target can carry; "walls" is
     // every wall's group and "fixed" the fixed grains'
-    if (seg.group.empty() || seg.group == "walls" || seg.group == "fixed" ||
-        seg.group.find_first_not_of(
-            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
+    if (seg.group == "walls" || seg.group == "fixed" || !is_group_name(seg.group))
       sr.fail("group", "'" + seg.group +
                            "'; allowed: a name of letters, digits and _, other than walls and "
                            "fixed (default extra)");
@@ -262,8 +274,9 @@ void read_servo(TableReader& r, DriverSection& d, double impact_speed) {
   d.stress = r.number("stress", 0.0, 0.0, inf, ">= 0 N/m");
   d.max_speed = r.number("max_speed", impact_speed, 1e-12, inf, "> 0 m/s");
   d.relaxation = r.number("relaxation", d.relaxation, 1e-9, 1.0, "in (0, 1]");
+  d.slide_speed = r.number("slide_speed", 0.0, -inf, inf, "a finite speed in m/s");
   if (d.type != "servo") {
-    for (const char* key : {"force", "stress", "max_speed", "relaxation"})
+    for (const char* key : {"force", "stress", "max_speed", "relaxation", "slide_speed"})
       if (r.has(key)) r.fail(key, "only a servo driver has it (this one is " + d.type + ")");
     return;
   }

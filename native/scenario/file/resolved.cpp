@@ -119,14 +119,17 @@ toml::table particles_table(const ParticlesSection& p) {
                    {"radii", list(p.size.radii)},
                    {"fractions", list(p.size.fractions)}};
   toml::array explicit_list;
-  for (const ExplicitParticle& e : p.list)
-    explicit_list.push_back(toml::table{{"position", vec(e.position)},
-                                        {"radius", e.radius},
-                                        {"velocity", vec(e.velocity)},
-                                        {"angular_velocity", e.angular_velocity},
-                                        {"mass", e.mass},
-                                        {"kind", e.kind},
-                                        {"material", e.material}});
+  for (const ExplicitParticle& e : p.list) {
+    toml::table t{{"position", vec(e.position)},
+                  {"radius", e.radius},
+                  {"velocity", vec(e.velocity)},
+                  {"angular_velocity", e.angular_velocity},
+                  {"mass", e.mass},
+                  {"kind", e.kind},
+                  {"material", e.material}};
+    if (e.kind == "fixed") t.insert("group", e.group); // a free grain has none
+    explicit_list.push_back(std::move(t));
+  }
   toml::table particles{{"count", static_cast<std::int64_t>(p.count)},
                         {"shape", p.shape == Shape::disk ? "disk" : "sphere"},
                         {"material", p.material},
@@ -183,6 +186,7 @@ toml::array drivers_array(const std::vector<DriverSection>& drivers) {
       t.insert(d.stress > 0.0 ? "stress" : "force", d.stress > 0.0 ? d.stress : d.force);
       t.insert("max_speed", d.max_speed);
       t.insert("relaxation", d.relaxation);
+      t.insert("slide_speed", d.slide_speed);
     }
     out.push_back(std::move(t));
   }
