@@ -34,6 +34,8 @@ short_of() {
                   --set stages.2.duration=0.05" ;;
     silo_gate) echo "--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5" ;;
     shear) echo "--set simulation.duration=0.3" ;;
+    chute) echo "--set simulation.duration=0.1" ;;
+    chute_stop) echo "--set particles.count=100 --set stages.0.duration=0.05 --set stages.1.duration=0.05" ;;
     *) echo "scripts/state-hashes.sh: no short version of '$1'" >&2; exit 1 ;;
   esac
 }

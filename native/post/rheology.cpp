@@ -91,6 +91,18 @@ std::pair<double, double> mean_error(const std::vector<BlockValues>& blocks,
 
 } // namespace
 
+GrainScale grain_scale(const Frame& f) {
+  GrainScale g;
+  double area = 0.0, mass = 0.0, diameter = 0.0;
+  for (std::size_t i = 0; i < f.position.size(); ++i)
+    if (f.kind[i] == 0) {
+      area += std::numbers::pi * f.radius[i] * f.radius[i], mass += f.mass[i];
+      diameter += 2.0 * f.radius[i], ++g.grains;
+    }
+  if (g.grains > 0) g.diameter = diameter / static_cast<double>(g.grains), g.density = mass / area;
+  return g;
+}
+
 RheologyPoint rheology_point(const std::vector<Frame>& frames, const RheologyOptions& o) {
   RheologyPoint r;
   r.frames = frames.size();
@@ -99,20 +111,13 @@ RheologyPoint rheology_point(const std::vector<Frame>& frames, const RheologyOpt
                             std::max<std::size_t>(o.blocks, 2));
     return r;
   }
-  double area = 0.0, mass = 0.0, diameter = 0.0;
-  std::size_t grains = 0;
-  for (std::size_t i = 0; i < frames.front().position.size(); ++i)
-    if (frames.front().kind[i] == 0) {
-      const double radius = frames.front().radius[i];
-      area += std::numbers::pi * radius * radius, mass += frames.front().mass[i];
-      diameter += 2.0 * radius, ++grains;
-    }
-  if (grains == 0) {
+  const GrainScale scale = grain_scale(frames.front());
+  if (scale.grains == 0) {
     r.why_not = "the snapshots hold no free grains";
     return r;
   }
-  r.diameter = diameter / static_cast<double>(grains);
-  r.grain_density = mass / area;
+  r.diameter = scale.diameter;
+  r.grain_density = scale.density;
   const Walls w = walls_of(frames);
   if (!w.found) {
     r.why_not = "no wall grains both below and above the free grains (a shear cell has a rough "

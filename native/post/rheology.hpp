@@ -43,6 +43,13 @@ struct RheologyPoint {
   std::size_t frames = 0;
 };
 
+/// The free grains' mean diameter (m) and their mass over their area (kg/m^2) in one frame.
+struct GrainScale {
+  double diameter = 0.0, density = 0.0;
+  std::size_t grains = 0;
+};
+GrainScale grain_scale(const Frame& f);
+
 /// The flow of the free grains of `frames` (with contact force vectors) between the wall grains
 /// below and above them, in the middle `bulk_fraction` of the gap. Not measured (why_not says
 /// why) when the frames are fewer than the blocks or the gap is under 8 grain diameters.

@@ -11,7 +11,7 @@ from . import _talus
 def analyze(folder, what, *, frames="all", start=None, bins=0, cell=0.0, axis="y",
             kernel="gaussian", width=0.0, map=False):
     """Runs one analysis of a run folder (thermo, forces, profiles, tracks, segregation, frost,
-    contacts, repose, fields, janssen, jamming, rheology) as `talus analyze FOLDER WHAT` does,
+    contacts, repose, fields, janssen, jamming, rheology, chute) as `talus analyze FOLDER WHAT` does,
     with its options (start is --from; axis, kernel, width and map are the fields'), writing
     FOLDER/analysis, and returns
     {"title", "summary", "numbers": {label: text}, "charts": [paths], "data": {name: the JSON

@@ -86,6 +86,13 @@ int& failed_charts();
 /// its snapshots span (a drum spinning up, a silo's first outflow).
 double start_up_end(RunData& run);
 
+/// Where the steady state of a flow measured over its second half starts: --from, else the
+/// middle of the span of the run's snapshots (a shear cell or a chute gaining speed).
+double steady_from(RunData& run, const AnalysisOptions& o);
+/// The coarse-graining kernel's width: --width, else the mean grain radius (Gaussian) or two
+/// (Lucy's kernel, which reaches its width and no farther).
+double kernel_width(RunData& run, const AnalysisOptions& o);
+
 Section analyze_thermo(RunData& run);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);
 Section analyze_profiles(RunData& run, const AnalysisOptions& o);
@@ -119,10 +126,12 @@ RheologyPoint run_rheology(RunData& run, const AnalysisOptions& o);
 /// One point as a JSON object (rheology.json).
 std::string rheology_json(const RheologyPoint& r);
 Section analyze_rheology(RunData& run, const AnalysisOptions& o);
+/// A flow down a rough incline, periodic along it: profiles and Bagnold's fit (post/chute.hpp).
+Section analyze_chute(RunData& run, const AnalysisOptions& o);
 
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
 /// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields,
-/// janssen, jamming, rheology).
+/// janssen, jamming, rheology, chute).
 void check_analysis_name(const std::string& what);
 /// The analysis `what` names (check_analysis_name), as `talus analyze DIR WHAT` runs it.
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o);

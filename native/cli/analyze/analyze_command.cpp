@@ -98,6 +98,9 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     });
     if (shear && s.geometry.periodic == "x")
       attempt("rheology", [&] { return analyze_rheology(run, o); });
+    // a layer periodic along a tilted slope: a chute
+    if (!servo && s.geometry.periodic == "x" && s.simulation.gravity.x != 0.0)
+      attempt("chute", [&] { return analyze_chute(run, o); });
   }
   if (fs::exists(run.dir() / "track.csv")) attempt("tracks", [&] { return analyze_tracks(run); });
   if (fs::exists(run.dir() / "contact_events.csv"))
@@ -110,6 +113,7 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
 void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
   if (what == "discharge") return analyze_sweep_discharge(dir, o);
   if (what == "rheology") return analyze_sweep_rheology(dir, o);
+  if (what == "chute") return analyze_sweep_chute(dir, o);
   if (what != "all") return analyze_sweep_result(dir, what);
   const SweepPlan plan = read_plan(dir);
   if (plan.runs.empty()) return;
@@ -129,14 +133,14 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
 } // namespace
 
 void check_analysis_name(const std::string& what) {
-  const std::vector<std::string> allowed{"thermo",      "forces",  "profiles", "tracks",
-                                         "segregation", "frost",   "contacts", "repose",
-                                         "fields",      "janssen", "jamming",  "rheology"};
+  const std::vector<std::string> allowed{"thermo",  "forces",   "profiles", "tracks", "segregation",
+                                         "frost",   "contacts", "repose",   "fields", "janssen",
+                                         "jamming", "rheology", "chute"};
   if (std::find(allowed.begin(), allowed.end(), what) == allowed.end())
     throw InvalidArgument("analyze: '" + what +
                           "' is not an analysis of a run folder; allowed: "
                           "thermo, forces, profiles, tracks, segregation, frost, contacts, "
-                          "repose, fields, janssen, jamming, rheology, all");
+                          "repose, fields, janssen, jamming, rheology, chute, all");
 }
 
 Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions& o) {
@@ -152,6 +156,7 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
   if (what == "janssen") return analyze_janssen(run, o);
   if (what == "jamming") return analyze_jamming(run, o);
   if (what == "rheology") return analyze_rheology(run, o);
+  if (what == "chute") return analyze_chute(run, o);
   return analyze_frost(run);
 }
 
@@ -168,7 +173,9 @@ void add_analyze_command(CLI::App& app) {
       "speed map, discharge), tracks, segregation, frost, contacts (contact events), repose (a "
       "heap's angle of repose), fields (coarse-grained density, velocity and stress profiles), "
       "janssen (a silo's wall stress against depth), jamming (the jamming point of a run let down "
-      "in steps of pressure), rheology (mu, phi and I of a plane shear flow); "
+      "in steps of pressure), rheology (mu, phi and I of a plane shear flow), chute (a flow down "
+      "an incline and "
+      "Bagnold's profile); "
       "with no WHAT "
       "every one that applies, "
       "and report.html");
@@ -177,10 +184,10 @@ void add_analyze_command(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   cmd->add_option("what", o->what,
                   "thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields, "
-                  "janssen, jamming, rheology, or "
+                  "janssen, jamming, rheology, chute, or "
                   "all (with "
                   "report.html); for a sweep folder: discharge (with the Beverloo fit), "
-                  "rheology (the mu(I) and phi(I) fits), or a "
+                  "rheology (the mu(I) and phi(I) fits), chute (h_stop), or a "
                   "result of its index.csv")
       ->capture_default_str();
   cmd->add_option("--frames", o->a.frames, "forces: snapshots to pool, all or last")

@@ -116,7 +116,7 @@ Section analyze_fields(RunData& run, const AnalysisOptions& a) {
   CgOptions o;
   o.kernel = parse_cg_kernel(a.kernel);
   o.axis = a.axis == "x" ? 0 : 1;
-  o.width = a.width > 0.0 ? a.width : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * run.mean_radius();
+  o.width = kernel_width(run, a);
   if (a.map) return analyze_field_map(run, a, frames, o.kernel, o.width);
   span_and_across(run.scenario(), frames, o);
   o.points = static_cast<std::size_t>(

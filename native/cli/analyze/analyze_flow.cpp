@@ -9,6 +9,7 @@
 #include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
 #include "io/track_csv.hpp"
+#include "post/coarse_grain.hpp"
 #include "post/discharge.hpp"
 #include "post/flow_profiles.hpp"
 #include "scenario/geometry.hpp"
@@ -148,6 +149,17 @@ void write_speed_map(const fs::path& out, const std::vector<Frame>& frames, cons
 double start_up_end(RunData& run) {
   const auto& all = run.frames(0.0);
   return all.empty() ? 0.0 : all.front().time + 0.25 * (all.back().time - all.front().time);
+}
+
+double steady_from(RunData& run, const AnalysisOptions& a) {
+  if (a.from >= 0.0) return a.from;
+  const std::vector<Frame>& all = run.frames(0.0);
+  return 0.5 * (all.front().time + all.back().time);
+}
+
+double kernel_width(RunData& run, const AnalysisOptions& a) {
+  if (a.width > 0.0) return a.width;
+  return (parse_cg_kernel(a.kernel) == CgKernel::lucy ? 2.0 : 1.0) * run.mean_radius();
 }
 
 Section analyze_profiles(RunData& run, const AnalysisOptions& o) {

@@ -16,13 +16,6 @@ namespace talus::cli {
 
 namespace {
 
-// The run's snapshots of its steady flow: from --from, else the second half of their span.
-double steady_from(RunData& run, const AnalysisOptions& a) {
-  if (a.from >= 0.0) return a.from;
-  const std::vector<Frame>& all = run.frames(0.0);
-  return 0.5 * (all.front().time + all.back().time);
-}
-
 RheologyOptions options_of(RunData& run, const AnalysisOptions& a) {
   const Scenario& s = run.scenario();
   if (s.geometry.periodic != "x")
@@ -32,7 +25,7 @@ RheologyOptions options_of(RunData& run, const AnalysisOptions& a) {
                           s.geometry.periodic + "\"");
   RheologyOptions o;
   o.kernel = parse_cg_kernel(a.kernel);
-  o.width = a.width > 0.0 ? a.width : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * run.mean_radius();
+  o.width = kernel_width(run, a);
   o.across = s.geometry.box->hi.x - s.geometry.box->lo.x;
   return o;
 }

@@ -429,6 +429,45 @@ elif kind == "rheology_sweep":
     b.set_ylabel("packing fraction phi [-]")
     a.legend(fontsize=8)
     b.legend(fontsize=8)
+elif kind == "chute":
+    fig, axes = plt.subplots(1, 3, figsize=(12, 4.5), sharey=True)
+    z = col("z")
+    d = extra["diameter"]
+    zd = [v / d for v in z]
+    band = [float(r["z"]) / d for r in rows if r["fitted"] == "1"]
+    a = axes[0]
+    a.plot(col("velocity"), zd, "-", label="coarse-grained")
+    rs = [r for r in rows if r["bagnold"] != ""]
+    a.plot(col("bagnold", rs), [float(r["z"]) / d for r in rs], "k--", lw=1,
+           label=f"Bagnold: v_b + c (h^1.5 - (h - z)^1.5), rms {extra['bagnold_rms']:.2g} m/s")
+    a.set_xlabel("velocity down the slope [m/s]")
+    a.set_ylabel("height above the base / d")
+    for ax, key, label in ((axes[1], "packing_fraction", "packing fraction [-]"),
+                           (axes[2], "friction", "|sigma_xy| / sigma_yy and I [-]")):
+        rs = [r for r in rows if r[key] != ""]
+        ax.plot(col(key, rs), [float(r["z"]) / d for r in rs], "-", label=key)
+        ax.set_xlabel(label)
+    rs = [r for r in rows if r["inertial"] != "" and r["fitted"] == "1"]
+    axes[2].plot(col("inertial", rs), [float(r["z"]) / d for r in rs], "-", label="I")
+    axes[2].axvline(extra["tan_angle"], color="k", ls="--", lw=1,
+                    label=f"tan theta = {extra['tan_angle']:.3f}")
+    axes[2].set_xlim(0, 0.8)
+    for ax in axes:
+        ax.axhspan(min(band), max(band), color="grey", alpha=0.12)
+        ax.legend(fontsize=8)
+elif kind == "chute_stop":
+    fig, a = plt.subplots(figsize=(8, 4.5))
+    for flag, style, label in (("1", "o", "flowing"), ("0", "x", "stopped")):
+        rs = [r for r in rows if r["flowing"] == flag]
+        a.plot(col("depth_over_d", rs), col("mean_velocity", rs), style, ms=8, label=label)
+    if extra["bracketed"]:
+        d = extra["diameter"]
+        a.axvspan(extra["h_stop_lo"] / d, extra["h_stop_hi"] / d, color="grey", alpha=0.2,
+                  label="h_stop lies here")
+    a.set_xlabel("depth of the layer h / d")
+    a.set_ylabel("mean velocity down the slope at the end [m/s]")
+    a.set_title(f"layers at {extra['angle_deg']:.2f} degrees")
+    a.legend(fontsize=8)
 else:
     sys.exit(f"unknown chart {kind}")
 if fig.get_layout_engine() is None:  # a figure with a colour bar lays itself out

@@ -22,4 +22,10 @@ void analyze_sweep_discharge(const std::filesystem::path& dir, const AnalysisOpt
 /// rheology.json, rheology.png.
 void analyze_sweep_rheology(const std::filesystem::path& dir, const AnalysisOptions& o);
 
+/// Layers of several depths on one slope (the built-in chute_stop swept over particles.count):
+/// each run's depth and whether it still flows at its end (the mean over its last 2 s, or from
+/// o.from), and h_stop between the deepest stopped and the shallowest flowing layer:
+/// chute_stop.csv, chute_stop.json, chute_stop.png.
+void analyze_sweep_chute(const std::filesystem::path& dir, const AnalysisOptions& o);
+
 } // namespace talus::cli
