@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -310,15 +311,38 @@ void check_stress_region(const Scenario& s, const BuiltScenario& out) {
                       "y_min, x_max, y_max] in m");
 }
 
-void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
+// Each driver sets its walls' positions from its own origins: a wall two drivers move would
+// follow the last one alone, whatever the first asked. Refused, naming both.
+void check_one_driver_each(const std::vector<DriverSection>& drivers, const BuiltScenario& out) {
+  std::map<std::uint32_t, std::string> particle, segment; // wall -> the group that drives it
   for (const DriverSection& d : drivers) {
-    const auto group = out.groups.find(d.target);
-    if (group == out.groups.end()) {
+    const DriverTargets& t = out.groups.at(d.target);
+    const auto claim = [&](std::map<std::uint32_t, std::string>& owner, std::uint32_t k) {
+      const auto [at, fresh] = owner.emplace(k, d.target);
+      if (fresh) return;
+      throw ScenarioError(
+          "key 'drivers.target': the group '" + d.target + "' shares walls with '" + at->second +
+          "', which another driver moves (" +
+          (d.target == at->second ? "the same group twice" : "a group within the other") +
+          ", or a geometry's own driver such as the grain press's lid or the drum's turn): a "
+          "wall follows one driver; give each wall group one");
+    };
+    for (const auto i : t.particles) claim(particle, i);
+    for (const auto k : t.segments) claim(segment, k);
+  }
+}
+
+void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
+  for (const DriverSection& d : drivers)
+    if (!out.groups.contains(d.target)) {
       std::string names;
       for (const auto& [name, _] : out.groups) names += (names.empty() ? "" : ", ") + name;
       throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
                           "' in this geometry; groups: " + names);
     }
+  check_one_driver_each(drivers, out);
+  for (const DriverSection& d : drivers) {
+    const auto group = out.groups.find(d.target);
     // fixed grains a driver moves are moved grains (the container's wall particles are made so)
     for (const std::uint32_t i : group->second.particles)
       if (out.world.particles.kind[i] == Kind::fixed) out.world.particles.kind[i] = Kind::moved;

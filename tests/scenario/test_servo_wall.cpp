@@ -151,6 +151,10 @@ TEST(ServoWall, BadServosAreRefusedWithTheKey) {
   refused(head + "direction = [0, 0]\nforce = 1.0\n", "non-zero");
   refused(head + "direction = [1, 0]\nstress = 1.0\n", "width");
   refused("[[drivers]]\ntype = \"translate\"\ntarget = \"lid\"\nforce = 1.0\n", "only a servo");
+  // a wall moved by two drivers would follow the last alone: the lid, and all walls shaken
+  refused(head + "direction = [0, -1]\nforce = 1.0\n[[drivers]]\ntype = \"vibrate\"\n" +
+              "target = \"walls\"\n",
+          "a wall follows one driver");
   // exported to LAMMPS: refused with the reason
   const Scenario s = load_scenario(std::string(bed) + servo_lid, "servo_bed.toml");
   EXPECT_THROW(check_lammps_export(s), InvalidArgument);
