@@ -48,17 +48,6 @@ struct BlockValues {
   double shear_rate, pressure, shear_stress, packing, friction, inertial;
 };
 
-// The least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double mx = 0.0, my = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) mx += x[k], my += y[k];
-  mx /= static_cast<double>(x.size()), my /= static_cast<double>(x.size());
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
-  return sxy / sxx;
-}
-
 BlockValues block_values(const std::vector<Frame>& frames, const CgOptions& cg, double diameter,
                          double grain_density) {
   const FieldProfile p = coarse_grain(frames, cg);
@@ -73,7 +62,7 @@ BlockValues block_values(const std::vector<Frame>& frames, const CgOptions& cg, 
   }
   const auto n = static_cast<double>(p.at.size());
   b.pressure /= n, b.shear_stress = std::abs(b.shear_stress / n), b.packing /= n;
-  b.shear_rate = std::abs(slope(p.at, vx));
+  b.shear_rate = std::abs(fit_line(p.at, vx).slope);
   b.friction = b.shear_stress / b.pressure;
   b.inertial = b.shear_rate * diameter / std::sqrt(b.pressure / grain_density);
   return b;

@@ -10,6 +10,21 @@
 
 namespace talus {
 
+namespace {
+// A touching contact's tangent stiffness and damping coefficient into a servo's reading, from
+// the normal law's own force: both laws are linear in the overlap rate, so the force at rate 1
+// less that at rate 0 is the damping coefficient (both positive for an overlap, so no floor
+// cuts them).
+template <class N>
+void read_contact(ServoReading& r, const PairParameters& pair, ContactGeometry g) {
+  r.stiffness += N::stiffness(pair, g);
+  g.v_normal = 0.0;
+  const double resting = N::force(pair, g);
+  g.v_normal = -1.0;
+  r.damping += N::force(pair, g) - resting;
+}
+} // namespace
+
 bool Simulation::has_servo() const {
   for (const Driver& d : world_.drivers)
     if (std::holds_alternative<Servo>(d.motion)) return true;
@@ -32,9 +47,6 @@ void Simulation::drive_servos() {
       reading[k].load -= dot(walls[s].force, servo->direction);
     }
   }
-  // Each touching contact's tangent stiffness and damping coefficient, from the normal law's own
-  // force: both laws are linear in the overlap rate, so the force at rate 1 less that at rate 0
-  // is the damping coefficient (both positive for an overlap, so no floor cuts them).
   const Particles& p = world_.particles;
   const LeverShares shares = lever_shares(config_.lever_arm);
   with_normal_law(config_.normal_law, [&]<class N>() {
@@ -44,13 +56,8 @@ void Simulation::drive_servos() {
           [&](std::uint32_t e, const Segment& s, const ContactGeometry& g) {
             const std::int32_t k = owner[list_.wall_segment[e]];
             if (k < 0) return;
-            const PairParameters& pair = pairs_(p.material[i], s.material);
-            ContactGeometry at = g;
-            at.v_normal = 0.0;
-            const double resting = N::force(pair, at);
-            at.v_normal = -1.0;
-            reading[static_cast<std::size_t>(k)].stiffness += N::stiffness(pair, g);
-            reading[static_cast<std::size_t>(k)].damping += N::force(pair, at) - resting;
+            read_contact<N>(reading[static_cast<std::size_t>(k)], pairs_(p.material[i], s.material),
+                            g);
           },
           [](std::uint32_t) {});
   });
@@ -75,8 +82,7 @@ void Simulation::read_servo_particles(std::vector<ServoReading>& reading) {
     }
   }
   if (!any) return;
-  // The contacts of the wall particles with grains (two wall particles never meet in the list),
-  // their stiffness and damping read as for segments above.
+  // The contacts of the wall particles with grains (two wall particles never meet in the list).
   const LeverShares shares = lever_shares(config_.lever_arm);
   with_normal_law(config_.normal_law, [&]<class N>() {
     for (std::uint32_t i = 0; i < p.size(); ++i)
@@ -87,16 +93,10 @@ void Simulation::read_servo_particles(std::vector<ServoReading>& reading) {
         const Vec2 d = p.position[i] - (p.position[j] + list_.shift(e, world_.domain));
         const double dist2 = norm2(d), reach = p.radius[i] + p.radius[j];
         if (dist2 >= reach * reach || dist2 == 0.0) continue;
-        ContactGeometry g = pair_geometry(
-            d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
-            p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, shares);
-        const PairParameters& pair = pairs_(p.material[i], p.material[j]);
-        ServoReading& r = reading[static_cast<std::size_t>(k)];
-        r.stiffness += N::stiffness(pair, g);
-        g.v_normal = 0.0;
-        const double resting = N::force(pair, g);
-        g.v_normal = -1.0;
-        r.damping += N::force(pair, g) - resting;
+        read_contact<N>(reading[static_cast<std::size_t>(k)], pairs_(p.material[i], p.material[j]),
+                        pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i],
+                                      p.mass[j], p.velocity[i], p.velocity[j],
+                                      p.angular_velocity[i], p.angular_velocity[j], true, shares));
       }
   });
 }
