@@ -85,7 +85,10 @@ GrainScale grain_scale(const Frame& f) {
   double area = 0.0, mass = 0.0, diameter = 0.0;
   for (std::size_t i = 0; i < f.position.size(); ++i)
     if (f.kind[i] == 0) {
-      area += std::numbers::pi * f.radius[i] * f.radius[i], mass += f.mass[i];
+      // a snapshot without masses (one from before they were written, or made elsewhere)
+      // counts none here; the coarse graining then refuses it by name
+      area += std::numbers::pi * f.radius[i] * f.radius[i];
+      mass += f.mass.size() == f.position.size() ? f.mass[i] : 0.0;
       diameter += 2.0 * f.radius[i], ++g.grains;
     }
   if (g.grains > 0) g.diameter = diameter / static_cast<double>(g.grains), g.density = mass / area;
