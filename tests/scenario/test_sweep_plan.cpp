@@ -1,7 +1,9 @@
 // The plan of a parameter sweep (cli/sweep/sweep.hpp): what each run is to run with.
 #include <gtest/gtest.h>
 
+#include "cli/analyze/analyses.hpp"
 #include "cli/sweep/sweep.hpp"
+#include "talus/error.hpp"
 
 namespace talus::cli {
 
@@ -23,6 +25,26 @@ TEST(SweepPlan, EachRunsSeedIsTheOneItRunsWith) {
     EXPECT_EQ(seeds.runs[k].seed, expected[k]) << seeds.runs[k].name;
     EXPECT_EQ(sweep_run_scenario(seeds, seeds.runs[k]).simulation.seed, expected[k]);
   }
+}
+
+// A vector's values: the commas inside brackets are the vector's; each run gets its vector.
+TEST(SweepPlan, AVectorsValuesSplitAtTheCommasOutsideBrackets) {
+  const SweepAxis a = parse_axis("simulation.gravity=[0,-9.81],[1.5, -9.7]");
+  ASSERT_EQ(a.values.size(), 2u);
+  EXPECT_EQ(a.values[0], "[0,-9.81]");
+  EXPECT_EQ(a.values[1], "[1.5, -9.7]");
+  const SweepPlan p = plan_sweep("collisions", {}, {a}, 1);
+  EXPECT_DOUBLE_EQ(sweep_run_scenario(p, p.runs[1]).simulation.gravity.x, 1.5);
+  EXPECT_THROW(parse_axis("simulation.gravity=[0,-9.81"), InvalidArgument);
+  EXPECT_THROW(parse_axis("simulation.gravity=[0,-9.81],"), InvalidArgument); // an empty value
+}
+
+// Index and analysis CSV cells: a vector's value or a message with a comma is quoted, its quotes
+// doubled (RFC 4180), so that a CSV reader reads back the one cell.
+TEST(SweepPlan, CsvCellsWithCommasOrQuotesAreQuoted) {
+  EXPECT_EQ(csv_cell("0.05"), "0.05");
+  EXPECT_EQ(csv_cell("[2.87,-9.38]"), "\"[2.87,-9.38]\"");
+  EXPECT_EQ(csv_cell("said \"no\", twice"), "\"said \"\"no\"\", twice\"");
 }
 
 } // namespace talus::cli

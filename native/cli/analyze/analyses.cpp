@@ -81,6 +81,13 @@ std::string csv_number(double v) {
   return std::isfinite(v) ? fmt::format("{:.6g}", v) : "";
 }
 
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
 bool plot(const fs::path& out, const std::string& kind, const fs::path& csv, const fs::path& png,
           const fs::path& json) {
   if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") != 0) {

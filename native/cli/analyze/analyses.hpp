@@ -67,6 +67,9 @@ struct Section {
 std::string json_number(double v);
 /// A number for a CSV cell: empty when it is not finite.
 std::string csv_number(double v);
+/// A text for a CSV cell: quoted (its quotes doubled, RFC 4180) when it holds a comma or a quote,
+/// as a swept vector's value does ("[2.87,-9.38]").
+std::string csv_cell(const std::string& text);
 
 /// The times of a run's frost.csv at which the bed was at rest: each freeze, and the end if the
 /// run logged one. Throws InvalidArgument when the file is missing or a row is malformed.

@@ -14,6 +14,38 @@ namespace talus::cli {
 
 namespace {
 
+// The standard errors of the bulk's mu, I and phi: their spread over consecutive blocks of the
+// snapshots, each block's flow measured alone (blocks of a steady flow a few seconds long are
+// nearly independent samples of it). NaN with too few snapshots or a block not measured.
+struct BulkErrors {
+  double friction = NAN, inertial = NAN, packing = NAN;
+};
+
+BulkErrors bulk_errors(const std::vector<Frame>& frames, const ChuteOptions& o) {
+  constexpr std::size_t blocks = 4;
+  BulkErrors e;
+  if (frames.size() < 2 * blocks) return e;
+  std::vector<ChuteFlow> flows;
+  const std::size_t per = frames.size() / blocks;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const auto first = frames.begin() + static_cast<std::ptrdiff_t>(b * per);
+    const auto last = b + 1 == blocks ? frames.end() : first + static_cast<std::ptrdiff_t>(per);
+    flows.push_back(chute_flow({first, last}, o));
+    if (!flows.back().measured) return e;
+  }
+  const auto standard_error = [&](double ChuteFlow::*field) {
+    const auto n = static_cast<double>(flows.size());
+    double mean = 0.0, var = 0.0;
+    for (const ChuteFlow& f : flows) mean += f.*field / n;
+    for (const ChuteFlow& f : flows) var += (f.*field - mean) * (f.*field - mean) / (n - 1.0);
+    return std::sqrt(var / n);
+  };
+  e.friction = standard_error(&ChuteFlow::bulk_friction);
+  e.inertial = standard_error(&ChuteFlow::bulk_inertial);
+  e.packing = standard_error(&ChuteFlow::bulk_packing);
+  return e;
+}
+
 std::string profile_csv(const ChuteFlow& c) {
   std::string csv = "z,velocity,packing_fraction,friction,inertial,bagnold,fitted\n";
   for (std::size_t k = 0; k < c.z.size(); ++k) {
@@ -29,33 +61,37 @@ std::string profile_csv(const ChuteFlow& c) {
   return csv;
 }
 
-std::string chute_json(const ChuteFlow& c) {
+std::string chute_json(const ChuteFlow& c, const BulkErrors& e) {
   return fmt::format(
       "{{\"measured\": {}, \"why_not\": \"{}\", \"frames\": {}, \"angle_deg\": {}, "
       "\"tan_angle\": {}, \"base\": {}, \"depth\": {}, \"diameter\": {}, \"band_lo\": {}, "
-      "\"band_hi\": {}, \"bulk_friction\": {}, \"bulk_inertial\": {}, \"bulk_packing\": {}, "
+      "\"band_hi\": {}, \"bulk_friction\": {}, \"bulk_friction_error\": {}, "
+      "\"bulk_inertial\": {}, \"bulk_inertial_error\": {}, \"bulk_packing\": {}, "
+      "\"bulk_packing_error\": {}, "
       "\"base_velocity\": {}, \"base_velocity_error\": {}, \"bagnold_c\": {}, "
       "\"bagnold_c_error\": {}, \"bagnold_rms\": {}, \"bagnold_inertial\": {}, "
       "\"straight_rms\": {}}}\n",
       c.measured, c.why_not, c.frames, json_number(c.angle * 180.0 / M_PI),
       json_number(std::tan(c.angle)), json_number(c.base), json_number(c.depth),
       json_number(c.diameter), json_number(c.band_lo), json_number(c.band_hi),
-      json_number(c.bulk_friction), json_number(c.bulk_inertial), json_number(c.bulk_packing),
+      json_number(c.bulk_friction), json_number(e.friction), json_number(c.bulk_inertial),
+      json_number(e.inertial), json_number(c.bulk_packing), json_number(e.packing),
       json_number(c.bagnold.intercept), json_number(c.bagnold.intercept_error),
       json_number(c.bagnold.slope), json_number(c.bagnold.slope_error), json_number(c.bagnold.rms),
       json_number(c.bagnold_inertial), json_number(c.straight.rms));
 }
 
-std::string flow_text(const ChuteFlow& c) {
+std::string flow_text(const ChuteFlow& c, const BulkErrors& e) {
   if (!c.measured) return "not measured: " + c.why_not;
-  return fmt::format("{:.3g} d deep at {:.2f} deg: in the bulk mu = {:.4f} (tan theta = {:.4f}), "
-                     "I = {:.4f}, phi = {:.4f}; Bagnold's profile v_b + c (h^1.5 - (h - z)^1.5): "
+  return fmt::format("{:.3g} d deep at {:.2f} deg: in the bulk mu = {:.4f} +- {:.2g} (tan theta = "
+                     "{:.4f}), I = {:.4f} +- {:.2g}, phi = {:.4f} +- {:.2g}; Bagnold's profile v_b "
+                     "+ c (h^1.5 - (h - z)^1.5): "
                      "v_b = {:.3f} m/s, c = {:.4g} +- {:.2g}, rms {:.3g} m/s (a straight profile: "
                      "{:.3g}), I from c = {:.4f}",
-                     c.depth / c.diameter, c.angle * 180.0 / M_PI, c.bulk_friction,
-                     std::tan(c.angle), c.bulk_inertial, c.bulk_packing, c.bagnold.intercept,
-                     c.bagnold.slope, c.bagnold.slope_error, c.bagnold.rms, c.straight.rms,
-                     c.bagnold_inertial);
+                     c.depth / c.diameter, c.angle * 180.0 / M_PI, c.bulk_friction, e.friction,
+                     std::tan(c.angle), c.bulk_inertial, e.inertial, c.bulk_packing, e.packing,
+                     c.bagnold.intercept, c.bagnold.slope, c.bagnold.slope_error, c.bagnold.rms,
+                     c.straight.rms, c.bagnold_inertial);
 }
 
 } // namespace
@@ -73,18 +109,20 @@ Section analyze_chute(RunData& run, const AnalysisOptions& a) {
   o.gravity = s.simulation.gravity;
   const std::vector<Frame> frames = run.frames_with_contacts(steady_from(run, a));
   const ChuteFlow c = chute_flow(frames, o);
+  const BulkErrors errors = c.measured ? bulk_errors(frames, o) : BulkErrors{};
   const fs::path out = run.out();
   if (c.measured) write_file_atomically((out / "chute.csv").string(), profile_csv(c));
-  write_file_atomically((out / "chute.json").string(), chute_json(c));
+  write_file_atomically((out / "chute.json").string(), chute_json(c, errors));
   Section sec{"Flow down the incline", {}, {}, {}};
   sec.summary = fmt::format(
       "The steady flow of {} snapshots from t = {:.3g} s, coarse-grained across the layer ({} "
       "kernel of width {:.3g} m): velocity, packing fraction, |sigma_xy| / sigma_yy and the "
       "inertial number against the height above the base, and Bagnold's profile fitted from {} "
-      "diameters above the base to as far below the surface (GDR MiDi 2004).",
+      "diameters above the base to as far below the surface (GDR MiDi 2004). The bulk's errors: "
+      "the spread over four consecutive blocks of the snapshots.",
       frames.size(), frames.front().time, cg_kernel_name(o.kernel), o.width, o.margin);
-  sec.numbers = {{"flow", flow_text(c)}};
-  fmt::print("chute: {}\n", flow_text(c));
+  sec.numbers = {{"flow", flow_text(c, errors)}};
+  fmt::print("chute: {}\n", flow_text(c, errors));
   if (c.measured && plot(out, "chute", out / "chute.csv", out / "chute.png", out / "chute.json"))
     sec.charts.push_back(out / "chute.png");
   for (const auto& chart : sec.charts) fmt::print("  chart: {}\n", chart.string());

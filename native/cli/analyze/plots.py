@@ -455,6 +455,21 @@ elif kind == "chute":
     for ax in axes:
         ax.axhspan(min(band), max(band), color="grey", alpha=0.12)
         ax.legend(fontsize=8)
+elif kind == "chute_stop" and len(extra["slopes"]) > 1:
+    # Pouliquen's phase diagram: each layer by its depth and slope, h_stop(theta) between
+    fig, a = plt.subplots(figsize=(8, 4.5))
+    for flag, style, label in (("1", "o", "flowing"), ("0", "x", "stopped")):
+        rs = [r for r in rows if r["flowing"] == flag]
+        a.plot(col("depth_over_d", rs), col("angle_deg", rs), style, ms=8, label=label)
+    d = extra["diameter"]
+    bands = [s for s in extra["slopes"] if s["bracketed"]]
+    for k, s in enumerate(bands):
+        a.plot([s["h_stop_lo"] / d, s["h_stop_hi"] / d], [s["angle_deg"]] * 2, "-", color="grey",
+               lw=6, alpha=0.4, label="h_stop lies here" if k == 0 else None)
+    a.set_xlabel("depth of the layer h / d")
+    a.set_ylabel("slope at the end [degrees]")
+    a.set_title("layers that stopped and layers that flowed")
+    a.legend(fontsize=8)
 elif kind == "chute_stop":
     fig, a = plt.subplots(figsize=(8, 4.5))
     for flag, style, label in (("1", "o", "flowing"), ("0", "x", "stopped")):

@@ -186,7 +186,7 @@ void analyze_sweep_discharge(const fs::path& dir, const AnalysisOptions& o) {
     ++analysed;
     rate[i] = q.rate, error[i] = q.rate_error, end[i] = to_string(q.end);
     csv += r.name + ",";
-    for (const auto& v : r.values) csv += v + ",";
+    for (const auto& v : r.values) csv += csv_cell(v) + ",";
     csv += fmt::format("{},{},{},{},{},{},{}\n", r.seed, to_string(q.end), q.passed,
                        csv_number(q.rate), csv_number(q.rate_error), csv_number(q.window_from),
                        csv_number(q.window_to));

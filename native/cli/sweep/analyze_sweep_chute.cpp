@@ -1,5 +1,6 @@
-// `talus analyze SWEEP chute`: layers of several depths on one slope, each flowing or come to a
-// stop by the run's end, and the depth h_stop between the two (Pouliquen 1999).
+// `talus analyze SWEEP chute`: layers of several depths on one slope or several, each flowing or
+// come to a stop by the run's end, and on each slope the depth h_stop between the two (Pouliquen
+// 1999).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -68,68 +69,97 @@ LayerEnd layer_end(RunData& run, const AnalysisOptions& a) {
   return e;
 }
 
+// The layers on one slope and the depth h_stop between those that stopped and those that flowed.
+struct Slope {
+  double angle = 0.0; ///< rad
+  double deepest_stopped = -1.0, shallowest_flowing = std::numeric_limits<double>::infinity();
+  bool some_stopped() const { return deepest_stopped > 0.0; }
+  bool some_flowing() const { return std::isfinite(shallowest_flowing); }
+  bool bracketed() const { return some_stopped() && some_flowing(); }
+  bool sharp() const { return bracketed() && deepest_stopped < shallowest_flowing; }
+  double lo() const { return std::min(deepest_stopped, shallowest_flowing); }
+  double hi() const { return std::max(deepest_stopped, shallowest_flowing); }
+};
+
+Slope& slope_of(std::vector<Slope>& slopes, double angle) {
+  for (Slope& s : slopes)
+    if (std::abs(s.angle - angle) < 1e-9) return s;
+  return slopes.emplace_back(Slope{.angle = angle});
+}
+
+json slope_json(const Slope& s) {
+  json j{{"angle_deg", s.angle * 180.0 / M_PI}};
+  j["deepest_stopped"] = s.some_stopped() ? json(s.deepest_stopped) : json(nullptr);
+  j["shallowest_flowing"] = s.some_flowing() ? json(s.shallowest_flowing) : json(nullptr);
+  // h_stop between the two kinds of layer; near it whether a layer stops is a matter of chance
+  // (of its grains' arrangement as it slows), so a deeper layer may stop where a shallower one
+  // flowed: then h_stop lies in the band where both happened
+  j["bracketed"] = s.bracketed();
+  j["sharp"] = s.sharp();
+  j["h_stop_lo"] = s.bracketed() ? json(s.lo()) : json(nullptr);
+  j["h_stop_hi"] = s.bracketed() ? json(s.hi()) : json(nullptr);
+  return j;
+}
+
+void print_slope(const Slope& s, double diameter) {
+  const double deg = s.angle * 180.0 / M_PI;
+  if (!s.some_stopped())
+    fmt::print("  h_stop at {:.2f} deg: every layer flows: below {:.2f} d\n", deg,
+               s.shallowest_flowing / diameter);
+  else if (!s.some_flowing())
+    fmt::print("  h_stop at {:.2f} deg: every layer stopped: above {:.2f} d\n", deg,
+               s.deepest_stopped / diameter);
+  else if (s.sharp())
+    fmt::print("  h_stop at {:.2f} deg: between {:.2f} and {:.2f} d ({:.4g} to {:.4g} m)\n", deg,
+               s.lo() / diameter, s.hi() / diameter, s.lo(), s.hi());
+  else
+    fmt::print("  h_stop at {:.2f} deg: from {:.2f} to {:.2f} d ({:.4g} to {:.4g} m): layers in "
+               "this band both stopped and flowed (near h_stop a layer stops by chance: more "
+               "seeds narrow it)\n",
+               deg, s.lo() / diameter, s.hi() / diameter, s.lo(), s.hi());
+}
+
 } // namespace
 
 void analyze_sweep_chute(const fs::path& dir, const AnalysisOptions& o) {
   const SweepPlan plan = read_plan(dir);
   std::string csv = "run,";
-  for (const SweepAxis& a : plan.axes) csv += a.key + ",";
+  for (const SweepAxis& a : plan.axes) csv += csv_cell(a.key) + ",";
   csv += "seed,angle_deg,depth,depth_over_d,mean_velocity,flowing\n";
-  double deepest_stopped = -1.0, shallowest_flowing = std::numeric_limits<double>::infinity();
-  double angle = NAN, diameter = NAN;
+  std::vector<Slope> slopes;
+  double diameter = NAN;
   std::size_t analysed = 0;
-  bool one_angle = true;
   for (const SweepRun& r : plan.runs) {
     if (!fs::exists(dir / r.name / "run.json")) continue; // not run yet
     RunData data{dir / r.name};
     const LayerEnd e = layer_end(data, o);
-    if (analysed++ == 0) angle = e.angle, diameter = e.diameter;
-    one_angle = one_angle && std::abs(e.angle - angle) < 1e-9;
+    if (analysed++ == 0) diameter = e.diameter;
     csv += r.name + ",";
-    for (const auto& v : r.values) csv += v + ",";
+    for (const auto& v : r.values) csv += csv_cell(v) + ",";
     csv += fmt::format("{},{:.4f},{:.6g},{:.4f},{:.6g},{}\n", r.seed, e.angle * 180.0 / M_PI,
                        e.depth, e.depth / e.diameter, e.velocity, e.flowing ? 1 : 0);
     fmt::print("{}: {:.2f} d deep at {:.2f} deg: {} (mean {:.4g} m/s down the slope)\n", r.name,
                e.depth / e.diameter, e.angle * 180.0 / M_PI, e.flowing ? "flowing" : "stopped",
                e.velocity);
+    Slope& s = slope_of(slopes, e.angle);
     if (e.flowing)
-      shallowest_flowing = std::min(shallowest_flowing, e.depth);
+      s.shallowest_flowing = std::min(s.shallowest_flowing, e.depth);
     else
-      deepest_stopped = std::max(deepest_stopped, e.depth);
+      s.deepest_stopped = std::max(s.deepest_stopped, e.depth);
   }
   if (analysed == 0)
     throw InvalidArgument("no run of the sweep in '" + dir.string() + "' has run yet");
-  if (!one_angle)
-    throw InvalidArgument("chute: the runs end on different slopes; h_stop is a depth on one "
-                          "slope (sweep the depth, particles.count, at one angle)");
-  json meta{{"angle_deg", angle * 180.0 / M_PI}, {"diameter", diameter}, {"runs", analysed}};
-  const bool some_stopped = deepest_stopped > 0.0, some_flowing = std::isfinite(shallowest_flowing);
-  meta["deepest_stopped"] = some_stopped ? json(deepest_stopped) : json(nullptr);
-  meta["shallowest_flowing"] = some_flowing ? json(shallowest_flowing) : json(nullptr);
-  // h_stop between the two kinds of layer; near it whether a layer stops is a matter of chance
-  // (of its grains' arrangement as it slows), so a deeper layer may stop where a shallower one
-  // flowed: then h_stop lies in the band where both happened
-  meta["bracketed"] = some_stopped && some_flowing;
-  meta["sharp"] = some_stopped && some_flowing && deepest_stopped < shallowest_flowing;
-  const double lo = std::min(deepest_stopped, shallowest_flowing);
-  const double hi = std::max(deepest_stopped, shallowest_flowing);
-  meta["h_stop_lo"] = meta["bracketed"].get<bool>() ? json(lo) : json(nullptr);
-  meta["h_stop_hi"] = meta["bracketed"].get<bool>() ? json(hi) : json(nullptr);
-  const double deg = angle * 180.0 / M_PI;
-  if (!some_stopped)
-    fmt::print("  h_stop at {:.2f} deg: every layer flows: below {:.2f} d\n", deg,
-               shallowest_flowing / diameter);
-  else if (!some_flowing)
-    fmt::print("  h_stop at {:.2f} deg: every layer stopped: above {:.2f} d\n", deg,
-               deepest_stopped / diameter);
-  else if (meta["sharp"].get<bool>())
-    fmt::print("  h_stop at {:.2f} deg: between {:.2f} and {:.2f} d ({:.4g} to {:.4g} m)\n", deg,
-               lo / diameter, hi / diameter, lo, hi);
-  else
-    fmt::print("  h_stop at {:.2f} deg: from {:.2f} to {:.2f} d ({:.4g} to {:.4g} m): layers in "
-               "this band both stopped and flowed (near h_stop a layer stops by chance: more "
-               "seeds narrow it)\n",
-               deg, lo / diameter, hi / diameter, lo, hi);
+  std::sort(slopes.begin(), slopes.end(),
+            [](const Slope& a, const Slope& b) { return a.angle < b.angle; });
+  // one slope: its figures at the top level too, as before slopes were swept
+  json meta = slopes.size() == 1 ? slope_json(slopes[0]) : json::object();
+  meta["diameter"] = diameter;
+  meta["runs"] = analysed;
+  meta["slopes"] = json::array();
+  for (const Slope& s : slopes) {
+    meta["slopes"].push_back(slope_json(s));
+    print_slope(s, diameter);
+  }
   const fs::path out = dir / "analysis";
   fs::create_directories(out);
   write_file_atomically((out / "chute_stop.csv").string(), csv);

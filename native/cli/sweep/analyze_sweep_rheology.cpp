@@ -71,7 +71,7 @@ void analyze_sweep_rheology(const fs::path& dir, const AnalysisOptions& o) {
     const RheologyPoint p = run_rheology(data, o);
     ++analysed;
     csv += r.name + ",";
-    for (const auto& v : r.values) csv += v + ",";
+    for (const auto& v : r.values) csv += csv_cell(v) + ",";
     csv +=
         fmt::format("{},{},{},{},{},{},{},{},{},{}\n", r.seed, p.measured ? 1 : 0,
                     csv_number(p.inertial), csv_number(p.inertial_error), csv_number(p.friction),

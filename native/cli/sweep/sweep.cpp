@@ -32,6 +32,21 @@ std::vector<std::string> split(const std::string& text, char sep) {
   return out;
 }
 
+// A --vary's values: split at the commas outside brackets, so that a vector is one value
+// ("[2.87,-9.38],[2.54,-9.47]": two).
+std::vector<std::string> split_values(const std::string& text) {
+  std::vector<std::string> out(1);
+  int depth = 0;
+  for (const char c : text) {
+    depth += c == '[' ? 1 : c == ']' ? -1 : 0;
+    if (c == ',' && depth == 0)
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
 // The --set overrides of one run.
 std::vector<std::string> overrides(const SweepPlan& p, const SweepRun& r) {
   std::vector<std::string> sets = p.sets;
@@ -105,7 +120,10 @@ SweepAxis parse_axis(const std::string& text) {
     throw InvalidArgument("--vary '" + text +
                           "': expected KEY=V1,V2,... (e.g. --vary "
                           "geometry.orifice=0.02,0.03)");
-  SweepAxis a{key, split(text.substr(eq + 1), ',')};
+  if (std::count(text.begin(), text.end(), '[') != std::count(text.begin(), text.end(), ']'))
+    throw InvalidArgument("--vary '" + text + "': a '[' without its ']' or a ']' without its '['");
+  if (eq + 1 == text.size()) throw InvalidArgument("--vary '" + text + "': no values after '='");
+  SweepAxis a{key, split_values(text.substr(eq + 1))};
   std::set<std::string> seen;
   for (const std::string& v : a.values) {
     if (v.empty())
@@ -113,7 +131,6 @@ SweepAxis parse_axis(const std::string& text) {
     if (!seen.insert(v).second)
       throw InvalidArgument("--vary '" + text + "': the value '" + v + "' is given twice");
   }
-  if (a.values.empty()) throw InvalidArgument("--vary '" + text + "': no values after '='");
   return a;
 }
 
@@ -244,7 +261,7 @@ void write_index(const fs::path& dir, const SweepPlan& plan,
     csv += run.name;
     for (std::size_t a = 0; a < plan.axes.size(); ++a) {
       csv.push_back(',');
-      csv.append(run.values[a]);
+      csv.append(csv_cell(run.values[a]));
       values[plan.axes[a].key] = run.values[a];
     }
     csv += fmt::format(",{},{}", run.seed, r.status);
@@ -258,9 +275,8 @@ void write_index(const fs::path& dir, const SweepPlan& plan,
       const auto it = r.texts.find(k);
       std::string cell = it == r.texts.end() ? "" : it->second;
       if (it != r.texts.end()) res[k] = it->second;
-      std::replace(cell.begin(), cell.end(), '"', '\'');
       csv.push_back(',');
-      csv.append(cell.find(',') == std::string::npos ? cell : fmt::format("\"{}\"", cell));
+      csv.append(csv_cell(cell));
     }
     csv += "\n";
     runs.push_back({{"run", run.name},
