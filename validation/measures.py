@@ -4,8 +4,9 @@ degrees of freedom behind that (the pass rule compares two by Welch's t: welch, 
 
 A case's tolerances.toml lists them as [[measures]] tables:
 
-- `analysis` + `value` (+ `error`): run `talus analyze DIR ANALYSIS [options]` and read a number
-  of its JSON, "forces.json:beta", with its error "forces.json:beta_error";
+- `analysis` + `value` (+ `error`, + `error_dof`): run `talus analyze DIR ANALYSIS [options]` and
+  read a number of its JSON, "forces.json:beta", with its error "forces.json:beta_error" and the
+  degrees of freedom behind that (blocks - 1 for an error from blocks; infinite if not given);
 - `analysis` + `series`: a column of its CSV, "segregation.csv:index", averaged over `window`
   with the standard error of `blocks` block averages;
 - `analysis = "frost"` + `cycle` K + `quantity`: from `talus analyze DIR frost`, which samples
@@ -198,7 +199,9 @@ def measure(spec, folder, talus):
         name, key = spec["error"].split(":")
         with open(os.path.join(out, name)) as f:
             error = json.load(f)[key]
-    return float(value), float(error), math.inf
+    # an error from blocks of one run has blocks - 1 degrees of freedom (error_dof); a fit's
+    # from its counts, or an exact sample, infinitely many
+    return float(value), float(error), float(spec.get("error_dof", math.inf))
 
 
 def frost_sample(out, quantity, cycle):

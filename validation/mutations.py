@@ -1,6 +1,8 @@
 """Small errors that are still errors, put into one engine of the cross-check on purpose
 (`validation/crosscheck.py --mutate KIND`): its comparison of native Verlet (half step) with
-LAMMPS must fail each (tests/validation/mutation_test.py), so that a pass means something.
+LAMMPS must fail each (tests/validation/mutation_test.py), so that a pass means something. One is
+not small (`friction`): a chaotic case's statistics must fail on a change of its physics
+(docs/validation.md shows the chute's).
 """
 import os
 import re
@@ -12,6 +14,8 @@ MUTATIONS = {
     "wall": "LAMMPS: every wall segment moved by 1e-6 mean radii in x and in y",
     "lever_arm": "native: the lever arms at the radius, not at the contact point",
     "damper_velocity": "native: the dampers given the predicted velocity, not the half step's",
+    # not small: a long case's statistics must see a change of the physics, not of rounding
+    "friction": "LAMMPS: every pair_coeff's friction times 0.75 (for a flow's statistics)",
 }
 NATIVE_MUTATIONS = {"lever_arm": ["simulation.lever_arm=radius"],
                     "damper_velocity": ["simulation.verlet_velocity=predicted"]}
@@ -48,6 +52,8 @@ def mutate_deck(folder, deck_name, kind, radius):
         # every key of a pair_coeff line (keys and values alternate: none precedes a value)
         "coefficient": ("in", lambda line: line.startswith("pair_coeff"),
                         [(r"(?<=\s)((?:normal_stiffness|young) )(\S+)", grow)]),
+        "friction": ("in", lambda line: line.startswith("pair_coeff"),
+                     [(r"(?<=\s)(friction )(\S+)", lambda x: 0.75 * x)]),
         "wall": ("in", lambda line: line.lstrip().startswith("segment "),
                  [(r"^(\s*segment " + r"\S+ " * k + r")(\S+)", shift) for k in range(4)]),
     }[kind]

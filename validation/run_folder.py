@@ -9,19 +9,23 @@ forces`, `segregation`, `profiles`, `frost`, ...) measure both engines with the 
 import os
 import re
 import shutil
+import tomllib
 
 import numpy as np
 
 # Appended to an exported deck before its `run`: every grain's state, and every pair within the
-# force cutoff with its distance, normal force F_n (granthesis' p5) and overlap (p6). The two
-# local computes walk the same neighbour list with the same cutoff, so their rows match.
+# force cutoff with its distance, normal force F_n (granthesis' p5), overlap (p6) and the
+# contact's force on the first atom (p1, p2: normal and tangential together, for stresses). The
+# two local computes walk the same neighbour list with the same cutoff, so their rows match.
 ANALYSIS_DUMPS = """\
 compute talus_pair_ids all property/local patom1 patom2
-compute talus_pair_forces all pair/local dist p5 p6
-dump talus_frames all custom ${analysis_every} dump.frames id type radius x y vx vy fx fy omegaz
+compute talus_pair_forces all pair/local dist p5 p6 p1 p2
+dump talus_frames all custom ${analysis_every} dump.frames id type radius mass x y vx vy fx fy &
+  omegaz
 dump_modify talus_frames sort id format float %.17g
 dump talus_contacts all local ${analysis_every} dump.contacts c_talus_pair_ids[1] &
-  c_talus_pair_ids[2] c_talus_pair_forces[1] c_talus_pair_forces[2] c_talus_pair_forces[3]
+  c_talus_pair_ids[2] c_talus_pair_forces[1] c_talus_pair_forces[2] c_talus_pair_forces[3] &
+  c_talus_pair_forces[4] c_talus_pair_forces[5]
 dump_modify talus_contacts format float %.17g
 """
 
@@ -139,10 +143,13 @@ def pvd(entries):
             f"  <Collection>\n{rows}  </Collection>\n</VTKFile>\n")
 
 
-def pair_contacts(lammps_dir, step, pairs_block, xy, at, kind):
+def pair_contacts(lammps_dir, step, pairs_block, frame, kind, period):
     """The touching pairs of dump.contacts at `step` as (id, partner id, F_n, overlap, centre,
-    partner's centre), without those of two wall particles (the native engine never forms
-    them); the distance pair/local saw must be that of the atoms dumped."""
+    partner's centre (its periodic image), the force on the first, the contact point), without
+    those of two wall particles (the native engine never forms them); the distance pair/local
+    saw must be that of the atoms dumped. `period`: the box's length along x and y where it is
+    periodic, else None; frame: the dumped atoms' (xy, radius, row by id)."""
+    xy, radius, at = frame
     columns, pairs = pairs_block
     p = {n: pairs[:, i] for i, n in enumerate(columns)}
     found = []
@@ -150,12 +157,20 @@ def pair_contacts(lammps_dir, step, pairs_block, xy, at, kind):
         a, b = int(p["c_talus_pair_ids[1]"][r]), int(p["c_talus_pair_ids[2]"][r])
         if p["c_talus_pair_forces[3]"][r] <= 0.0 or (kind[a] != 0 and kind[b] != 0):
             continue
-        d = np.hypot(*(xy[at[a]] - xy[at[b]]))
+        delta = xy[at[a]] - xy[at[b]]
+        for axis, length in enumerate(period):
+            if length is not None:
+                delta[axis] -= length * round(delta[axis] / length)
+        d = np.hypot(*delta)
         if abs(d - p["c_talus_pair_forces[1]"][r]) > 1e-9 * d:
             raise ValueError(f"{lammps_dir}: dump.contacts at step {step} does not match "
                              "dump.frames")
-        found.append((a, b, p["c_talus_pair_forces[2]"][r], p["c_talus_pair_forces[3]"][r],
-                      xy[at[a]], xy[at[b]]))
+        overlap = p["c_talus_pair_forces[3]"][r]
+        # the native contact point: the middle of the overlap, on the line of centres
+        point = xy[at[a]] - (radius[at[a]] - 0.5 * overlap) * delta / d
+        force = np.array([p["c_talus_pair_forces[4]"][r], p["c_talus_pair_forces[5]"][r]])
+        found.append((a, b, p["c_talus_pair_forces[2]"][r], overlap, xy[at[a]],
+                      xy[at[a]] - delta, force, point))
     return found
 
 
@@ -163,19 +178,27 @@ def wall_contacts(walls_block, xy, at):
     """The wall contacts of dump.walls (fix granthesis/wall's local array) as pair_contacts has
     them, the partner numbered as the native engine numbers a segment: -1 - its index."""
     _, rows = walls_block
-    return [(int(a), -int(s), force, overlap, xy[at[int(a)]], np.array([px, py]))
+    return [(int(a), -int(s), force, overlap, xy[at[int(a)]], np.array([px, py]), None, None)
             for a, s, force, overlap, px, py in rows]
 
 
 def write_contacts(path, found):
-    """A contacts .vtp of pair_contacts' rows, ids from 0 as the native engine's."""
+    """A contacts .vtp of pair_contacts' rows, ids from 0 as the native engine's; with the
+    force vectors and contact points where every row has them (a wall segment's contacts, from
+    fix granthesis/wall, have their normal force only)."""
     ends = np.array([end for row in found for end in (row[4], row[5])]).reshape(-1, 2)
+    arrays = [("normal_force", 1, [row[2] for row in found]),
+              ("overlap", 1, [row[3] for row in found])]
+    if all(row[6] is not None for row in found):
+        zero = np.zeros((len(found), 1))
+        arrays += [("contact_point", 3, np.hstack([np.array([row[7] for row in found]).reshape(
+                        -1, 2), zero])),
+                   ("force", 3, np.hstack([np.array([row[6] for row in found]).reshape(-1, 2),
+                                           zero]))]
+    arrays += [("particle", 1, [row[0] - 1 for row in found]),
+               ("partner", 1, [row[1] - 1 if row[1] > 0 else row[1] for row in found])]
     with open(path, "w") as f:
-        f.write(polydata(ends, 2, [], [
-            ("normal_force", 1, [row[2] for row in found]),
-            ("overlap", 1, [row[3] for row in found]),
-            ("particle", 1, [row[0] - 1 for row in found]),
-            ("partner", 1, [row[1] - 1 if row[1] > 0 else row[1] for row in found])]))
+        f.write(polydata(ends, 2, [], arrays))
 
 
 def lammps_run_folder(lammps_dir, native_folder, dt, out):
@@ -186,6 +209,10 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(os.path.join(out, "snapshots"))
     shutil.copy(os.path.join(native_folder, "scenario.toml"), out)
+    with open(os.path.join(native_folder, "scenario.toml"), "rb") as f:
+        geometry = tomllib.load(f).get("geometry", {})
+    box, periodic = geometry.get("box"), geometry.get("periodic", "none")
+    period = [box[2] - box[0] if box and axis in periodic else None for axis in "xy"]
     first = first_frame(native_folder)
     kind = dict(zip(first["id"] + 1, first["kind"]))
     material = dict(zip(first["id"] + 1, first["material"]))
@@ -205,14 +232,15 @@ def lammps_run_folder(lammps_dir, native_folder, dt, out):
         name = f"snapshots/particles_{k:06d}.vtp"
         with open(os.path.join(out, name), "w") as f:
             f.write(polydata(xy, 1, [
-                ("id", 1, ids - 1), ("radius", 1, c["radius"]),
+                ("id", 1, ids - 1), ("radius", 1, c["radius"]), ("mass", 1, c["mass"]),
                 ("velocity", 3, np.column_stack([c["vx"], c["vy"], zero])),
                 ("angular_velocity", 1, c["omegaz"]),
                 ("force", 3, np.column_stack([c["fx"], c["fy"], zero])),
                 ("kind", 1, [kind[i] for i in ids]),
                 ("material", 1, [material[i] for i in ids])], []))
         particles_pvd.append((step * dt, name))
-        found = pair_contacts(lammps_dir, step, contacts[step], xy, at, kind)
+        found = pair_contacts(lammps_dir, step, contacts[step], (xy, c["radius"], at), kind,
+                              period)
         if step in walls:
             found += wall_contacts(walls[step], xy, at)
         name = f"snapshots/contacts_{k:06d}.vtp"
