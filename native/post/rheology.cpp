@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <fmt/core.h>
 
+#include "post/block_mean.hpp"
+
 namespace talus {
 
 namespace {
@@ -68,16 +70,6 @@ BlockValues block_values(const std::vector<Frame>& frames, const CgOptions& cg, 
   return b;
 }
 
-// The mean of the blocks' values and its standard error.
-std::pair<double, double> mean_error(const std::vector<BlockValues>& blocks,
-                                     double BlockValues::*field) {
-  const auto n = static_cast<double>(blocks.size());
-  double mean = 0.0, var = 0.0;
-  for (const BlockValues& b : blocks) mean += b.*field / n;
-  for (const BlockValues& b : blocks) var += (b.*field - mean) * (b.*field - mean) / (n - 1.0);
-  return {mean, std::sqrt(var / n)};
-}
-
 } // namespace
 
 GrainScale grain_scale(const Frame& f) {
@@ -136,12 +128,13 @@ RheologyPoint rheology_point(const std::vector<Frame>& frames, const RheologyOpt
     const auto last = b + 1 == o.blocks ? frames.end() : first + static_cast<std::ptrdiff_t>(per);
     blocks.push_back(block_values({first, last}, cg, r.diameter, r.grain_density));
   }
-  std::tie(r.shear_rate, r.shear_rate_error) = mean_error(blocks, &BlockValues::shear_rate);
-  std::tie(r.pressure, r.pressure_error) = mean_error(blocks, &BlockValues::pressure);
-  std::tie(r.shear_stress, r.shear_stress_error) = mean_error(blocks, &BlockValues::shear_stress);
-  std::tie(r.friction, r.friction_error) = mean_error(blocks, &BlockValues::friction);
-  std::tie(r.packing, r.packing_error) = mean_error(blocks, &BlockValues::packing);
-  std::tie(r.inertial, r.inertial_error) = mean_error(blocks, &BlockValues::inertial);
+  std::tie(r.shear_rate, r.shear_rate_error) = block_mean_error(blocks, &BlockValues::shear_rate);
+  std::tie(r.pressure, r.pressure_error) = block_mean_error(blocks, &BlockValues::pressure);
+  std::tie(r.shear_stress, r.shear_stress_error) =
+      block_mean_error(blocks, &BlockValues::shear_stress);
+  std::tie(r.friction, r.friction_error) = block_mean_error(blocks, &BlockValues::friction);
+  std::tie(r.packing, r.packing_error) = block_mean_error(blocks, &BlockValues::packing);
+  std::tie(r.inertial, r.inertial_error) = block_mean_error(blocks, &BlockValues::inertial);
   r.measured = true;
   return r;
 }

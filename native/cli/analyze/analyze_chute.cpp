@@ -6,6 +6,7 @@
 
 #include "cli/analyze/analyses.hpp"
 #include "io/checkpoint.hpp"
+#include "post/block_mean.hpp"
 #include "post/chute.hpp"
 
 namespace fs = std::filesystem;
@@ -33,16 +34,9 @@ BulkErrors bulk_errors(const std::vector<Frame>& frames, const ChuteOptions& o) 
     flows.push_back(chute_flow({first, last}, o));
     if (!flows.back().measured) return e;
   }
-  const auto standard_error = [&](double ChuteFlow::*field) {
-    const auto n = static_cast<double>(flows.size());
-    double mean = 0.0, var = 0.0;
-    for (const ChuteFlow& f : flows) mean += f.*field / n;
-    for (const ChuteFlow& f : flows) var += (f.*field - mean) * (f.*field - mean) / (n - 1.0);
-    return std::sqrt(var / n);
-  };
-  e.friction = standard_error(&ChuteFlow::bulk_friction);
-  e.inertial = standard_error(&ChuteFlow::bulk_inertial);
-  e.packing = standard_error(&ChuteFlow::bulk_packing);
+  e.friction = block_mean_error(flows, &ChuteFlow::bulk_friction).second;
+  e.inertial = block_mean_error(flows, &ChuteFlow::bulk_inertial).second;
+  e.packing = block_mean_error(flows, &ChuteFlow::bulk_packing).second;
   return e;
 }
 
