@@ -156,9 +156,19 @@ double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi) {
   const Particles& p = sim.world().particles;
   const double region = (hi.x - lo.x) * (hi.y - lo.y);
   if (region <= 0.0) return 0.0;
+  // in a periodic box, a grain where it is (wrapped) and its images: the parts of it past the
+  // box's sides are in the region through them
+  const Domain& box = sim.world().domain;
+  const Vec2 l = box.size();
+  const int nx = box.periodic_x ? 1 : 0, ny = box.periodic_y ? 1 : 0;
   double covered = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.is_free(i)) covered += disk_rectangle_area(p.position[i], p.radius[i], lo, hi);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!p.is_free(i)) continue;
+    const Vec2 r = box.wrap(p.position[i]);
+    for (int sx = -nx; sx <= nx; ++sx)
+      for (int sy = -ny; sy <= ny; ++sy)
+        covered += disk_rectangle_area(r + Vec2{sx * l.x, sy * l.y}, p.radius[i], lo, hi);
+  }
   return covered / region;
 }
 

@@ -26,7 +26,8 @@ double angular_momentum(const Simulation& sim, Vec2 point = {});
 double coordination_number(const Simulation& sim);
 /// Number of touching contacts (pairs and wall contacts).
 std::size_t contact_count(const Simulation& sim);
-/// Fraction of the rectangle [lo, hi] covered by free particles (exact disk-rectangle overlap).
+/// Fraction of the rectangle [lo, hi] covered by free particles (exact disk-rectangle overlap);
+/// in a periodic box, by the grains and their periodic images.
 double packing_fraction(const Simulation& sim, Vec2 lo, Vec2 hi);
 /// Area of the free grains with their centres in the disc of this centre and radius, over the
 /// disc's area (a drum's filling).

@@ -53,7 +53,8 @@ LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
   }
   double contacts = 0.0;
   for (std::uint32_t i = 0; i < p.size(); ++i) {
-    if (!p.is_free(i) || !inside(p.position[i], lo, hi)) continue;
+    // a periodic box's grain where it is: wrapped (it may have crossed since the list's build)
+    if (!p.is_free(i) || !inside(sim.world().domain.wrap(p.position[i]), lo, hi)) continue;
     ++out.grains;
     if (out.rattler[i]) {
       ++out.rattlers;

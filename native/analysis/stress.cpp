@@ -49,6 +49,10 @@ RegionStress region_stress(const Simulation& sim, Vec2 lo, Vec2 hi) {
   RegionStress s;
   s.area = (hi.x - lo.x) * (hi.y - lo.y);
   const Particles& p = sim.world().particles;
+  // where a grain is: in a periodic box, its wrapped position (between two list builds a grain
+  // may have crossed the box's side unwrapped)
+  const Domain& box = sim.world().domain;
+  const auto inside = [&](Vec2 r, Vec2 a, Vec2 b) { return talus::inside(box.wrap(r), a, b); };
   const std::vector<ContactRecord> contacts = contact_forces(sim);
   // the contact part: each grain in the region with each of its contacts
   for_each_grain_side(p, contacts, [&](std::size_t i, Vec2 force, Vec2 branch) {
