@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "drivers/cell.hpp"
+#include "simulation/world.hpp"
 #include "talus/error.hpp"
 #include "talus/vibration.hpp"
 
@@ -57,7 +59,9 @@ void attach_servo(Servo& s, const DriverTargets& t, const Particles& p, const Se
 }
 } // namespace
 
-void attach(Driver& d, const Particles& p, const Segments& walls) {
+void attach(Driver& d, const World& w) {
+  const Particles& p = w.particles;
+  const Segments& walls = w.walls;
   if (auto* v = std::get_if<Vibrate>(&d.motion)) {
     const double l = norm(v->direction);
     require(l > 0.0, "vibrate driver: direction must be a non-zero vector");
@@ -66,6 +70,11 @@ void attach(Driver& d, const Particles& p, const Segments& walls) {
     v->direction = v->direction / l;
   }
   if (auto* s = std::get_if<Servo>(&d.motion)) attach_servo(*s, d.targets, p, walls);
+  if (auto* c = std::get_if<Cell>(&d.motion)) {
+    require(d.targets.particles.empty() && d.targets.segments.empty(),
+            "cell driver: it moves the periodic box and every grain with it, not a target");
+    attach_cell(*c, w.domain);
+  }
   d.particle_origin.clear();
   d.angle_origin.clear();
   for (const auto i : d.targets.particles) {

@@ -61,7 +61,21 @@ inline Vec2 across(Vec2 direction) {
   return {-direction.y, direction.x};
 }
 
-using Motion = std::variant<Vibrate, Translate, Rotate, Servo>;
+/// A periodic cell that deforms (docs/model.md, "Deforming cell"): its lengths change at a set
+/// true strain rate, or at the rate a controller takes to hold the grains' mean stress at
+/// `pressure` (drivers/cell.hpp). Every step the grains' positions follow the cell affinely
+/// (LAMMPS' fix deform with remap x); their velocities are left as they are. It has no targets:
+/// it moves the box, and with it every grain.
+struct Cell {
+  Vec2 strain_rate{};           ///< 1/s: d(ln L)/dt along x and y, the rate mode
+  double pressure = 0.0;        ///< N/m: the mean stress wanted (> 0), or 0 for the rate mode
+  double max_strain_rate = 0.0; ///< 1/s: the pressure mode's fastest rate, either way
+  double relaxation = 0.5;      ///< pressure mode: the fraction of the error closed per step
+  double rate = 0.0;            ///< 1/s: the pressure mode's rate, chosen after the last step
+  Vec2 strain{};                ///< ln(L / L_start) along x and y since start_time
+};
+
+using Motion = std::variant<Vibrate, Translate, Rotate, Servo, Cell>;
 
 struct Driver {
   Motion motion;
@@ -75,9 +89,12 @@ struct Driver {
   std::vector<Vec2> segment_origin; ///< a, b, a, b, ...
 };
 
-/// Checks the motion and the targets and records their reference positions (the time origin,
-/// start_time); a servo starts at rest where its walls are.
-void attach(Driver& d, const Particles& p, const Segments& walls);
+struct World;
+
+/// Checks the motion and the targets in the world `w` and records the targets' reference
+/// positions (the time origin, start_time); a servo starts at rest where its walls are, a cell
+/// at rest as it is.
+void attach(Driver& d, const World& w);
 /// For a driver read back from a checkpoint (attached when it was saved): what does not fit the
 /// particles and walls, in words, or "" (its targets in range, a particle target of kind moved,
 /// an origin for each).

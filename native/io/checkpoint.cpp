@@ -250,6 +250,9 @@ Driver read_driver(Reader& r, std::uint32_t version) {
   case 3:
     d.motion = read_servo(r, version);
     break;
+  case 4: // from format 15
+    d.motion = r.pod<Cell>();
+    break;
   default:
     r.fail("unknown driver type");
   }
@@ -287,6 +290,7 @@ std::string encode_checkpoint(const Checkpoint& c) {
   write_members(w, c.config);
   w.pod(static_cast<std::uint8_t>(c.config.linear_damping)); // from format 12
   w.pod(c.state.clock_time), w.pod(c.state.clock_step);      // from format 13
+  w.pod(l.box);                                              // from format 15
   w.str(c.run_data);
 
   return seal_checkpoint(w.bytes());
@@ -362,6 +366,8 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
     c.state.clock_step = r.pod<std::uint64_t>();
     if (c.state.clock_step > c.state.steps) r.fail("the timestep's clock starts after the state");
   }
+  // before 15 no cell deformed: the box at the list's build is the box
+  l.box = version >= 15 ? r.pod<Vec2>() : world.domain.size();
   c.run_data = r.str();
   if (!r.done()) r.fail("unexpected bytes at the end");
   return c;

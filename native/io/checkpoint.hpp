@@ -31,8 +31,9 @@ struct Checkpoint {
 /// checksum (7 had one a digit short); 9: a driver's start time; 10: the particles' periodic
 /// image counts; 11: rolling resistance (the materials' keys and the rolling springs); 12: the
 /// linear law's damping convention; 13: the timestep's clock (a timestep changed during a run);
-/// 14: a servo's slide speed. Versions 7 to 13 are read.
-inline constexpr std::uint32_t checkpoint_version = 14;
+/// 14: a servo's slide speed; 15: the deforming cell (a cell driver, the box at the list's
+/// build). Versions 7 to 14 are read.
+inline constexpr std::uint32_t checkpoint_version = 15;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

@@ -54,6 +54,11 @@ std::optional<std::string> refusal(const Scenario& s) {
       return refused("drivers", "a servo driver has no counterpart in fix granthesis/wall; "
                                 "allowed types: vibrate, translate, rotate (docs/lammps.md names "
                                 "LAMMPS' own ways to hold a wall at a load)");
+  for (const DriverSection& d : s.drivers)
+    if (d.type == "cell" && d.pressure > 0.0)
+      return refused("drivers", "a cell held at a pressure has no counterpart with the same "
+                                "controller (fix press/berendsen and fix box/relax differ; "
+                                "docs/lammps.md); allowed: a cell at a strain_rate (fix deform)");
   if (s.frost.model == "front")
     return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
                                   "(fix frost/heave)");
@@ -162,13 +167,12 @@ Box lammps_box(const BuiltScenario& b) {
 // from the first step on, so the data file must carry it, or the first forces, computed in the
 // run's setup, see still walls beside the native engine's moving ones.
 Particles started(const World& w) {
-  Particles p = w.particles;
-  Segments walls = w.walls;
+  World moved = w;
   for (Driver d : w.drivers) {
-    attach(d, p, walls);
-    apply(d, 0.0, p, walls);
+    attach(d, moved);
+    apply(d, 0.0, moved.particles, moved.walls);
   }
-  return p;
+  return moved.particles;
 }
 
 std::string data_file(const Scenario& s, const BuiltScenario& b, const Typing& t, const Box& box) {
@@ -354,6 +358,11 @@ std::string motion_section(const Scenario& s, const BuiltScenario& b, const Typi
   for (std::size_t k = 0; k < b.world.drivers.size(); ++k)
     if (!t.role_types[2 + k].empty()) out += driver_fix(b.world.drivers[k], k);
   out += walls_section(b, t);
+  for (const Driver& d : b.world.drivers)
+    if (const auto* c = std::get_if<Cell>(&d.motion)) // the box's true strain rate, every atom
+      out += fmt::format("fix cell all deform 1{}{} remap x\n",
+                         b.world.domain.periodic_x ? " x trate " + exact(c->strain_rate.x) : "",
+                         b.world.domain.periodic_y ? " y trate " + exact(c->strain_rate.y) : "");
   return out + "fix plane all enforce2d\n";
 }
 

@@ -332,6 +332,7 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
     }
   }
   list.skin = skin;
+  list.box = domain.size();
   build_pairs(list, p, domain, skin, threads);
   build_walls(list, p, walls, skin, threads);
   index_force_blocks(list, threads);

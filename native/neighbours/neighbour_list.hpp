@@ -64,6 +64,9 @@ struct NeighbourList {
   std::vector<Vec2> segment_reference; ///< segment end points (a, b, a, b, ...) at the last build
   double skin = 0.0;
   std::uint64_t builds = 0;
+  /// The box's size at the last build (m): a deforming cell's strain since then closes gaps
+  /// the skin must also cover (Simulation, "Deforming cell").
+  Vec2 box{};
 
   std::size_t pair_count() const { return neighbour.size(); }
   Vec2 shift(std::size_t entry, const Domain& d) const {

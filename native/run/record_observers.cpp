@@ -12,7 +12,9 @@ void ThermoObserver::open(RunContext& c) {
 }
 
 void ThermoObserver::start(RunContext& c) {
-  *out_ << thermo_header(c.book, ledger_ != nullptr, c.scenario.output);
+  std::string head = thermo_header(c.book, ledger_ != nullptr, c.scenario.output);
+  if (c.sim.cell_driver() != nullptr) head.insert(head.size() - 1, cell_header());
+  *out_ << head;
   record(c);
 }
 
@@ -26,8 +28,8 @@ void ThermoObserver::record(RunContext& c) {
   std::string row = thermo_columns(c.sim, c.scenario, c.book, e);
   if (ledger_) row += ledger_->thermo_columns(c, e);
   if (c.scenario.output.stress)
-    row += stress_columns(c.sim, stress_region(c.scenario, c.book), c.scenario.output);
-  *out_ << row << group_force_columns(c.sim, c.book) << "\n";
+    row += stress_columns(c.sim, stress_region(c.sim, c.scenario, c.book), c.scenario.output);
+  *out_ << row << group_force_columns(c.sim, c.book) << cell_columns(c.sim) << "\n";
   c.last_kinetic = e.kinetic();
 }
 

@@ -37,6 +37,8 @@ Vec2 packing_top(const Simulation& sim, const RunBook& book) {
 // The packing fraction of the container: in the drum, of the whole drum (how full it is; the
 // fill region is a square inside it); elsewhere of the fill region, up to a lid.
 double packing(const Simulation& sim, const Scenario& s, const RunBook& book) {
+  const Domain& box = sim.world().domain;
+  if (sim.cell_driver() != nullptr) return packing_fraction(sim, box.lo, box.hi); // as it is now
   if (s.geometry.builder == "drum") {
     const double r = s.geometry.radius;
     return disc_area_fraction(sim, Vec2{r, r}, r);
@@ -46,8 +48,10 @@ double packing(const Simulation& sim, const Scenario& s, const RunBook& book) {
 
 } // namespace
 
-Rect stress_region(const Scenario& s, const RunBook& book) {
-  return s.output.stress_region.value_or(book.bounds);
+Rect stress_region(const Simulation& sim, const Scenario& s, const RunBook& book) {
+  if (s.output.stress_region) return *s.output.stress_region;
+  if (sim.cell_driver() != nullptr) return {sim.world().domain.lo, sim.world().domain.hi};
+  return book.bounds;
 }
 
 namespace {
@@ -110,6 +114,18 @@ std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBo
       sim.time(), sim.step_count(), e.translational, e.rotational, e.elastic, e.gravitational,
       e.total(), p.x, p.y, angular_momentum(sim), coordination_number(sim), contact_count(sim),
       packing(sim, s, book));
+}
+
+std::string cell_header() {
+  return ",cell_x,cell_y,cell_strain_rate_x,cell_strain_rate_y";
+}
+
+std::string cell_columns(const Simulation& sim) {
+  const Cell* c = sim.cell_driver();
+  if (c == nullptr) return "";
+  const Domain& d = sim.world().domain;
+  const Vec2 size = d.size(), rate = cell_strain_rate(*c, d);
+  return fmt::format(",{:.9e},{:.9e},{:.6e},{:.6e}", size.x, size.y, rate.x, rate.y);
 }
 
 Vec2 group_force(const Simulation& sim, const DriverTargets& g) {

@@ -18,8 +18,13 @@ namespace talus::run {
 /// thermo.csv's header; `ledger`: with the energy ledger's columns (output.energy_ledger);
 /// with output.stress, the stress columns, then those of each of output.stress_regions.
 std::string thermo_header(const RunBook& book, bool ledger, const OutputSection& output);
-/// The region output.stress measures: output.stress_region, or the container's extent.
-Rect stress_region(const Scenario& s, const RunBook& book);
+/// A deforming cell's columns (with a cell driver): the box's sides and the strain rate in force.
+std::string cell_header();
+/// Their values now ("" without a cell driver).
+std::string cell_columns(const Simulation& sim);
+/// The region output.stress measures: output.stress_region, or a deforming cell's box, or the
+/// container's extent.
+Rect stress_region(const Simulation& sim, const Scenario& s, const RunBook& book);
 /// thermo.csv's stress columns (output.stress) over `region` (analysis/stress.hpp), then over
 /// each of output.stress_regions.
 std::string stress_columns(const Simulation& sim, const Rect& region, const OutputSection& output);

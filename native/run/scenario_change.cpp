@@ -32,6 +32,8 @@ Scenario with_changeable_of(Scenario s, const Scenario& like) {
     d.frequency = l.frequency, d.phase = l.phase, d.direction = l.direction, d.centre = l.centre;
     d.force = l.force, d.stress = l.stress, d.max_speed = l.max_speed, d.relaxation = l.relaxation;
     d.slide_speed = l.slide_speed;
+    d.strain_rate = l.strain_rate, d.pressure = l.pressure;
+    d.max_strain_rate = l.max_strain_rate;
   }
   s.output.thermo_interval = like.output.thermo_interval;
   s.output.snapshot_interval = like.output.snapshot_interval;
@@ -45,7 +47,8 @@ bool same_motion(const DriverSection& a, const DriverSection& b) {
          a.amplitude == b.amplitude && a.frequency == b.frequency && a.phase == b.phase &&
          a.direction == b.direction && a.centre == b.centre && a.force == b.force &&
          a.stress == b.stress && a.max_speed == b.max_speed && a.relaxation == b.relaxation &&
-         a.slide_speed == b.slide_speed;
+         a.slide_speed == b.slide_speed && a.strain_rate == b.strain_rate &&
+         a.pressure == b.pressure && a.max_strain_rate == b.max_strain_rate;
 }
 
 // A driver whose motion changed starts its new motion from where its targets are now: no jump
@@ -57,7 +60,7 @@ void change_drivers(SimulationState& state, const std::vector<DriverSection>& be
     if (same_motion(before[k], after[k])) continue;
     Driver& d = w.drivers[k];
     d.motion = motion_of(after[k]);
-    attach(d, w.particles, w.walls);
+    attach(d, w);
     d.start_time = state.time;
   }
 }

@@ -44,6 +44,11 @@ std::vector<Vec2> wall_particle_positions(const SegmentSpec& seg, double spacing
 Motion motion_of(const DriverSection& d) {
   if (d.type == "vibrate") return Vibrate{d.direction, d.amplitude, d.frequency, d.phase};
   if (d.type == "translate") return Translate{d.velocity};
+  if (d.type == "cell")
+    return Cell{.strain_rate = d.strain_rate,
+                .pressure = d.pressure,
+                .max_strain_rate = d.max_strain_rate,
+                .relaxation = d.relaxation};
   if (d.type == "servo")
     return Servo{.direction = d.direction,
                  .force = d.force,
@@ -316,6 +321,7 @@ void check_stress_region(const Scenario& s, const BuiltScenario& out) {
 void check_one_driver_each(const std::vector<DriverSection>& drivers, const BuiltScenario& out) {
   std::map<std::uint32_t, std::string> particle, segment; // wall -> the group that drives it
   for (const DriverSection& d : drivers) {
+    if (d.type == "cell") continue;
     const DriverTargets& t = out.groups.at(d.target);
     const auto claim = [&](std::map<std::uint32_t, std::string>& owner, std::uint32_t k) {
       const auto [at, fresh] = owner.emplace(k, d.target);
@@ -332,9 +338,30 @@ void check_one_driver_each(const std::vector<DriverSection>& drivers, const Buil
   }
 }
 
+// The deforming periodic cell: one at most, and with nothing the affine remap would leave
+// behind (walls do not follow the box, nor do grains that drivers move).
+void add_cell_driver(const DriverSection& d, BuiltScenario& out) {
+  World& w = out.world;
+  for (const Driver& other : w.drivers)
+    if (std::holds_alternative<Cell>(other.motion))
+      throw ScenarioError("drivers: two cell drivers; the periodic box has one");
+  if (!w.walls.empty())
+    throw ScenarioError("drivers (type \"cell\"): the geometry has wall segments, which do not "
+                        "follow a deforming cell; use builder = \"none\" with a periodic box (a "
+                        "rough wall of fixed grains follows it)");
+  Driver driver;
+  driver.motion = motion_of(d);
+  try {
+    attach(driver, w);
+  } catch (const InvalidArgument& e) {
+    throw ScenarioError(std::string("drivers (type \"cell\"): ") + e.what());
+  }
+  w.drivers.push_back(std::move(driver));
+}
+
 void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
   for (const DriverSection& d : drivers)
-    if (!out.groups.contains(d.target)) {
+    if (d.type != "cell" && !out.groups.contains(d.target)) {
       std::string names;
       for (const auto& [name, _] : out.groups) names += (names.empty() ? "" : ", ") + name;
       throw ScenarioError("key 'drivers.target': no wall group '" + d.target +
@@ -342,6 +369,10 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
     }
   check_one_driver_each(drivers, out);
   for (const DriverSection& d : drivers) {
+    if (d.type == "cell") {
+      add_cell_driver(d, out);
+      continue;
+    }
     const auto group = out.groups.find(d.target);
     // fixed grains a driver moves are moved grains (the container's wall particles are made so)
     for (const std::uint32_t i : group->second.particles)
@@ -350,7 +381,7 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
     driver.targets = group->second;
     driver.motion = motion_of(d);
     try { // the checks the engine makes as it starts, made here with the key to name
-      attach(driver, out.world.particles, out.world.walls);
+      attach(driver, out.world);
     } catch (const InvalidArgument& e) {
       throw ScenarioError("drivers (target '" + d.target + "'): " + e.what());
     }
@@ -424,6 +455,11 @@ BuiltScenario build_scenario(const Scenario& s, const SettleProgress& progress) 
   configure(s, sizes.r_min, out);
   if (s.packing.method == "sedimentation" && !sizes.radii.empty())
     sediment(s, shape.gate, wall_mat, wall_joint_tolerance * sizes.r_min, progress, out);
+  // frost holds grains in place, and held grains would not follow a deforming cell
+  if (s.frost.model != "none" &&
+      std::any_of(drivers.begin(), drivers.end(), [](const auto& d) { return d.type == "cell"; }))
+    throw ScenarioError("drivers (type \"cell\"): a frost model holds grains, which would not "
+                        "follow the cell; allowed with a cell: frost.model = \"none\"");
   add_drivers(drivers, out);
   select_tracked(s, out);
   return out;

@@ -106,8 +106,8 @@ struct GeometrySection {
 };
 
 struct DriverSection {
-  std::string type;             ///< vibrate | translate | rotate | servo
-  std::string target = "walls"; ///< a wall group of the geometry
+  std::string type;             ///< vibrate | translate | rotate | servo | cell
+  std::string target = "walls"; ///< a wall group of the geometry ("" for a cell)
   double amplitude = 0.0;       ///< m
   double frequency = 0.0;       ///< Hz
   double phase = 0.0;           ///< rad
@@ -120,6 +120,9 @@ struct DriverSection {
   double max_speed = 0.0;        ///< servo: m/s (simulation.impact_speed unless given)
   double relaxation = 0.5;       ///< servo: the fraction of the load's error closed per step
   double slide_speed = 0.0;      ///< servo: m/s across direction (a quarter turn anticlockwise)
+  Vec2 strain_rate{};            ///< cell: 1/s, the rate mode's d(ln L)/dt along x and y
+  double pressure = 0.0;         ///< cell: N/m, the pressure mode's target (0: rate mode)
+  double max_strain_rate = 0.0;  ///< cell: 1/s, the pressure mode's fastest rate
 };
 
 struct TrackSection {

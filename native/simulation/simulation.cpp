@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <sstream>
 #include <string>
 
 #include <omp.h>
@@ -64,6 +62,7 @@ void validate_setup(const World& w, const SimulationConfig& c) {
   }
   for (const Segment& s : w.walls)
     require(s.material < w.materials.size(), "wall: material index out of range");
+  require_cell_fits(w);
 }
 
 } // namespace
@@ -101,6 +100,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   choose_features();
   if (restoring) {
     index_force_blocks(list_); // derived from the rows, not stored
+    update_cell_reserve();
     return;
   }
   for (std::size_t i = 0; i < world_.particles.size(); ++i)
@@ -109,7 +109,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
       world_.particles.angular_velocity[i] = 0.0;
     }
   for (Driver& d : world_.drivers) {
-    attach(d, world_.particles, world_.walls);
+    attach(d, world_);
     apply(d, 0.0, world_.particles, world_.walls);
   }
   rebuild_list(1);
@@ -161,16 +161,18 @@ void Simulation::advance(bool fuse) {
   if (features_stale_) choose_features(); // edits happen between run() calls: nothing is fused
   // the rolling pass comes between forces and correction; a servo reads the contacts between
   // the force stage and the next prediction, which a fused step does at once
-  fuse = fuse && !features_.rolling && !has_servo();
+  fuse = fuse && !features_.rolling && !has_servo() && cell_driver() == nullptr;
   // from the clock's origin, not by adding dt: no rounding builds up (and with the origin at 0,
   // the same bits as (steps + 1) dt)
   const double t_next =
       clock_time_ + static_cast<double>(steps_ + 1 - clock_step_) * config_.timestep;
-  const bool drifted = predict();
+  bool drifted = predict();
   move_bodies(t_next);
+  drifted = deform_cell() || drifted;
   update_neighbours(drifted);
   const PassReport forces = contacts(fuse);
   if (features_.driven) drive_servos();
+  drive_cell();
   correct(fuse, forces);
   ++steps_;
   time_ = t_next;
@@ -220,8 +222,8 @@ PassReport Simulation::contacts(bool fuse) {
                             ? Finish::nothing
                         : fuse ? Finish::verlet_correct_predict
                                : Finish::verlet_correct;
-  PassReport report =
-      forces_.compute(world_, list_, pairs_, finish, drift_bound_, threads_, features_);
+  PassReport report = forces_.compute(world_, list_, pairs_, finish,
+                                      drift_bound_ + 0.5 * cell_reserve_, threads_, features_);
   if (features_.rolling) {
     add_rolling_torques(world_, list_, pairs_, config_.normal_law, config_.timestep,
                         lever_shares(config_.lever_arm));
@@ -263,15 +265,19 @@ void Simulation::correct(bool fuse, const PassReport& forces) {
 void Simulation::rebuild_list(int threads) {
   build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
   drift_bound_ = 0.0;
+  cell_reserve_ = 0.0;
   forces_.list_changed();
 }
 
 bool Simulation::drifted(double displacement2) {
   drift_bound_ += std::sqrt(displacement2);
-  if (drift_bound_ <= drift_margin * 0.5 * list_.skin) return false;
+  // a deforming cell's strain takes its share of the skin first (update_cell_reserve)
+  const double reserve = 0.5 * cell_reserve_;
+  if (drift_bound_ + reserve <= drift_margin * 0.5 * list_.skin) return false;
   ++drift_tests_;
   const double largest2 = largest_drift2(list_, world_.particles, threads_);
-  if (largest2 > drift_limit2(list_)) return true; // particles_moved's very test
+  const double limit = 0.5 * list_.skin - reserve;
+  if (limit <= 0.0 || largest2 > limit * limit) return true; // particles_moved's test, less it
   const double moved = std::sqrt(largest2);
   // The positions were compared with the build's: the farthest move is the new bound. A bound
   // that sums every pass's farthest move soon overstates it (the farthest grains change from pass
@@ -403,105 +409,6 @@ void Simulation::run(std::uint64_t steps, const std::function<void(const Simulat
             !(box && next % 16 == 0));
     if (observer && every > 0 && steps_ % every == 0) observer(*this);
   }
-}
-
-// The deepest contact, its collision time, and the cause of its depth: a timestep that resolves
-// the contact in too few steps (then a smaller one is proposed), or an impact too fast for the
-// stiffness, which no timestep cures.
-void Simulation::describe_deepest_contact(std::ostringstream& msg) const {
-  const Particles& p = world_.particles;
-  ContactView worst;
-  double ratio = -1.0;
-  for_each_contact([&](const ContactView& v) {
-    const double r =
-        v.geometry.overlap / std::min(p.radius[v.i], v.wall < 0 ? p.radius[v.j] : p.radius[v.i]);
-    if (r > ratio) ratio = r, worst = v;
-  });
-  if (ratio < 0.0) {
-    msg << ". Try a smaller timestep (about the collision time / 50), softer materials or lower "
-           "speeds.";
-    return;
-  }
-  const PairParameters& pp = *worst.parameters;
-  const ContactGeometry& g = worst.geometry;
-  const double k =
-      with_normal_law(config_.normal_law, [&]<class N>() -> double { return N::stiffness(pp, g); });
-  const double tc = std::numbers::pi * std::sqrt(g.m_eff / k);
-  const double steps = tc / config_.timestep;
-  const double radius = std::min(p.radius[worst.i], worst.wall < 0 ? p.radius[worst.j] : 1e300);
-  const Vec2 dv = p.velocity[worst.i] - (worst.wall < 0 ? p.velocity[worst.j] : Vec2{});
-  msg << " between particle id " << p.id[worst.i] << " at (" << p.position[worst.i].x << ", "
-      << p.position[worst.i].y << ") m and "
-      << (worst.wall < 0 ? "particle id " + std::to_string(p.id[worst.j])
-                         : "wall segment " + std::to_string(worst.wall))
-      << "; their collision time is about " << tc << " s, which the timestep resolves in " << steps
-      << " steps";
-  if (steps < min_steps_per_contact) {
-    msg << ". The timestep is too large for this contact: a timestep of about " << tc / 50.0
-        << " s (collision time / 50) would resolve it.";
-    return;
-  }
-  const double per_step = norm(dv) * config_.timestep, limit = config_.max_overlap_fraction;
-  if (per_step > 0.25 * limit * radius) { // one step closes a good part of the allowed overlap
-    msg << ", but at " << norm(dv) << " m/s they close in by " << per_step
-        << " m per step: the timestep is too large for this speed; a timestep of about "
-        << 0.02 * radius / norm(dv) << " s (a fiftieth of the radius per step) would resolve it.";
-    return;
-  }
-  // resolved in time and in space: the grains met too fast for their stiffness. An undamped
-  // contact reaches the limit from an impact speed of limit R omega, and the impact speed is
-  // about sqrt(v^2 + (omega xi)^2) from the state now (its energy).
-  const double omega = std::sqrt(k / g.m_eff);
-  const double impact = std::sqrt(norm2(dv) + omega * omega * g.overlap * g.overlap);
-  msg << ", so the timestep is not the cause: they met at about " << impact
-      << " m/s, and with this stiffness an impact faster than about " << limit * radius * omega
-      << " m/s overlaps past the limit. Use stiffer materials or lower speeds.";
-}
-
-void Simulation::guard() const {
-  const Particles& p = world_.particles;
-  const bool finite = finite_;
-  const bool box =
-      config_.escape_hi.x > config_.escape_lo.x && config_.escape_hi.y > config_.escape_lo.y;
-  if (box && steps_ % 16 == 0) {
-    const Domain& d = world_.domain;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Vec2 r = p.position[i];
-      const bool out =
-          (!d.periodic_x && (r.x < config_.escape_lo.x || r.x > config_.escape_hi.x)) ||
-          (!d.periodic_y && (r.y < config_.escape_lo.y || r.y > config_.escape_hi.y));
-      if (out && p.is_free(i)) {
-        std::ostringstream msg;
-        msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
-            << " s): particle id " << p.id[i] << " left the domain at (" << r.x << ", " << r.y
-            << ") m, speed " << norm(p.velocity[i])
-            << " m/s. A grain shot out by an overlap too deep for the timestep: try a smaller "
-               "timestep (about the collision time / 50), or check for a gap in the walls.";
-        throw InstabilityError(msg.str());
-      }
-    }
-  }
-  if (finite && forces_.deepest_overlap() <= config_.max_overlap_fraction) return;
-
-  std::ostringstream msg;
-  msg << "unstable at step " << steps_ << " (t = " << time_ << " s, dt = " << config_.timestep
-      << " s): ";
-  if (!finite) {
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (!std::isfinite(p.position[i].x + p.position[i].y + p.velocity[i].x + p.velocity[i].y)) {
-        msg << "particle id " << p.id[i] << " has a non-finite position or velocity";
-        break;
-      }
-    msg << (steps_ <= 1 ? ": a non-finite value in the input (a position, velocity, radius or "
-                          "material value)."
-                        : ": a value grew without bound, most often from a timestep far too "
-                          "large for the stiffest contact (try about the collision time / 50).");
-  } else {
-    msg << "an overlap reached " << forces_.deepest_overlap() << " of the smaller radius (limit "
-        << config_.max_overlap_fraction << ")";
-    describe_deepest_contact(msg);
-  }
-  throw InstabilityError(msg.str());
 }
 
 } // namespace talus

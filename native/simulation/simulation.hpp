@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/contact_vectors.hpp"
+#include "drivers/cell.hpp"
 #include "drivers/servo.hpp"
 #include "integrate/integrator.hpp"
 #include "materials/pair_table.hpp"
@@ -187,6 +188,11 @@ public:
   void use_general_step(bool general);
   /// Calls f for every touching contact (pairs in list order, then walls), for analysis.
   void for_each_contact(const std::function<void(const ContactView&)>& f) const;
+  /// The deforming cell's driver (drivers.hpp, Cell), or nullptr: one at most.
+  const Cell* cell_driver() const;
+  /// The grains' mean stress and its stiffness as a cell held at a pressure reads them after a
+  /// step (drivers/cell.hpp): from the contacts of the list and the free grains' velocities.
+  CellReading cell_reading() const;
 
   /// A contact resolved in fewer steps than this is blamed on the timestep.
   static constexpr double min_steps_per_contact = 10.0;
@@ -206,6 +212,15 @@ private:
   bool predict();
   /// Stage 2: the drivers move their particles and walls to time t.
   void move_bodies(double t);
+  /// Stage 2 too: a deforming cell takes its strain for the step, and every grain and the
+  /// list's build positions follow it affinely. Returns whether a gap may have closed by more
+  /// than the skin allows since the list's build (the drift test with the strain's reserve).
+  bool deform_cell();
+  /// After stage 4: a cell held at a pressure reads the grains and takes its next rate.
+  void drive_cell();
+  Cell* mutable_cell(); ///< cell_driver(), to change its state
+  /// cell_reserve_ from the box now and at the list's build.
+  void update_cell_reserve();
   /// Stage 3: the neighbour list built again if a grain drifted, a held grain was freed, or a
   /// wall or driven particle moved more than half the skin.
   void update_neighbours(bool drifted);
@@ -262,6 +277,9 @@ private:
   /// restore and after edit_world, until the next build. Driven particles are tested apart.
   static constexpr double unknown_drift = std::numeric_limits<double>::infinity();
   double drift_bound_ = unknown_drift;
+  /// How far the deforming cell's strain since the list's build may have closed a gap (m): the
+  /// drift test and the contact candidates leave it out of the skin (0 without a cell).
+  double cell_reserve_ = 0.0;
   std::uint64_t drift_tests_ = 0;
   StepFeatures features_;
   /// drive_servos' part for the servos' wall particles: their contacts with grains.

@@ -161,7 +161,7 @@ TEST(FrictionEnergy, ALongStickSlipShearNeverCreatesEnergy) {
       Driver d;
       d.motion = Vibrate{.direction = {1.0, 0.0}, .amplitude = 2e-3, .frequency = 10.0};
       d.targets.segments = {0};
-      attach(d, w.particles, w.walls);
+      attach(d, w);
       w.drivers.push_back(d);
       SimulationConfig config;
       config.normal_law = n;

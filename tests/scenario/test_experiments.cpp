@@ -14,8 +14,8 @@
 #include "post/flow_profiles.hpp"
 #include "post/segregation.hpp"
 #include "scenario/build.hpp"
-#include "scenario/geometry.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/geometry.hpp"
 #include "support/builtin_scenario.hpp"
 
 namespace talus {

@@ -18,6 +18,8 @@
 namespace talus {
 namespace {
 
+using testing::mean_of;
+
 // 100 frictionless spheres settled in a box 0.1 m wide (they weigh about 0.7 N); the lid starts
 // 0.16 m up and comes down at up to 1 m/s.
 const char* bed = R"(
@@ -50,16 +52,6 @@ target = "lid"
 direction = [0, -1]
 force = 2.0
 )";
-
-// The mean of a column over the rows with from <= time < to.
-double mean_of(const std::vector<std::map<std::string, double>>& rows, const std::string& column,
-               double from, double to) {
-  double sum = 0.0;
-  int n = 0;
-  for (const auto& row : rows)
-    if (row.at("time") >= from && row.at("time") < to) sum += row.at(column), ++n;
-  return n > 0 ? sum / n : 0.0;
-}
 
 double weight_of_grains(const BuiltScenario& b) {
   double w = 0.0;

@@ -22,17 +22,10 @@
 namespace talus {
 namespace {
 
+using testing::mean_of;
+
 Scenario shear(const std::vector<std::string>& sets) {
   return testing::builtin("shear", sets);
-}
-
-double mean_of(const std::vector<std::map<std::string, double>>& rows, const std::string& column,
-               double from) {
-  double sum = 0.0;
-  int n = 0;
-  for (const auto& row : rows)
-    if (row.at("time") >= from) sum += row.at(column), ++n;
-  return n > 0 ? sum / n : 0.0;
 }
 
 // The plate's stress target is a force per width: its row of 20 touching grains of 5 mm spans

@@ -5,8 +5,8 @@
 
 #include "post/discharge.hpp"
 #include "scenario/build.hpp"
-#include "scenario/geometry.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/geometry.hpp"
 #include "support/builtin_scenario.hpp"
 
 namespace talus {

@@ -40,7 +40,7 @@ inline World mixed_box() {
   Driver d;
   d.motion = Vibrate{{0.0, 1.0}, 0.001, 20.0, 0.0};
   for (std::uint32_t i = 30; i < 58; ++i) d.targets.particles.push_back(i);
-  attach(d, w.particles, w.walls);
+  attach(d, w);
   w.drivers.push_back(d);
   w.add_wall({0.0, 0.002}, {0.3, 0.002}); // a segment floor under the grains too
   return w;

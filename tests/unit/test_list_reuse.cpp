@@ -162,7 +162,7 @@ TEST(ListReuse, ADrivenGrainPushedIntoANeighbourTouchesIt) {
   Driver d;
   d.motion = Translate{{0.1, 0.0}}; // 0.35 mm in 700 steps: 0.05 mm of overlap
   d.targets.particles = {0};
-  attach(d, w.particles, w.walls);
+  attach(d, w);
   w.drivers.push_back(d);
   Simulation s(std::move(w), fixed_skin(Integrator::gear));
   const std::uint64_t builds = s.neighbours().builds;

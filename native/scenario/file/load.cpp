@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scenario/file/driver_keys.hpp"
 #include "scenario/file/picture_request.hpp"
 #include "scenario/file/stages.hpp"
 #include "talus/material_keys.hpp"
@@ -266,40 +267,6 @@ void read_geometry(TableReader& r, GeometrySection& g, const std::string& file) 
     g.segments.push_back(seg);
     sr.finish();
   }
-}
-
-// A servo's keys (docs/scenarios.md): one target, force or stress, and a direction given.
-void read_servo(TableReader& r, DriverSection& d, double impact_speed) {
-  d.force = r.number("force", 0.0, -inf, inf, "N");
-  d.stress = r.number("stress", 0.0, 0.0, inf, ">= 0 N/m");
-  d.max_speed = r.number("max_speed", impact_speed, 1e-12, inf, "> 0 m/s");
-  d.relaxation = r.number("relaxation", d.relaxation, 1e-9, 1.0, "in (0, 1]");
-  d.slide_speed = r.number("slide_speed", 0.0, -inf, inf, "a finite speed in m/s");
-  if (d.type != "servo") {
-    for (const char* key : {"force", "stress", "max_speed", "relaxation", "slide_speed"})
-      if (r.has(key)) r.fail(key, "only a servo driver has it (this one is " + d.type + ")");
-    return;
-  }
-  if (r.has("force") == r.has("stress"))
-    r.fail("force", "a servo needs one target: force (N) or stress (N/m), not both");
-  if (!r.has("direction"))
-    r.fail("direction", "a servo needs it: the way its walls move to press on the grains, "
-                        "[0, -1] for a lid");
-}
-
-DriverSection read_driver(TableReader& r, double impact_speed) {
-  DriverSection d;
-  d.type = r.choice("type", "", {"vibrate", "translate", "rotate", "servo"});
-  d.target = r.text("target", d.target);
-  d.amplitude = r.number("amplitude", 0.0, 0.0, inf, ">= 0 m");
-  d.frequency = r.number("frequency", 0.0, 0.0, inf, ">= 0 Hz");
-  d.phase = r.number("phase", 0.0, -inf, inf, "rad");
-  d.direction = r.vec2("direction", d.direction);
-  d.velocity = r.vec2("velocity", d.velocity);
-  d.centre = r.vec2("centre", d.centre);
-  d.angular_velocity = r.number("angular_velocity", 0.0, -inf, inf, "rad/s");
-  read_servo(r, d, impact_speed);
-  return d;
 }
 
 void read_track(TableReader& r, TrackSection& t) {

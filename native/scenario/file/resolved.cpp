@@ -173,6 +173,18 @@ toml::table geometry_table(const GeometrySection& g) {
 toml::array drivers_array(const std::vector<DriverSection>& drivers) {
   toml::array out;
   for (const DriverSection& d : drivers) {
+    if (d.type == "cell") { // no target, and the mode the file gave
+      toml::table t{{"type", d.type}};
+      if (d.pressure > 0.0) {
+        t.insert("pressure", d.pressure);
+        t.insert("max_strain_rate", d.max_strain_rate);
+        t.insert("relaxation", d.relaxation);
+      } else {
+        t.insert("strain_rate", vec(d.strain_rate));
+      }
+      out.push_back(std::move(t));
+      continue;
+    }
     toml::table t{{"type", d.type},
                   {"target", d.target},
                   {"amplitude", d.amplitude},
