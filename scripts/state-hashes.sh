@@ -20,8 +20,8 @@ short_of() {
                   --set frost.freeze_time=0.1 --set frost.thaw_time=0.1 --set frost.heave_strain=0.1
                   --set frost.min_interval=0.02 --set frost.kinetic_threshold=1e-1 --set frost.cycles=1" ;;
     heap) echo "--set particles.count=80 --set stages.1.duration=0.1 --set stages.2.duration=0.2" ;;
-    jamming) echo "--set particles.count=100 --set geometry.width=0.16 --set geometry.height=0.16
-                  --set output.stress_region=[0.02,0.02,0.1,0.1] --set stages.0.duration=0.3
+    jamming) echo "--set particles.count=100 --set geometry.box=[0,0,0.16,0.16]
+                  --set packing.region=[0,0,0.16,0.16] --set stages.0.duration=0.3
                   --set stages.1.duration=0.1 --set stages.2.duration=0.1 --set stages.3.duration=0.1
                   --set stages.4.duration=0.1 --set stages.5.duration=0.1" ;;
     janssen) echo "--set particles.count=300 --set geometry.height=0.3 --set packing.settle_max_time=0.2

@@ -27,8 +27,8 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
                        --set stages.2.duration=0.05) ;;
     silo_gate) short=(--set particles.count=60 --set stages.0.duration=0.15 --set stages.2.count=5) ;;
     heap) short=(--set particles.count=80 --set stages.1.duration=0.1 --set stages.2.duration=0.2) ;;
-    jamming) short=(--set particles.count=100 --set geometry.width=0.16 --set geometry.height=0.16
-                    --set "output.stress_region=[0.02,0.02,0.1,0.1]" --set stages.0.duration=0.3
+    jamming) short=(--set particles.count=100 --set "geometry.box=[0,0,0.16,0.16]"
+                    --set "packing.region=[0,0,0.16,0.16]" --set stages.0.duration=0.3
                     --set stages.1.duration=0.1 --set stages.2.duration=0.1 --set stages.3.duration=0.1
                     --set stages.4.duration=0.1 --set stages.5.duration=0.1) ;;
     janssen) short=(--set particles.count=300 --set geometry.height=0.3 --set packing.settle_max_time=0.2

@@ -84,10 +84,13 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
         std::any_of(s.materials.begin(), s.materials.end(),
                     [](const Material& m) { return m.rolling_friction > 0.0; }))
       attempt("repose", [&] { return analyze_repose(run); });
-    // a packing let down in steps of pressure by servo walls, its structure recorded
+    // a packing let down in steps of pressure by servo walls or a cell, its structure recorded
     const bool servo = std::any_of(s.drivers.begin(), s.drivers.end(),
                                    [](const DriverSection& d) { return d.type == "servo"; });
-    if (servo && s.output.stress && s.stages.size() >= 3)
+    const bool cell = std::any_of(s.drivers.begin(), s.drivers.end(), [](const DriverSection& d) {
+      return d.type == "cell" && d.pressure > 0.0;
+    });
+    if ((servo || cell) && s.output.stress && s.stages.size() >= 3)
       attempt("jamming", [&] { return analyze_jamming(run, o); });
     // a silo at rest: the wall stress against depth
     if (s.geometry.builder == "silo" && s.geometry.orifice == 0.0 && !driven)

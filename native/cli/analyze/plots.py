@@ -256,8 +256,8 @@ elif kind == "jamming":
         a.plot(ps, [extra["phi_j"] + q / extra["bulk"] for q in ps], "k-", lw=1,
                label=f"phi_J + p / B, phi_J = {extra['phi_j']:.4f}")
     a.axhline(0.842, color="grey", ls="--", lw=1, label="O'Hern et al. 2003: 0.842")
-    a.set_xlabel("pressure of the interior region [N/m]")
-    a.set_ylabel("packing fraction of the interior region [-]")
+    a.set_xlabel("pressure of the stress region [N/m]")
+    a.set_ylabel("packing fraction of the stress region [-]")
     a.legend(fontsize=8)
     if extra["measured"]:
         dphi = [max(q - extra["phi_j"], 0.0) for q in phi]
