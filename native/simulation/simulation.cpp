@@ -263,7 +263,15 @@ void Simulation::correct(bool fuse, const PassReport& forces) {
 }
 
 void Simulation::rebuild_list(int threads) {
-  build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(), threads);
+  try {
+    build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(),
+                         threads);
+  } catch (const InvalidArgument& e) { // a box too small for the grid: say who made it so
+    if (cell_driver() == nullptr || steps_ == 0) throw;
+    throw InvalidArgument(std::string(e.what()) + " at t = " + std::to_string(time_) +
+                          " s: the deforming cell shrank the box to this; end it sooner (a "
+                          "stage's duration or condition) or hold it at a pressure");
+  }
   drift_bound_ = 0.0;
   cell_reserve_ = 0.0;
   forces_.list_changed();

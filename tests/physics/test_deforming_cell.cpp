@@ -189,6 +189,19 @@ TEST(DeformingCell, ThreadsAndCheckpointsChangeNoBit) {
   EXPECT_LT(resumed.cell_driver()->strain.x, 0.0);
 }
 
+// A cell that shrinks the box below the three interaction ranges the list's grid needs stops
+// the run with the cause named, not a grid error alone.
+TEST(DeformingCell, ABoxShrunkTooFarStopsTheRunNamingTheCell) {
+  Simulation s(gas(2, 0.0, 0.0, Cell{.strain_rate = {-3.0, -3.0}}), config(0.0));
+  try {
+    s.run(100'000);
+    ADD_FAILURE() << "the box shrank to " << s.world().domain.size().x << " m unnoticed";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("the deforming cell shrank the box"), std::string::npos)
+        << e.what();
+  }
+}
+
 // What the remap would leave behind is refused, as are keys that do not fit the box.
 TEST(DeformingCell, WhatCannotFollowTheCellIsRefused) {
   World walls = gas(4, 0.0, 0.0, Cell{.strain_rate = {-1.0, -1.0}});

@@ -67,4 +67,12 @@ grep -q "bit-identical for every thread count: yes" "$dir/busy.txt" || exit 1
 "$talus" bench linear --tiles 0 --cache "$dir/cache" 2> "$dir/err.txt" &&
   { echo "--tiles 0 was accepted"; exit 1; }
 grep -q -- "--tiles" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
+# bench cell: the three cases timed in turns, each with its row in the table and the CSV
+"$talus" bench cell --side 10 --steps 20 --rounds 2 --results "$dir/results" > "$dir/cell.txt" ||
+  { cat "$dir/cell.txt"; exit 1; }
+cat "$dir/cell.txt"
+for case in "pressure" "strain rate 0" "no cell"; do
+  grep -q "^| $case | " "$dir/cell.txt" || { echo "no row for $case"; exit 1; }
+done
+[ "$(grep -c ',cell_\(pressure\|rate\|none\),' "$csv")" -eq 3 ] || { echo "expected three cell rows"; exit 1; }
 exit 0

@@ -392,6 +392,7 @@ void add_bench_command(CLI::App& app) {
   add_bench_linear_command(*bench);
   add_bench_threads_command(*bench);
   add_bench_laws_command(*bench);
+  add_bench_cell_command(*bench);
 
   auto threads = std::make_shared<int>(1);
   CLI::App* thesis = bench->add_subcommand(

@@ -86,6 +86,7 @@ void add_shared_bench_options(
 /// under the `bench` command.
 void add_bench_linear_command(CLI::App& bench);
 void add_bench_threads_command(CLI::App& bench);
+void add_bench_cell_command(CLI::App& bench);
 /// `talus bench laws` (cli/bench_laws.cpp).
 void add_bench_laws_command(CLI::App& bench);
 
