@@ -39,7 +39,9 @@ void require_cell_fits(const World& w) {
   if (cells == 0) return;
   // what the affine remap would leave behind: walls, and grains that drivers or holds move
   require(cells == 1, "two cell drivers; the periodic box has one");
-  require(w.walls.empty(), "a deforming cell with wall segments: they do not follow the cell");
+  require(w.walls.empty(),
+          "a deforming cell with wall segments: they do not follow the cell; use builder = "
+          "\"none\" with a periodic box (a rough wall of fixed grains follows it)");
   for (std::size_t i = 0; i < w.particles.size(); ++i)
     require(w.particles.kind[i] != Kind::moved,
             "a deforming cell with particle " + std::to_string(i) +

@@ -49,16 +49,16 @@ std::optional<std::string> refusal(const Scenario& s) {
       return refused("materials", "material '" + m.name +
                                       "' is rigid, which pair_coeff does not express yet; allowed: "
                                       "rigid = false");
-  for (const DriverSection& d : s.drivers)
+  for (const DriverSection& d : s.drivers) {
     if (d.type == "servo")
       return refused("drivers", "a servo driver has no counterpart in fix granthesis/wall; "
                                 "allowed types: vibrate, translate, rotate (docs/lammps.md names "
                                 "LAMMPS' own ways to hold a wall at a load)");
-  for (const DriverSection& d : s.drivers)
     if (d.type == "cell" && d.pressure > 0.0)
       return refused("drivers", "a cell held at a pressure has no counterpart with the same "
                                 "controller (fix press/berendsen and fix box/relax differ; "
                                 "docs/lammps.md); allowed: a cell at a strain_rate (fix deform)");
+  }
   if (s.frost.model == "front")
     return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
                                   "(fix frost/heave)");

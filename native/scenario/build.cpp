@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "drivers/cell.hpp"
 #include "materials/timestep.hpp"
 #include "scenario/build_checks.hpp"
 #include "scenario/file/load.hpp"
@@ -338,25 +339,16 @@ void check_one_driver_each(const std::vector<DriverSection>& drivers, const Buil
   }
 }
 
-// The deforming periodic cell: one at most, and with nothing the affine remap would leave
-// behind (walls do not follow the box, nor do grains that drivers move).
+// The deforming periodic cell: attached to the box (it has no target).
 void add_cell_driver(const DriverSection& d, BuiltScenario& out) {
-  World& w = out.world;
-  for (const Driver& other : w.drivers)
-    if (std::holds_alternative<Cell>(other.motion))
-      throw ScenarioError("drivers: two cell drivers; the periodic box has one");
-  if (!w.walls.empty())
-    throw ScenarioError("drivers (type \"cell\"): the geometry has wall segments, which do not "
-                        "follow a deforming cell; use builder = \"none\" with a periodic box (a "
-                        "rough wall of fixed grains follows it)");
   Driver driver;
   driver.motion = motion_of(d);
   try {
-    attach(driver, w);
+    attach(driver, out.world);
   } catch (const InvalidArgument& e) {
     throw ScenarioError(std::string("drivers (type \"cell\"): ") + e.what());
   }
-  w.drivers.push_back(std::move(driver));
+  out.world.drivers.push_back(std::move(driver));
 }
 
 void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) {
@@ -386,6 +378,11 @@ void add_drivers(const std::vector<DriverSection>& drivers, BuiltScenario& out) 
       throw ScenarioError("drivers (target '" + d.target + "'): " + e.what());
     }
     out.world.drivers.push_back(std::move(driver));
+  }
+  try { // the engine's own check, made here with the key to name
+    require_cell_fits(out.world);
+  } catch (const InvalidArgument& e) {
+    throw ScenarioError(std::string("drivers (type \"cell\"): ") + e.what());
   }
 }
 

@@ -20,7 +20,7 @@ Cell* Simulation::mutable_cell() {
   return const_cast<Cell*>(std::as_const(*this).cell_driver());
 }
 
-void Simulation::update_cell_reserve() {
+void Simulation::update_cell_reserve(double max_radius) {
   const Vec2 now = world_.domain.size(), built = list_.box;
   double shrink = 1.0; // the smallest factor a side shrank by since the build
   if (built.x > 0.0) shrink = std::min(shrink, now.x / built.x);
@@ -28,9 +28,8 @@ void Simulation::update_cell_reserve() {
   // A pair the list left out was at least reach + skin apart at the build; the strain closes
   // such a gap by at most (1 - shrink) times that, and -ln(shrink) bounds it so that its growth
   // since the candidates were chosen also bounds what closed since then (ln adds up).
-  cell_reserve_ = cell_driver() == nullptr
-                      ? 0.0
-                      : -std::log(shrink) * (2.0 * world_.particles.max_radius() + list_.skin);
+  cell_reserve_ =
+      cell_driver() == nullptr ? 0.0 : -std::log(shrink) * (2.0 * max_radius + list_.skin);
 }
 
 bool Simulation::deform_cell() {
@@ -48,8 +47,10 @@ bool Simulation::deform_cell() {
   Particles& p = world_.particles;
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   const bool same = list_.reference.size() == p.size();
-#pragma omp parallel for schedule(static) num_threads(threads_)
+  double largest = 0.0; // radius, for the reserve: in this pass rather than one more
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : largest)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
+    largest = std::max(largest, p.radius[i]);
     const Vec2 r = p.position[i] - lo;
     p.position[i] = lo + Vec2{r.x * f.x, r.y * f.y};
     if (same) {
@@ -57,7 +58,7 @@ bool Simulation::deform_cell() {
       list_.reference[i] = lo + Vec2{b.x * f.x, b.y * f.y};
     }
   }
-  update_cell_reserve();
+  update_cell_reserve(largest);
   return drifted(0.0);
 }
 

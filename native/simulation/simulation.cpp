@@ -100,7 +100,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
   choose_features();
   if (restoring) {
     index_force_blocks(list_); // derived from the rows, not stored
-    update_cell_reserve();
+    update_cell_reserve(world_.particles.max_radius());
     return;
   }
   for (std::size_t i = 0; i < world_.particles.size(); ++i)

@@ -219,8 +219,8 @@ private:
   /// After stage 4: a cell held at a pressure reads the grains and takes its next rate.
   void drive_cell();
   Cell* mutable_cell(); ///< cell_driver(), to change its state
-  /// cell_reserve_ from the box now and at the list's build.
-  void update_cell_reserve();
+  /// cell_reserve_ from the box now and at the list's build, and the largest radius (m).
+  void update_cell_reserve(double max_radius);
   /// Stage 3: the neighbour list built again if a grain drifted, a held grain was freed, or a
   /// wall or driven particle moved more than half the skin.
   void update_neighbours(bool drifted);
