@@ -78,9 +78,19 @@ RegionStress region_stress(const Simulation& sim, Vec2 lo, Vec2 hi) {
     if (p.is_free(i) && inside(p.position[i], lo, hi))
       mass += p.mass[i], momentum += p.mass[i] * p.velocity[i], ++s.grains;
   const Vec2 mean = mass > 0.0 ? momentum / mass : Vec2{};
+  // in a sheared cell (Lees-Edwards) about the shear's flow too, v_x = shear rate (y - y_mean)
+  const double shear_rate = box.shear_velocity / box.size().y;
+  double y_mean = 0.0;
+  if (shear_rate != 0.0 && mass > 0.0) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.is_free(i) && inside(p.position[i], lo, hi))
+        y_mean += p.mass[i] * box.wrap(p.position[i]).y;
+    y_mean /= mass;
+  }
   for (std::size_t i = 0; i < p.size(); ++i)
     if (p.is_free(i) && inside(p.position[i], lo, hi)) {
-      const Vec2 u = p.velocity[i] - mean;
+      Vec2 u = p.velocity[i] - mean;
+      if (shear_rate != 0.0) u.x -= shear_rate * (box.wrap(p.position[i]).y - y_mean);
       s.kinetic += p.mass[i] * outer(u, u);
     }
   if (s.area > 0.0) s.contact /= s.area, s.kinetic /= s.area;

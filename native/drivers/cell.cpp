@@ -28,8 +28,17 @@ void attach_cell(Cell& c, const Domain& d) {
             "cell driver: relaxation must be in (0, 1] (the fraction of the stress' error "
             "closed per step: above 1 the cell overshoots)");
   }
+  require(std::isfinite(c.shear_rate), "cell driver: shear_rate must be finite (1/s)");
+  if (c.shear_rate != 0.0) {
+    require(d.periodic_x && d.periodic_y,
+            "cell driver: a shear_rate needs a box periodic in x and y (geometry.periodic = "
+            "\"xy\"): the images across y slide along x");
+    require(c.strain_rate.x == 0.0,
+            "cell driver: a sheared cell keeps its width: strain_rate along x must be 0");
+  }
   c.rate = 0.0;
   c.strain = {};
+  c.shear_strain = 0.0;
 }
 
 void require_cell_fits(const World& w) {
@@ -50,6 +59,7 @@ void require_cell_fits(const World& w) {
 
 Vec2 cell_strain_rate(const Cell& c, const Domain& d) {
   if (c.pressure <= 0.0) return c.strain_rate;
+  if (c.shear_rate != 0.0) return {0.0, c.rate};
   return {d.periodic_x ? c.rate : 0.0, d.periodic_y ? c.rate : 0.0};
 }
 

@@ -10,11 +10,14 @@
 
 namespace talus {
 
-/// What the grains of the cell say after a step: their mean stress, half the trace of the
-/// contact and kinetic stress over the cell (compression positive), and its stiffness against
-/// an isotropic compression, -dP/d(ln L) = (1/(2A)) sum_c k_c |d_c|^2 (k_c a contact's tangent
+/// What the grains of the cell say after a step: the stress the cell holds (compression
+/// positive) and its stiffness against the cell's strain. Without shear that is the mean stress,
+/// half the trace of the contact and kinetic stress over the cell, and its stiffness against an
+/// isotropic compression, -dP/d(ln L) = (1/(2A)) sum_c k_c |d_c|^2 (k_c a contact's tangent
 /// normal stiffness, d_c its branch between the centres; the forces' own turn and the area's
-/// change are smaller by the overlap over the diameter and left out).
+/// change are smaller by the overlap over the diameter and left out). A sheared cell holds the
+/// normal stress across the shear, sigma_yy = (1/A)(sum_c F_y d_y + sum m u_y^2), with the
+/// stiffness against a strain of y alone, (1/A) sum_c k_c d_y^4 / |d_c|^2.
 struct CellReading {
   double pressure = 0.0;  ///< N/m
   double stiffness = 0.0; ///< N/m
@@ -31,7 +34,7 @@ struct World;
 void require_cell_fits(const World& w);
 
 /// The true strain rate of each side of the box in the next step, 1/s: the set one (rate mode)
-/// or the controller's, along each periodic direction (pressure mode).
+/// or the controller's, along each periodic direction (pressure mode; along y alone in shear).
 Vec2 cell_strain_rate(const Cell& c, const Domain& d);
 
 /// The pressure mode's rate for the next step, from the reading after this one:

@@ -122,7 +122,8 @@ template <either<SimulationConfig> C, class F> void for_each_member(C& c, F&& f)
   f(c.skin), f(c.impact_speed), f(c.threads), f(c.min_particles_per_thread);
   f(c.max_overlap_fraction), f(c.escape_lo), f(c.escape_hi), f(c.sort_interval), f(c.lever_arm);
 }
-static_assert(sizeof(Domain) == 40 && sizeof(Segment) == 96 && sizeof(SimulationConfig) == 104,
+// (Domain's Lees-Edwards offset and velocity, of format 16, are written after the list too.)
+static_assert(sizeof(Domain) == 56 && sizeof(Segment) == 96 && sizeof(SimulationConfig) == 104,
               "a member was added or changed: add it to the lists above and raise the version");
 
 template <class T> void write_members(Writer& w, const T& v) {
@@ -141,13 +142,18 @@ template <class T> T read_members(Reader& r) {
 
 // Format 7's whole struct, its periodic flags checked before it is copied out: a bool holding
 // another byte than 0 or 1 is undefined behaviour to read.
+struct Domain7 {
+  Vec2 lo, hi;
+  bool periodic_x, periodic_y;
+};
 Domain read_domain7(Reader& r) {
-  const auto raw = r.pod<std::array<unsigned char, sizeof(Domain)>>();
-  for (const std::size_t at : {offsetof(Domain, periodic_x), offsetof(Domain, periodic_y)})
+  const auto raw = r.pod<std::array<unsigned char, sizeof(Domain7)>>();
+  for (const std::size_t at : {offsetof(Domain7, periodic_x), offsetof(Domain7, periodic_y)})
     if (raw[at] > 1) r.fail("a flag is neither 0 nor 1");
-  Domain d;
-  std::memcpy(&d, raw.data(), sizeof(Domain));
-  return d;
+  Domain7 old;
+  std::memcpy(&old, raw.data(), sizeof(Domain7));
+  return Domain{
+      .lo = old.lo, .hi = old.hi, .periodic_x = old.periodic_x, .periodic_y = old.periodic_y};
 }
 
 void write_particles(Writer& w, const Particles& p) {
@@ -233,6 +239,26 @@ Servo read_servo(Reader& r, std::uint32_t version) {
                .speed = s.speed};
 }
 
+// A cell as format 15 stored it, before its shear.
+struct Cell15 {
+  Vec2 strain_rate;
+  double pressure, max_strain_rate, relaxation, rate;
+  Vec2 strain;
+};
+static_assert(sizeof(Cell) == sizeof(Cell15) + 2 * sizeof(double),
+              "a member was added to Cell: read it in a new format version");
+
+Cell read_cell(Reader& r, std::uint32_t version) {
+  if (version >= 16) return r.pod<Cell>();
+  const auto c = r.pod<Cell15>();
+  return Cell{.strain_rate = c.strain_rate,
+              .pressure = c.pressure,
+              .max_strain_rate = c.max_strain_rate,
+              .relaxation = c.relaxation,
+              .rate = c.rate,
+              .strain = c.strain};
+}
+
 // Format 9 added the driver's start time (a driver changed during a run); before, every driver
 // started at 0.
 Driver read_driver(Reader& r, std::uint32_t version) {
@@ -251,7 +277,7 @@ Driver read_driver(Reader& r, std::uint32_t version) {
     d.motion = read_servo(r, version);
     break;
   case 4: // from format 15
-    d.motion = r.pod<Cell>();
+    d.motion = read_cell(r, version);
     break;
   default:
     r.fail("unknown driver type");
@@ -288,9 +314,11 @@ std::string encode_checkpoint(const Checkpoint& c) {
   w.pod(l.skin), w.pod(l.builds);
   w.pod(c.state.time), w.pod(c.state.steps);
   write_members(w, c.config);
-  w.pod(static_cast<std::uint8_t>(c.config.linear_damping)); // from format 12
-  w.pod(c.state.clock_time), w.pod(c.state.clock_step);      // from format 13
-  w.pod(l.box);                                              // from format 15
+  w.pod(static_cast<std::uint8_t>(c.config.linear_damping));            // from format 12
+  w.pod(c.state.clock_time), w.pod(c.state.clock_step);                 // from format 13
+  w.pod(l.box);                                                         // from format 15
+  w.pod(world.domain.shear_offset), w.pod(world.domain.shear_velocity); // from format 16
+  w.pod(l.shear_offset);
   w.str(c.run_data);
 
   return seal_checkpoint(w.bytes());
@@ -368,6 +396,11 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
   }
   // before 15 no cell deformed: the box at the list's build is the box
   l.box = version >= 15 ? r.pod<Vec2>() : world.domain.size();
+  if (version >= 16) { // before, no images slid (Lees-Edwards)
+    world.domain.shear_offset = r.pod<double>();
+    world.domain.shear_velocity = r.pod<double>();
+    l.shear_offset = r.pod<double>();
+  }
   c.run_data = r.str();
   if (!r.done()) r.fail("unexpected bytes at the end");
   return c;

@@ -32,8 +32,9 @@ struct Checkpoint {
 /// image counts; 11: rolling resistance (the materials' keys and the rolling springs); 12: the
 /// linear law's damping convention; 13: the timestep's clock (a timestep changed during a run);
 /// 14: a servo's slide speed; 15: the deforming cell (a cell driver, the box at the list's
-/// build). Versions 7 to 14 are read.
-inline constexpr std::uint32_t checkpoint_version = 15;
+/// build); 16: Lees-Edwards images (the domain's offset and velocity, the offset at the list's
+/// build, a cell's shear). Versions 7 to 16 are read.
+inline constexpr std::uint32_t checkpoint_version = 16;
 
 /// The bytes of a checkpoint file.
 std::string encode_checkpoint(const Checkpoint& c);

@@ -54,6 +54,10 @@ std::optional<std::string> refusal(const Scenario& s) {
       return refused("drivers", "a servo driver has no counterpart in fix granthesis/wall; "
                                 "allowed types: vibrate, translate, rotate (docs/lammps.md names "
                                 "LAMMPS' own ways to hold a wall at a load)");
+    if (d.type == "cell" && d.shear_rate != 0.0)
+      return refused("drivers", "a sheared cell (Lees-Edwards) is a tilted box in LAMMPS (a "
+                                "triclinic box with fix deform 1 xy erate R remap v), which "
+                                "talus export does not write; allowed: a cell without shear_rate");
     if (d.type == "cell" && d.pressure > 0.0)
       return refused("drivers", "a cell held at a pressure has no counterpart with the same "
                                 "controller (fix press/berendsen and fix box/relax differ; "

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "neighbours/cell_grid.hpp"
+#include "talus/error.hpp"
 
 namespace talus {
 
@@ -134,6 +135,17 @@ bool neighbour_cell(int cells, bool periodic, int& c, std::int8_t& shift) {
   return true;
 }
 
+// As neighbour_cell along x, where a Lees-Edwards offset may put the column up to two widths
+// of the box away.
+bool neighbour_x_cell(const CellGrid& grid, int& c, std::int8_t& shift) {
+  if (c >= 0 && c < grid.nx) return true;
+  if (!grid.periodic_x) return false;
+  const int widths = c >= 0 ? c / grid.nx : -((-c + grid.nx - 1) / grid.nx);
+  shift = static_cast<std::int8_t>(widths);
+  c -= widths * grid.nx;
+  return true;
+}
+
 // The rows of a block of contiguous particles, built by one thread and joined in order. A cache
 // line each: threads push onto neighbouring blocks at the same time.
 struct alignas(64) RowBlock {
@@ -144,7 +156,7 @@ struct alignas(64) RowBlock {
 
 // Row i of the list into `out`: the later particles (j > i, one of the two free) within reach
 // plus the skin, in ascending j. `row` is scratch space, kept by the caller.
-inline void collect_row(const CellGrid& grid, const Particles& p, Vec2 box, double skin,
+inline void collect_row(const CellGrid& grid, const Particles& p, const Domain& domain, double skin,
                         std::size_t i, std::vector<std::pair<std::uint32_t, ImageShift>>& row,
                         RowBlock& out) {
   std::size_t count = 0; // the row: row[0, count)
@@ -157,7 +169,7 @@ inline void collect_row(const CellGrid& grid, const Particles& p, Vec2 box, doub
   // written and kept only if it qualifies (about half do, at random, which a branch predictor
   // cannot learn)
   const auto scan = [&](std::uint32_t k0, std::uint32_t k1, std::int8_t sx, std::int8_t sy) {
-    const Vec2 ri_shifted = ri - Vec2{sx * box.x, sy * box.y};
+    const Vec2 ri_shifted = ri - domain.image_shift(sx, sy);
     if (row.size() < count + (k1 - k0)) row.resize(2 * (count + (k1 - k0)));
     for (std::uint32_t k = k0; k < k1; ++k) {
       const std::uint32_t j = grid.items[k];
@@ -183,15 +195,21 @@ inline void collect_row(const CellGrid& grid, const Particles& p, Vec2 box, doub
     std::int8_t sy = 0;
     if (!neighbour_cell(grid.ny, grid.periodic_y, ncy, sy)) continue;
     const std::size_t cell_row = static_cast<std::size_t>(ncy) * grid.nx;
-    if (cx >= 1 && cx + 1 < grid.nx) { // three cells side by side: one stretch of items
-      const std::size_t c0 = cell_row + static_cast<std::size_t>(cx) - 1;
+    // across a Lees-Edwards side the row of cells is offset along x: its three columns are those
+    // around i's place less the offset (the cells are at least the range wide)
+    const int mx = sy == 0 || domain.shear_offset == 0.0
+                       ? cx
+                       : static_cast<int>(std::floor(
+                             (ri.x - sy * domain.shear_offset - grid.origin.x) / grid.cell_size.x));
+    if (mx >= 1 && mx + 1 < grid.nx) { // three cells side by side: one stretch of items
+      const std::size_t c0 = cell_row + static_cast<std::size_t>(mx) - 1;
       if (any_later(c0, c0 + 3)) scan(grid.cell_start[c0], grid.cell_start[c0 + 3], 0, sy);
       continue;
     }
     for (int dx = -1; dx <= 1; ++dx) {
-      int ncx = cx + dx;
+      int ncx = mx + dx;
       std::int8_t sx = 0;
-      if (!neighbour_cell(grid.nx, grid.periodic_x, ncx, sx)) continue;
+      if (!neighbour_x_cell(grid, ncx, sx)) continue;
       const std::size_t c = cell_row + static_cast<std::size_t>(ncx);
       if (any_later(c, c + 1)) scan(grid.cell_start[c], grid.cell_start[c + 1], sx, sy);
     }
@@ -235,7 +253,6 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
   const std::size_t n = p.size();
   CellGrid grid;
   grid.build(p.position, domain, 2.0 * p.max_radius() + skin, threads);
-  const Vec2 box = domain.size();
 
   std::vector<std::uint32_t> old_offset = std::move(list.row_offset);
   std::vector<std::uint32_t> old_neighbour = std::move(list.neighbour);
@@ -260,7 +277,7 @@ void build_pairs(NeighbourList& list, const Particles& p, const Domain& domain, 
     out.neighbour.reserve(n > 0 ? old_neighbour.size() * (last - first) / n * 11 / 10 + 16 : 0);
     out.image.reserve(out.neighbour.capacity());
     std::vector<std::pair<std::uint32_t, ImageShift>> row;
-    for (std::size_t i = first; i < last; ++i) collect_row(grid, p, box, skin, i, row, out);
+    for (std::size_t i = first; i < last; ++i) collect_row(grid, p, domain, skin, i, row, out);
   }
   join_row_blocks(list, block, n, threads);
   carry_history({old_offset, old_neighbour, old_history}, list.row_offset, list.neighbour,
@@ -322,17 +339,26 @@ void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& wal
   const auto n = static_cast<std::ptrdiff_t>(p.size());
   if (domain.any_periodic()) {
     const Vec2 l = domain.size();
+    require(!domain.sheared() || (domain.periodic_x && domain.periodic_y &&
+                                  domain.shear_offset >= 0.0 && domain.shear_offset < l.x),
+            "Lees-Edwards images need a box periodic in x and y and an offset in [0, L_x)");
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const Vec2 was = p.position[i];
-      p.position[i] = domain.wrap(was);
-      // the boundaries crossed, counted for the unwrapped position (Domain::unwrapped)
-      p.image[i].x += static_cast<std::int32_t>(std::nearbyint((was.x - p.position[i].x) / l.x));
-      p.image[i].y += static_cast<std::int32_t>(std::nearbyint((was.y - p.position[i].y) / l.y));
+      int heights = 0;
+      p.position[i] = domain.wrap(was, &heights);
+      // the boundaries crossed, counted for the unwrapped position (Domain::unwrapped): the
+      // widths only, not the images' offset
+      const double across = was.x - p.position[i].x - heights * domain.shear_offset;
+      p.image[i].x += static_cast<std::int32_t>(std::nearbyint(across / l.x));
+      p.image[i].y += heights;
+      if (heights != 0 && p.is_free(static_cast<std::size_t>(i)))
+        p.velocity[i].x -= heights * domain.shear_velocity;
     }
   }
   list.skin = skin;
   list.box = domain.size();
+  list.shear_offset = domain.shear_offset;
   build_pairs(list, p, domain, skin, threads);
   build_walls(list, p, walls, skin, threads);
   index_force_blocks(list, threads);

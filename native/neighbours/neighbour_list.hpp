@@ -11,7 +11,8 @@
 
 namespace talus {
 
-/// Periodic image of j in a pair entry: j is taken at r_j + (sx L_x, sy L_y).
+/// Periodic image of j in a pair entry: j is taken at r_j + (sx L_x, sy L_y), and along x also
+/// sy times the images' Lees-Edwards offset (Domain::image_shift).
 struct ImageShift {
   std::int8_t sx = 0;
   std::int8_t sy = 0;
@@ -67,11 +68,17 @@ struct NeighbourList {
   /// The box's size at the last build (m): a deforming cell's strain since then closes gaps
   /// the skin must also cover (Simulation, "Deforming cell").
   Vec2 box{};
+  /// The domain's Lees-Edwards offset at the last build (m): its change since then moves the
+  /// images across y by as much, which the skin must also cover.
+  double shear_offset = 0.0;
 
   std::size_t pair_count() const { return neighbour.size(); }
   Vec2 shift(std::size_t entry, const Domain& d) const {
-    const Vec2 l = d.size();
-    return {image[entry].sx * l.x, image[entry].sy * l.y};
+    return d.image_shift(image[entry].sx, image[entry].sy);
+  }
+  /// The velocity of j's image in entry e less j's own (Lees-Edwards; 0 without).
+  Vec2 image_velocity(std::size_t entry, const Domain& d) const {
+    return {image[entry].sy * d.shear_velocity, 0.0};
   }
 };
 
@@ -115,9 +122,11 @@ bool walls_moved(const NeighbourList& list, const Particles& p, const Segments& 
 void renumber_neighbour_list(NeighbourList& list, const std::vector<std::uint32_t>& order,
                              const std::vector<std::uint32_t>& new_of_old, int threads = 1);
 
-/// Rebuilds the list. Wraps positions into the domain along periodic directions first. Pairs of
+/// Rebuilds the list. Wraps positions into the domain along periodic directions first (a grain
+/// that crosses a Lees-Edwards side takes the image's velocity off its own). Pairs of
 /// two non-free particles are left out. History of pairs still within reach is carried over.
-/// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges.
+/// Throws InvalidArgument if a periodic direction is shorter than 3 interaction ranges, or if a
+/// Lees-Edwards offset is outside [0, L_x) (Simulation keeps it there at each build).
 /// `threads` build the rows side by side, in contiguous blocks joined in order: the list is the
 /// same whatever the count.
 void build_neighbour_list(NeighbourList& list, Particles& p, const Segments& walls,

@@ -46,6 +46,8 @@ double automatic_skin(const Particles& p, const Segments& walls, const Domain& d
   }
   for (const Segment& s : walls) // the ends of moving walls trigger rebuilds too
     fastest2 = std::max({fastest2, norm2(s.velocity_at(s.a)), norm2(s.velocity_at(s.b))});
+  // and Lees-Edwards images sliding past the grains (Simulation::update_cell_reserve)
+  fastest2 = std::max(fastest2, domain.shear_velocity * domain.shear_velocity);
   const double mean = free > 0
                           ? radii / static_cast<double>(free)
                           : all_radii / static_cast<double>(std::max<std::size_t>(1, p.size()));

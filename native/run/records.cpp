@@ -117,7 +117,7 @@ std::string thermo_columns(const Simulation& sim, const Scenario& s, const RunBo
 }
 
 std::string cell_header() {
-  return ",cell_x,cell_y,cell_strain_rate_x,cell_strain_rate_y";
+  return ",cell_x,cell_y,cell_strain_rate_x,cell_strain_rate_y,cell_shear_rate,cell_shear_strain";
 }
 
 std::string cell_columns(const Simulation& sim) {
@@ -125,7 +125,8 @@ std::string cell_columns(const Simulation& sim) {
   if (c == nullptr) return "";
   const Domain& d = sim.world().domain;
   const Vec2 size = d.size(), rate = cell_strain_rate(*c, d);
-  return fmt::format(",{:.9e},{:.9e},{:.6e},{:.6e}", size.x, size.y, rate.x, rate.y);
+  return fmt::format(",{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.9e}", size.x, size.y, rate.x, rate.y,
+                     c->shear_rate, c->shear_strain);
 }
 
 Vec2 group_force(const Simulation& sim, const DriverTargets& g) {

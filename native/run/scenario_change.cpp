@@ -33,7 +33,7 @@ Scenario with_changeable_of(Scenario s, const Scenario& like) {
     d.force = l.force, d.stress = l.stress, d.max_speed = l.max_speed, d.relaxation = l.relaxation;
     d.slide_speed = l.slide_speed;
     d.strain_rate = l.strain_rate, d.pressure = l.pressure;
-    d.max_strain_rate = l.max_strain_rate;
+    d.max_strain_rate = l.max_strain_rate, d.shear_rate = l.shear_rate;
   }
   s.output.thermo_interval = like.output.thermo_interval;
   s.output.snapshot_interval = like.output.snapshot_interval;
@@ -48,7 +48,8 @@ bool same_motion(const DriverSection& a, const DriverSection& b) {
          a.direction == b.direction && a.centre == b.centre && a.force == b.force &&
          a.stress == b.stress && a.max_speed == b.max_speed && a.relaxation == b.relaxation &&
          a.slide_speed == b.slide_speed && a.strain_rate == b.strain_rate &&
-         a.pressure == b.pressure && a.max_strain_rate == b.max_strain_rate;
+         a.pressure == b.pressure && a.max_strain_rate == b.max_strain_rate &&
+         a.shear_rate == b.shear_rate;
 }
 
 // A driver whose motion changed starts its new motion from where its targets are now: no jump

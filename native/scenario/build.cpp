@@ -49,7 +49,8 @@ Motion motion_of(const DriverSection& d) {
     return Cell{.strain_rate = d.strain_rate,
                 .pressure = d.pressure,
                 .max_strain_rate = d.max_strain_rate,
-                .relaxation = d.relaxation};
+                .relaxation = d.relaxation,
+                .shear_rate = d.shear_rate};
   if (d.type == "servo")
     return Servo{.direction = d.direction,
                  .force = d.force,

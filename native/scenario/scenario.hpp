@@ -123,6 +123,7 @@ struct DriverSection {
   Vec2 strain_rate{};            ///< cell: 1/s, the rate mode's d(ln L)/dt along x and y
   double pressure = 0.0;         ///< cell: N/m, the pressure mode's target (0: rate mode)
   double max_strain_rate = 0.0;  ///< cell: 1/s, the pressure mode's fastest rate
+  double shear_rate = 0.0;       ///< cell: 1/s, dv_x/dy of the Lees-Edwards images (0: none)
 };
 
 struct TrackSection {

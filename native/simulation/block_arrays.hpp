@@ -36,15 +36,18 @@ struct BlockArrays {
   const ImageShift* images;
   const std::uint8_t* row_in_stretch; ///< NeighbourList::entry_row
   double* history;
-  PairForce* slots; ///< the deferred pair forces
-  Vec2 box;         ///< the domain's size, for periodic images
+  PairForce* slots;      ///< the deferred pair forces
+  Vec2 box;              ///< the domain's size, for periodic images
+  double shear_offset;   ///< m: Domain::shear_offset, the images across y along x
+  double shear_velocity; ///< m/s: Domain::shear_velocity, their velocity along x
 
-  BlockArrays(Particles& particles, NeighbourList& list, PairForce* deferred, Vec2 domain_size)
+  BlockArrays(Particles& particles, NeighbourList& list, PairForce* deferred, const Domain& d)
       : p(particles), position(p.position.data()), radius(p.radius.data()), mass(p.mass.data()),
         velocity(p.velocity.data()), spin(p.angular_velocity.data()), material(p.material.data()),
         kind(p.kind.data()), offset(list.row_offset.data()), neighbour(list.neighbour.data()),
         images(list.image.data()), row_in_stretch(list.entry_row.data()),
-        history(list.history.data()), slots(deferred), box(domain_size) {}
+        history(list.history.data()), slots(deferred), box(d.size()), shear_offset(d.shear_offset),
+        shear_velocity(d.shear_velocity) {}
 };
 
 } // namespace talus

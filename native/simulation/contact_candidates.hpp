@@ -47,7 +47,7 @@ template <bool History>
   Vec2 rj = a.position[j];
   const ImageShift image = a.images[e];
   if (image.sx != 0 || image.sy != 0) [[unlikely]] // across a periodic boundary
-    rj += Vec2{image.sx * a.box.x, image.sy * a.box.y};
+    rj += Vec2{image.sx * a.box.x + image.sy * a.shear_offset, image.sy * a.box.y};
   const Vec2 d = a.position[i] - rj;
   const double dist2 = norm2(d);
   const double reach = a.radius[i] + a.radius[j];

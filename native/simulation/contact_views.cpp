@@ -20,9 +20,10 @@ void Simulation::for_each_contact(const std::function<void(const ContactView&)>&
       v.i = i;
       v.j = j;
       v.wall = -1;
-      v.geometry = pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i],
-                                 p.mass[j], p.velocity[i], p.velocity[j], p.angular_velocity[i],
-                                 p.angular_velocity[j], true, shares);
+      v.geometry =
+          pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j],
+                        p.velocity[i], p.velocity[j] + list_.image_velocity(e, world_.domain),
+                        p.angular_velocity[i], p.angular_velocity[j], true, shares);
       v.parameters = &pairs_(p.material[i], p.material[j]);
       v.history = list_.keeps_history ? list_.history[e] : 0.0;
       v.rolling = list_.keeps_rolling ? list_.rolling[e] : 0.0;

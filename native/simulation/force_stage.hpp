@@ -88,7 +88,9 @@ private:
                  const Done& done, int threads, const StepFeatures& features);
   /// Block b's rows: starts their forces (unless started), then each stretch's touch test, pair
   /// pass and `done` for the particles that are complete. Returns the worst overlap ratio.
-  template <class N, class T, class S, class Done>
+  /// `Sliding`: Lees-Edwards images move (pair_pass.hpp), a copy of its own so that the step
+  /// without them keeps its code as it was.
+  template <class N, class T, class S, bool Sliding, class Done>
   double block(BlockArrays& a, const NeighbourList& list, const PairLaneSource& pairs,
                std::ptrdiff_t b, bool refresh, bool started, Vec2 gravity, const Done& done,
                PassReport& report);

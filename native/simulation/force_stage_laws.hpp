@@ -76,14 +76,17 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
   bool finite = true;
 #pragma omp parallel num_threads(threads) reduction(max : worst, farthest2) reduction(&& : finite)
   {
-    BlockArrays a(p, list, deferred_.data(), world.domain.size());
+    BlockArrays a(p, list, deferred_.data(), world.domain);
     PassReport report{true, 0.0};
 #pragma omp for schedule(dynamic, 1) nowait
     for (std::ptrdiff_t taken = 0; taken < blocks; ++taken) {
       const std::ptrdiff_t b = schedule_.block(taken);
       const auto start = BlockSchedule::Clock::now();
-      worst = std::max(
-          worst, block<N, T, S>(a, list, lanes, b, refresh, started, world.gravity, done, report));
+      worst = std::max(worst, a.shear_velocity != 0.0
+                                  ? block<N, T, S, true>(a, list, lanes, b, refresh, started,
+                                                         world.gravity, done, report)
+                                  : block<N, T, S, false>(a, list, lanes, b, refresh, started,
+                                                          world.gravity, done, report));
       schedule_.record(b, start);
     }
     thread_local std::vector<WallHit> hits; // kept from step to step: no allocation in a step
@@ -115,7 +118,7 @@ PassReport ForceStage::run(World& world, NeighbourList& list, const PairTable& p
 // every entry and branches. Once a stretch's rows are done, the forces of its particles are
 // complete (rows after them never name them), but for the late ones (NeighbourList::late): they
 // are done by runs between late ones.
-template <class N, class T, class S, class Done>
+template <class N, class T, class S, bool Sliding, class Done>
 double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLaneSource& pairs,
                          std::ptrdiff_t b, bool refresh, bool started, Vec2 gravity,
                          const Done& done, PassReport& report) {
@@ -146,8 +149,8 @@ double ForceStage::block(BlockArrays& a, const NeighbourList& list, const PairLa
         refresh ? touching_choosing_candidates<S::history>(a, candidates_, r0, r1, last, slot, kept,
                                                            touching.data())
                 : touching_candidates<S::history>(a, candidates_, r0, kept, touching.data());
-    worst =
-        std::max(worst, pair_forces<N, T, S>(a, pairs, touching.data(), count, r0, dt_, share_));
+    worst = std::max(
+        worst, pair_forces<N, T, S, Sliding>(a, pairs, touching.data(), count, r0, dt_, share_));
     for (std::ptrdiff_t k = r0; k < r1;) { // runs of rows between late ones
       const std::ptrdiff_t z = next_late != list.late.end() && *next_late < r1 ? *next_late : r1;
       if (z > k) {

@@ -35,12 +35,15 @@ private:
 /// The forces of found[0, count) (touching entries of the stretch from row r0), c0 in lane 0 and
 /// c1 in lane 1; an odd last contact fills both lanes, in a step of shape S (step_features.hpp),
 /// with the lever arms short of the radii by `shares` of the overlap.
-/// Returns the largest overlap / smaller radius.
-template <class N, class T, class S>
+/// Returns the largest overlap / smaller radius. `Sliding`: the domain's Lees-Edwards images move
+/// (Domain::shear_velocity), which a partner across y then has in its velocity; a step without
+/// them is compiled without the test.
+template <class N, class T, class S, bool Sliding>
 [[gnu::always_inline]] inline double pair_forces(const BlockArrays& a, const PairLaneSource& pairs,
                                                  const TouchingEntry* found, std::size_t count,
                                                  std::ptrdiff_t r0, double dt, LeverShares shares) {
   double worst = 0.0;
+  const double slide = a.shear_velocity;
   for (std::size_t t = 0; t < count; t += 2) {
     const TouchingEntry& c0 = found[t];
     const bool two = t + 1 < count;
@@ -54,11 +57,14 @@ template <class N, class T, class S>
     // without rotation every angular velocity is 0: nothing to load
     const Lanes wi = S::rotation ? Lanes{a.spin[i0], a.spin[i1]} : Lanes{};
     const Lanes wj = S::rotation ? Lanes{a.spin[j0], a.spin[j1]} : Lanes{};
+    Lanes vjx{a.velocity[j0].x, a.velocity[j1].x};
+    if constexpr (Sliding) // j's image across a Lees-Edwards side
+      vjx += Lanes{a.images[c0.entry].sy * slide, a.images[c1.entry].sy * slide};
     const ContactLanes g = pair_geometry(
         dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{a.mass[i0], a.mass[i1]},
         Lanes{a.mass[j0], a.mass[j1]}, Lanes{a.velocity[i0].x, a.velocity[i1].x},
-        Lanes{a.velocity[i0].y, a.velocity[i1].y}, Lanes{a.velocity[j0].x, a.velocity[j1].x},
-        Lanes{a.velocity[j0].y, a.velocity[j1].y}, wi, wj, N::uses_r_eff || T::uses_r_eff, shares);
+        Lanes{a.velocity[i0].y, a.velocity[i1].y}, vjx, Lanes{a.velocity[j0].y, a.velocity[j1].y},
+        wi, wj, N::uses_r_eff || T::uses_r_eff, shares);
     // a law without history neither reads nor changes the springs: not loaded, not stored
     Lanes spring{};
     if constexpr (T::has_history) spring = Lanes{a.history[c0.entry], a.history[c1.entry]};

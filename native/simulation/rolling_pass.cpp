@@ -42,9 +42,10 @@ void pair_torques(World& world, NeighbourList& list, const PairTable& pairs, dou
         theta = 0.0;
         continue;
       }
-      const ContactGeometry g = pair_geometry(
-          d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j], p.velocity[i],
-          p.velocity[j], p.angular_velocity[i], p.angular_velocity[j], true, shares);
+      const ContactGeometry g =
+          pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i], p.mass[j],
+                        p.velocity[i], p.velocity[j] + list.image_velocity(e, world.domain),
+                        p.angular_velocity[i], p.angular_velocity[j], true, shares);
       const RollingKinematics k = rolling_kinematics(world, i, j, -1);
       const double m = RollingLaw::torque<N>(pair, g, not_below_zero(N::force(pair, g)), k.spin,
                                              k.inertia, theta, dt);

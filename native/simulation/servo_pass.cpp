@@ -95,7 +95,8 @@ void Simulation::read_servo_particles(std::vector<ServoReading>& reading) {
         if (dist2 >= reach * reach || dist2 == 0.0) continue;
         read_contact<N>(reading[static_cast<std::size_t>(k)], pairs_(p.material[i], p.material[j]),
                         pair_geometry(d, std::sqrt(dist2), p.radius[i], p.radius[j], p.mass[i],
-                                      p.mass[j], p.velocity[i], p.velocity[j],
+                                      p.mass[j], p.velocity[i],
+                                      p.velocity[j] + list_.image_velocity(e, world_.domain),
                                       p.angular_velocity[i], p.angular_velocity[j], true, shares));
       }
   });

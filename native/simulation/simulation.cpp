@@ -112,6 +112,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     attach(d, world_);
     apply(d, 0.0, world_.particles, world_.walls);
   }
+  start_cell_shear();
   rebuild_list(1);
   forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_,
                   features_);
@@ -263,6 +264,7 @@ void Simulation::correct(bool fuse, const PassReport& forces) {
 }
 
 void Simulation::rebuild_list(int threads) {
+  reduce_shear_offset();
   try {
     build_neighbour_list(list_, world_.particles, world_.walls, world_.domain, next_skin(),
                          threads);

@@ -7,19 +7,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <set>
 #include <utility>
 
 #include "analysis/stress.hpp"
-#include "core/random.hpp"
 #include "io/checkpoint.hpp"
 #include "simulation/simulation.hpp"
+#include "support/cell_gas.hpp"
+#include "support/contact_check.hpp"
 #include "support/state_hash.hpp"
 
 namespace talus {
 namespace {
 
+using testing::listed_contacts;
+using testing::spring_forces;
 using testing::state_hash;
+using testing::touching_pairs;
 
 constexpr double side = 0.3; // m, the box at the start
 
@@ -27,57 +30,16 @@ constexpr double side = 0.3; // m, the box at the start
 // at up to `speed` m/s, with the linear law's damping rate (1/s), and a cell driver with `cell`'s
 // keys.
 World gas(int per_row, double speed, double friction, Cell cell, double damping_rate = 50.0) {
-  World w;
-  Material m;
-  m.density = 2650.0;
-  m.normal_stiffness = 1.0e5;
-  m.normal_damping_rate = damping_rate;
-  m.friction = friction;
-  w.materials = {m};
-  w.gravity = {0.0, 0.0};
-  w.domain = {{0.0, 0.0}, {side, side}, true, true};
-  RandomStream rng(11, 1);
-  const double pitch = side / per_row;
-  for (int y = 0; y < per_row; ++y)
-    for (int x = 0; x < per_row; ++x)
-      w.add_particle({.position = {pitch * (x + 0.5) + 0.1 * pitch * (rng.uniform() - 0.5),
-                                   pitch * (y + 0.5) + 0.1 * pitch * (rng.uniform() - 0.5)},
-                      .radius = 0.004 + 0.002 * rng.uniform(),
-                      .velocity = {speed * (rng.uniform() - 0.5), speed * (rng.uniform() - 0.5)}});
-  Driver d;
-  d.motion = cell;
-  w.drivers.push_back(d);
-  return w;
+  return testing::cell_gas({.per_row = per_row,
+                            .side = side,
+                            .speed = speed,
+                            .friction = friction,
+                            .damping_rate = damping_rate},
+                           cell);
 }
 
 SimulationConfig config(double friction, int threads = 1) {
-  SimulationConfig c;
-  c.timestep = 1e-5; // the contact time is about 2 ms
-  c.tangential_law = friction > 0.0 ? law_id<CundallStrack> : law_id<Frictionless>;
-  c.threads = threads;
-  c.min_particles_per_thread = 1;
-  return c;
-}
-
-// The touching pairs by brute force: every pair at its nearest periodic image, by id.
-std::set<std::pair<std::uint32_t, std::uint32_t>> touching_pairs(const Simulation& s) {
-  const Particles& p = s.world().particles;
-  const Domain& d = s.world().domain;
-  std::set<std::pair<std::uint32_t, std::uint32_t>> out;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j)
-      if (norm(d.minimum_image(p.position[i], p.position[j])) < p.radius[i] + p.radius[j])
-        out.emplace(std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j]));
-  return out;
-}
-
-std::set<std::pair<std::uint32_t, std::uint32_t>> listed_contacts(const Simulation& s) {
-  const Particles& p = s.world().particles;
-  std::set<std::pair<std::uint32_t, std::uint32_t>> out;
-  s.for_each_contact([&](const ContactView& v) {
-    out.emplace(std::min(p.id[v.i], p.id[v.j]), std::max(p.id[v.i], p.id[v.j]));
-  });
-  return out;
+  return testing::cell_config(friction, threads);
 }
 
 // Grains at rest that never meet: after n steps the box's sides are L0 exp(rate t) and every
@@ -102,21 +64,6 @@ TEST(DeformingCell, ARateScalesTheBoxAndTheGrainsAffinely) {
   }
   EXPECT_LT(worst, 1e-12 * side);
   EXPECT_NEAR(s.cell_driver()->strain.x, rate.x * t, 1e-12);
-}
-
-// Each free grain's force by brute force: k_n times the overlap, along the branch, from every
-// grain it touches at the nearest periodic image (undamped frictionless linear springs).
-std::vector<Vec2> spring_forces(const Simulation& s, double k) {
-  const Particles& p = s.world().particles;
-  const Domain& d = s.world().domain;
-  std::vector<Vec2> f(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = 0; j < p.size(); ++j) {
-      const Vec2 dij = d.minimum_image(p.position[i], p.position[j]);
-      const double dist = norm(dij), overlap = p.radius[i] + p.radius[j] - dist;
-      if (j != i && overlap > 0.0) f[i] += (k * overlap / dist) * dij;
-    }
-  return f;
 }
 
 // Grains at rest squeezed from a packing fraction of 0.3 to 0.7 in 0.012 s (in six contact

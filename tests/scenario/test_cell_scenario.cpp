@@ -114,8 +114,9 @@ TEST(CellScenario, BadCellsAreRefusedWithTheKey) {
   };
   const std::string head = std::string(gas) + "[[drivers]]\ntype = \"cell\"\n";
   refused(head + "target = \"walls\"\nstrain_rate = [-1, -1]\n", "no target");
-  refused(head, "strain_rate = [x, y] (1/s) or pressure");
-  refused(head + "strain_rate = [-1, -1]\npressure = 10.0\n", "one of them");
+  refused(head, "strain_rate = [x, y] (1/s), pressure (N/m) or shear_rate");
+  refused(head + "shear_rate = 1.0\nstrain_rate = [1, 0]\n", "keeps its width");
+  refused(head + "strain_rate = [-1, -1]\npressure = 10.0\n", "not both");
   refused(head + "pressure = 10.0\n", "max_strain_rate");
   refused(head + "strain_rate = [-1, -1]\nmax_strain_rate = 1.0\n", "only a cell held");
   refused(head + "pressure = 10.0\nmax_strain_rate = 1.0\nrelaxation = 2.0\n", "relaxation");

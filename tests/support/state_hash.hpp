@@ -7,7 +7,8 @@
 namespace talus::testing {
 
 /// FNV-1a over the raw bytes of every evolving field: positions, velocities, spins, forces, the
-/// springs of the list's pair and wall contacts, and the box (which a deforming cell changes).
+/// springs of the list's pair and wall contacts, and the box (which a deforming cell changes) with
+/// its Lees-Edwards offset.
 inline std::uint64_t state_hash(const Simulation& s) {
   std::uint64_t h = 1469598103934665603ULL;
   const auto mix = [&h](const void* data, std::size_t bytes) {
@@ -24,6 +25,7 @@ inline std::uint64_t state_hash(const Simulation& s) {
   const Domain& box = s.world().domain;
   mix(&box.lo, sizeof box.lo);
   mix(&box.hi, sizeof box.hi);
+  if (box.sheared()) mix(&box.shear_offset, sizeof box.shear_offset); // Lees-Edwards
   return h;
 }
 

@@ -38,16 +38,22 @@ void read_cell(TableReader& r, DriverSection& d) {
   d.strain_rate = r.vec2("strain_rate", d.strain_rate);
   d.pressure = r.number("pressure", 0.0, 1e-300, inf, "> 0 N/m");
   d.max_strain_rate = r.number("max_strain_rate", 0.0, 1e-300, inf, "> 0 1/s");
+  d.shear_rate = r.number("shear_rate", 0.0, -inf, inf, "1/s");
   if (d.type != "cell") {
-    for (const char* key : {"strain_rate", "pressure", "max_strain_rate"})
+    for (const char* key : {"strain_rate", "pressure", "max_strain_rate", "shear_rate"})
       if (r.has(key)) r.fail(key, "only a cell driver has it (this one is " + d.type + ")");
     return;
   }
   d.target = "";
   if (r.has("target"))
     r.fail("target", "a cell driver moves the periodic box and every grain with it: no target");
-  if (r.has("strain_rate") == r.has("pressure"))
-    r.fail("strain_rate", "a cell needs strain_rate = [x, y] (1/s) or pressure (N/m), one of them");
+  if (r.has("strain_rate") && r.has("pressure"))
+    r.fail("strain_rate", "a cell takes strain_rate = [x, y] (1/s) or pressure (N/m), not both");
+  if (!r.has("strain_rate") && !r.has("pressure") && !r.has("shear_rate"))
+    r.fail("strain_rate", "a cell needs strain_rate = [x, y] (1/s), pressure (N/m) or "
+                          "shear_rate (1/s)");
+  if (r.has("shear_rate") && d.strain_rate.x != 0.0)
+    r.fail("strain_rate", "a sheared cell keeps its width: strain_rate = [0, y]");
   if (r.has("pressure") && !r.has("max_strain_rate"))
     r.fail("max_strain_rate", "a cell held at a pressure needs it: its fastest strain rate, 1/s "
                               "(slow enough for the grains to follow: a quasi-static compression)");

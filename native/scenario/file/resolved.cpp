@@ -182,6 +182,7 @@ toml::array drivers_array(const std::vector<DriverSection>& drivers) {
       } else {
         t.insert("strain_rate", vec(d.strain_rate));
       }
+      if (d.shear_rate != 0.0) t.insert("shear_rate", d.shear_rate);
       out.push_back(std::move(t));
       continue;
     }

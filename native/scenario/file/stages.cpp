@@ -46,10 +46,11 @@ constexpr std::array<std::string_view, 12> changeable_settings{"simulation.gravi
                                                                "output.track_interval",
                                                                "output.checkpoint_interval"};
 // a driver's motion (not its type or target)
-constexpr std::array<std::string_view, 15> changeable_driver_keys{
-    "velocity",   "angular_velocity", "amplitude",   "frequency", "phase",
-    "direction",  "centre",           "force",       "stress",    "max_speed",
-    "relaxation", "slide_speed",      "strain_rate", "pressure",  "max_strain_rate"};
+constexpr std::array<std::string_view, 16> changeable_driver_keys{
+    "velocity",    "angular_velocity", "amplitude",       "frequency",
+    "phase",       "direction",        "centre",          "force",
+    "stress",      "max_speed",        "relaxation",      "slide_speed",
+    "strain_rate", "pressure",         "max_strain_rate", "shear_rate"};
 
 // Whether key is PREFIX.N.NAME with N a number, and NAME then.
 bool indexed(const std::string& key, std::string_view prefix, std::string& name) {
