@@ -40,8 +40,29 @@ struct RheologyPoint {
   double friction = 0.0, friction_error = 0.0;         ///< mu = |sigma_xy| / sigma_yy
   double packing = 0.0, packing_error = 0.0;           ///< phi
   double inertial = 0.0, inertial_error = 0.0;         ///< I
+  /// 1/s: in a sheared cell, the slope of v_x over y of the grains in the snapshots (the
+  /// shear_rate is then the cell's): equal within its error where the shear is uniform
+  double profile_shear_rate = 0.0, profile_shear_rate_error = 0.0;
   std::size_t frames = 0;
 };
+
+/// One row of a sheared cell's thermo.csv (Lees-Edwards, drivers.hpp Cell): the cell's stress
+/// (N/m, kinetic part included), packing fraction and shear rate.
+struct CellShearRow {
+  double time = 0.0;
+  double shear_stress = 0.0;  ///< (sigma_xy + sigma_yx) / 2
+  double normal_stress = 0.0; ///< sigma_yy
+  double packing = 0.0;
+  double shear_rate = 0.0; ///< 1/s: the cell's
+};
+
+/// Simple shear in a sheared cell: every grain is in the bulk, so the means over the rows in
+/// `blocks` consecutive blocks (with their standard errors) of mu = |sigma_xy| / sigma_yy, phi,
+/// and I from the cell's shear rate, with the grains' scale from `scale`; the snapshots' own
+/// velocity profile (profile_shear_rate) checks that the shear is uniform. Not measured (why_not)
+/// with fewer rows or frames than blocks.
+RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
+                                  const std::vector<Frame>& frames, std::size_t blocks);
 
 /// The free grains' mean diameter (m) and their mass over their area (kg/m^2) in one frame.
 struct GrainScale {

@@ -34,6 +34,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     janssen) short=(--set particles.count=300 --set geometry.height=0.3 --set packing.settle_max_time=0.2
                     --set stages.0.duration=0.02 --set stages.1.duration=0.03) ;;
     shear) short=(--set simulation.duration=0.6) ;;
+    simple_shear) short=(--set simulation.duration=0.6) ;;
     chute) short=(--set simulation.duration=0.4) ;;
     chute_stop) short=(--set particles.count=100 --set stages.0.duration=0.2 --set stages.1.duration=0.2) ;;
     *) fail "no short version in $0" ;;
@@ -59,7 +60,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     heap) [ -s "$run/analysis/repose.json" ] || fail "no repose.json" ;;
     janssen) [ -s "$run/analysis/janssen.json" ] || fail "no janssen.json" ;;
     jamming) [ -s "$run/analysis/jamming.json" ] || fail "no jamming.json" ;;
-    shear) [ -s "$run/analysis/rheology.json" ] || fail "no rheology.json" ;;
+    shear|simple_shear) [ -s "$run/analysis/rheology.json" ] || fail "no rheology.json" ;;
     chute) [ -s "$run/analysis/chute.json" ] || fail "no chute.json" ;;
     frost_heave|frost_front) [ -s "$run/analysis/frost.csv" ] || fail "no analysis/frost.csv"
                  [ "$(wc -l < "$run/frost.csv")" -ge 2 ] || fail "no freeze in frost.csv" ;;

@@ -136,6 +136,9 @@ TEST(LammpsExport, RefusesWhatLammpsCannotExpress) {
                         "' are a convention of LAMMPS' own granular styles"),
               std::string::npos);
   EXPECT_EQ(refusal("collisions", {}), "(not refused)");
+  // a sheared cell is a tilted box in LAMMPS, which the export does not write
+  EXPECT_NE(refusal("simple_shear", {}).find("fix deform 1 xy erate"), std::string::npos)
+      << refusal("simple_shear", {});
 }
 
 // The shaken silo with segment walls: each vibrating segment with its driver's direction,

@@ -95,11 +95,13 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     // a silo at rest: the wall stress against depth
     if (s.geometry.builder == "silo" && s.geometry.orifice == 0.0 && !driven)
       attempt("janssen", [&] { return analyze_janssen(run, o); });
-    // a layer sheared by a sliding servo plate: its rheology
+    // a layer sheared by a sliding servo plate, or a sheared cell: its rheology
     const bool shear = std::any_of(s.drivers.begin(), s.drivers.end(), [](const DriverSection& d) {
       return d.type == "servo" && d.slide_speed != 0.0;
     });
-    if (shear && s.geometry.periodic == "x")
+    const bool sheared = std::any_of(s.drivers.begin(), s.drivers.end(),
+                                     [](const DriverSection& d) { return d.shear_rate != 0.0; });
+    if ((shear && s.geometry.periodic == "x") || (sheared && s.output.stress))
       attempt("rheology", [&] { return analyze_rheology(run, o); });
     // a layer periodic along a tilted slope: a chute
     if (!servo && s.geometry.periodic == "x" && s.simulation.gravity.x != 0.0)

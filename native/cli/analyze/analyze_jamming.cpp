@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "cli/analyze/analyses.hpp"
+#include "cli/analyze/csv_rows.hpp"
 #include "io/checkpoint.hpp"
 #include "post/jamming.hpp"
 
@@ -17,48 +18,16 @@ namespace talus::cli {
 
 namespace {
 
-// The fields of a CSV line, double quotes around a field that holds commas ("" is a quote).
-std::vector<std::string> csv_fields(const std::string& line) {
-  std::vector<std::string> out(1);
-  bool quoted = false;
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const char c = line[k];
-    if (c == '"' && quoted && k + 1 < line.size() && line[k + 1] == '"')
-      out.back() += '"', ++k;
-    else if (c == '"')
-      quoted = !quoted;
-    else if (c == ',' && !quoted)
-      out.emplace_back();
-    else
-      out.back() += c;
-  }
-  return out;
-}
+using Rows = std::vector<CsvRow>;
 
-using Rows = std::vector<std::map<std::string, std::string>>;
-
-// A CSV file's rows, each field under its column's name.
 Rows read_rows(const fs::path& file) {
-  if (!fs::exists(file)) throw InvalidArgument("jamming: " + file.string() + " is missing");
-  std::istringstream in(read_file(file.string()));
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = csv_fields(line);
-  Rows rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> f = csv_fields(line);
-    auto& row = rows.emplace_back();
-    for (std::size_t k = 0; k < header.size() && k < f.size(); ++k) row[header[k]] = f[k];
-  }
-  return rows;
+  return read_csv_rows(file, "jamming");
 }
 
-double number(const std::map<std::string, std::string>& row, const std::string& key) {
-  const auto it = row.find(key);
-  if (it == row.end())
-    throw InvalidArgument("jamming: thermo.csv has no column '" + key +
-                          "' (the run needs output.stress = true and a stress_region)");
-  return std::stod(it->second);
+double number(const CsvRow& row, const std::string& key) {
+  return csv_value(row, key, "jamming", "thermo.csv",
+                   "the run needs output.stress = true and a "
+                   "stress_region");
 }
 
 // Each stage's means over its last quarter, and how near rest its last row came.

@@ -1,12 +1,14 @@
 // `talus analyze DIR rheology`: the friction coefficient, packing fraction and inertial number of
 // a steady plane shear flow between rough walls (post/rheology.hpp), with the profiles across the
-// layer they come from.
+// layer they come from, or of simple shear in a sheared (Lees-Edwards) cell, from the cell's own
+// stress.
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
 
 #include "cli/analyze/analyses.hpp"
+#include "cli/analyze/csv_rows.hpp"
 #include "io/checkpoint.hpp"
 #include "post/rheology.hpp"
 
@@ -16,12 +18,43 @@ namespace talus::cli {
 
 namespace {
 
+// Whether the run is simple shear in a sheared cell (a cell driver with a shear rate).
+bool sheared_cell(const Scenario& s) {
+  for (const DriverSection& d : s.drivers)
+    if (d.type == "cell" && d.shear_rate != 0.0) return true;
+  return false;
+}
+
+// The sheared cell's rows of thermo.csv from `from` on.
+std::vector<CellShearRow> cell_rows(RunData& run, double from) {
+  const std::string needs = "a sheared cell's run needs output.stress = true";
+  std::vector<CellShearRow> out;
+  for (const CsvRow& row : read_csv_rows(run.dir() / "thermo.csv", "rheology")) {
+    const auto value = [&](const char* key) {
+      return csv_value(row, key, "rheology", "thermo.csv", needs);
+    };
+    if (value("time") < from) continue;
+    out.push_back({.time = value("time"),
+                   .shear_stress = 0.5 * (value("stress_xy") + value("stress_yx")),
+                   .normal_stress = value("stress_yy"),
+                   .packing = value("packing_fraction"),
+                   .shear_rate = value("cell_shear_rate")});
+  }
+  return out;
+}
+
+RheologyPoint cell_point(RunData& run, const AnalysisOptions& a) {
+  const double from = steady_from(run, a);
+  return cell_rheology_point(cell_rows(run, from), run.frames(from), RheologyOptions{}.blocks);
+}
+
 RheologyOptions options_of(RunData& run, const AnalysisOptions& a) {
   const Scenario& s = run.scenario();
   if (s.geometry.periodic != "x")
     throw InvalidArgument("rheology: needs a layer periodic along x (geometry.periodic = \"x\") "
                           "sheared between wall grains below and above it, as the built-in "
-                          "shear; this run's geometry.periodic is \"" +
+                          "shear, or a sheared cell (a cell driver with a shear_rate), as the "
+                          "built-in simple_shear; this run's geometry.periodic is \"" +
                           s.geometry.periodic + "\"");
   RheologyOptions o;
   o.kernel = parse_cg_kernel(a.kernel);
@@ -52,15 +85,20 @@ std::string profile_csv(const std::vector<Frame>& frames, const RheologyOptions&
 
 std::string point_text(const RheologyPoint& r) {
   if (!r.measured) return "not measured: " + r.why_not;
+  const std::string profile = r.profile_shear_rate != 0.0
+                                  ? fmt::format(", the grains' profile {:.4g} +- {:.2g} 1/s",
+                                                r.profile_shear_rate, r.profile_shear_rate_error)
+                                  : "";
   return fmt::format("I = {:.4f} +- {:.4f}, mu = {:.4f} +- {:.4f}, phi = {:.4f} +- {:.4f} "
-                     "(shear rate {:.4g} 1/s, pressure {:.4g} N/m)",
+                     "(shear rate {:.4g} 1/s{}, pressure {:.4g} N/m)",
                      r.inertial, r.inertial_error, r.friction, r.friction_error, r.packing,
-                     r.packing_error, r.shear_rate, r.pressure);
+                     r.packing_error, r.shear_rate, profile, r.pressure);
 }
 
 } // namespace
 
 RheologyPoint run_rheology(RunData& run, const AnalysisOptions& a) {
+  if (sheared_cell(run.scenario())) return cell_point(run, a);
   const RheologyOptions o = options_of(run, a);
   return rheology_point(run.frames_with_contacts(steady_from(run, a)), o);
 }
@@ -71,17 +109,37 @@ std::string rheology_json(const RheologyPoint& r) {
       "\"bulk_lo\": {}, \"bulk_hi\": {}, \"diameter\": {}, \"grain_density\": {}, "
       "\"shear_rate\": {}, \"shear_rate_error\": {}, \"pressure\": {}, \"pressure_error\": {}, "
       "\"shear_stress\": {}, \"shear_stress_error\": {}, \"friction\": {}, \"friction_error\": {}, "
-      "\"packing\": {}, \"packing_error\": {}, \"inertial\": {}, \"inertial_error\": {}}}",
+      "\"packing\": {}, \"packing_error\": {}, \"inertial\": {}, \"inertial_error\": {}, "
+      "\"profile_shear_rate\": {}, \"profile_shear_rate_error\": {}}}",
       r.measured, r.why_not, r.frames, json_number(r.base), json_number(r.plate),
       json_number(r.bulk_lo), json_number(r.bulk_hi), json_number(r.diameter),
       json_number(r.grain_density), json_number(r.shear_rate), json_number(r.shear_rate_error),
       json_number(r.pressure), json_number(r.pressure_error), json_number(r.shear_stress),
       json_number(r.shear_stress_error), json_number(r.friction), json_number(r.friction_error),
       json_number(r.packing), json_number(r.packing_error), json_number(r.inertial),
-      json_number(r.inertial_error));
+      json_number(r.inertial_error), json_number(r.profile_shear_rate),
+      json_number(r.profile_shear_rate_error));
+}
+
+// A sheared cell: its numbers, no profile (every grain is in the bulk).
+Section analyze_cell_rheology(RunData& run, const AnalysisOptions& a) {
+  const RheologyPoint r = cell_point(run, a);
+  write_file_atomically((run.out() / "rheology.json").string(), rheology_json(r) + "\n");
+  Section s{"Rheology of the simple shear", {}, {}, {}};
+  s.summary = fmt::format(
+      "Simple shear in a sheared (Lees-Edwards) cell from t = {:.3g} s on: mu = |sigma_xy| / "
+      "sigma_yy and the packing fraction of the whole cell (thermo.csv, kinetic part included), "
+      "with the inertial number I = gamma_dot d / sqrt(P / rho) (GDR MiDi 2004) from the cell's "
+      "shear rate; errors from {} consecutive blocks. The slope of the grains' own velocity "
+      "profile in the snapshots checks that the shear is uniform.",
+      steady_from(run, a), RheologyOptions{}.blocks);
+  s.numbers = {{"flow", point_text(r)}};
+  fmt::print("rheology: {}\n", point_text(r));
+  return s;
 }
 
 Section analyze_rheology(RunData& run, const AnalysisOptions& a) {
+  if (sheared_cell(run.scenario())) return analyze_cell_rheology(run, a);
   const RheologyOptions o = options_of(run, a);
   const std::vector<Frame> frames = run.frames_with_contacts(steady_from(run, a));
   const RheologyPoint r = rheology_point(frames, o);
