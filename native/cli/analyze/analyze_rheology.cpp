@@ -34,9 +34,11 @@ std::vector<CellShearRow> cell_rows(RunData& run, double from) {
       return csv_value(row, key, "rheology", "thermo.csv", needs);
     };
     if (value("time") < from) continue;
+    // thermo.csv's stress_* are the contact part; the kinetic part counts too
     out.push_back({.time = value("time"),
-                   .shear_stress = 0.5 * (value("stress_xy") + value("stress_yx")),
-                   .normal_stress = value("stress_yy"),
+                   .shear_stress =
+                       0.5 * (value("stress_xy") + value("stress_yx")) + value("kinetic_stress_xy"),
+                   .normal_stress = value("stress_yy") + value("kinetic_stress_yy"),
                    .packing = value("packing_fraction"),
                    .shear_rate = value("cell_shear_rate")});
   }
