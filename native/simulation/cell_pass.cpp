@@ -35,9 +35,11 @@ void Simulation::update_cell_reserve(double max_radius) {
                             std::abs(world_.domain.shear_offset - list_.shear_offset);
 }
 
-void Simulation::start_cell_shear() {
+void Simulation::set_shear_velocity() {
   const Cell* c = cell_driver();
   Domain& d = world_.domain;
+  // the images across y slide at the shear rate times the height; without a cell (a stage took
+  // it away) they stop where they are
   d.shear_velocity = c == nullptr ? 0.0 : c->shear_rate * d.size().y;
 }
 
@@ -55,7 +57,7 @@ bool Simulation::deform_cell() {
   Cell* c = mutable_cell();
   Domain& d = world_.domain;
   if (c == nullptr) {
-    d.shear_velocity = 0.0; // a stage took the cell away: its images stop where they are
+    set_shear_velocity();
     return false;
   }
   const Vec2 rate = cell_strain_rate(*c, d);
@@ -64,8 +66,7 @@ bool Simulation::deform_cell() {
   const Vec2 lo = d.lo, size = d.size();
   d.hi = lo + Vec2{size.x * f.x, size.y * f.y};
   c->strain += dt * rate;
-  // Lees-Edwards: the images across y slide at the shear rate times the height
-  d.shear_velocity = c->shear_rate * d.size().y;
+  set_shear_velocity(); // Lees-Edwards, with the height after the strain
   d.shear_offset += d.shear_velocity * dt;
   c->shear_strain += c->shear_rate * dt;
   // every grain, fixed ones too (a rough wall of glued grains is part of the cell), and the

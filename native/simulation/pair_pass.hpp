@@ -43,7 +43,6 @@ template <class N, class T, class S, bool Sliding>
                                                  const TouchingEntry* found, std::size_t count,
                                                  std::ptrdiff_t r0, double dt, LeverShares shares) {
   double worst = 0.0;
-  const double slide = a.shear_velocity;
   for (std::size_t t = 0; t < count; t += 2) {
     const TouchingEntry& c0 = found[t];
     const bool two = t + 1 < count;
@@ -58,8 +57,10 @@ template <class N, class T, class S, bool Sliding>
     const Lanes wi = S::rotation ? Lanes{a.spin[i0], a.spin[i1]} : Lanes{};
     const Lanes wj = S::rotation ? Lanes{a.spin[j0], a.spin[j1]} : Lanes{};
     Lanes vjx{a.velocity[j0].x, a.velocity[j1].x};
-    if constexpr (Sliding) // j's image across a Lees-Edwards side
-      vjx += Lanes{a.images[c0.entry].sy * slide, a.images[c1.entry].sy * slide};
+    if constexpr (Sliding) { // j's image across a Lees-Edwards side
+      const double u = a.shear_velocity;
+      vjx += Lanes{a.images[c0.entry].sy * u, a.images[c1.entry].sy * u};
+    }
     const ContactLanes g = pair_geometry(
         dx, dy, square_root(dx * dx + dy * dy), ri, rj, Lanes{a.mass[i0], a.mass[i1]},
         Lanes{a.mass[j0], a.mass[j1]}, Lanes{a.velocity[i0].x, a.velocity[i1].x},

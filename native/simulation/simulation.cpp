@@ -112,7 +112,7 @@ Simulation::Simulation(SimulationState state, SimulationConfig config, bool rest
     attach(d, world_);
     apply(d, 0.0, world_.particles, world_.walls);
   }
-  start_cell_shear();
+  set_shear_velocity();
   rebuild_list(1);
   forces_.compute(world_, list_, pairs_, ForceStage::Finish::nothing, drift_bound_, threads_,
                   features_);

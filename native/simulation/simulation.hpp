@@ -221,9 +221,9 @@ private:
   Cell* mutable_cell(); ///< cell_driver(), to change its state
   /// cell_reserve_ from the box now and at the list's build, and the largest radius (m).
   void update_cell_reserve(double max_radius);
-  /// The domain's Lees-Edwards velocity from the cell's shear rate (0 without a cell), for the
-  /// first force stage.
-  void start_cell_shear();
+  /// The domain's Lees-Edwards velocity from the cell's shear rate and the height (0 without a
+  /// cell): before the first force stage and at each step's strain.
+  void set_shear_velocity();
   /// Before a build: the Lees-Edwards offset back into [0, L_x).
   void reduce_shear_offset();
   /// Stage 3: the neighbour list built again if a grain drifted, a held grain was freed, or a

@@ -126,6 +126,9 @@ Section analyze_jamming(RunData& run, const AnalysisOptions& o);
 /// A plane shear flow's mu, phi and I (post/rheology.hpp), from --from or the second half of the
 /// snapshots; throws InvalidArgument for a run that is not periodic along x.
 RheologyPoint run_rheology(RunData& run, const AnalysisOptions& o);
+/// Whether the scenario is simple shear in a sheared cell (a cell driver with a shear_rate),
+/// which the rheology analysis measures from the cell's own stress.
+bool sheared_cell(const Scenario& s);
 /// One point as a JSON object (rheology.json).
 std::string rheology_json(const RheologyPoint& r);
 Section analyze_rheology(RunData& run, const AnalysisOptions& o);

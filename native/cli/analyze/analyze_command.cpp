@@ -99,9 +99,7 @@ std::vector<Section> analyze_all(RunData& run, const AnalysisOptions& o) {
     const bool shear = std::any_of(s.drivers.begin(), s.drivers.end(), [](const DriverSection& d) {
       return d.type == "servo" && d.slide_speed != 0.0;
     });
-    const bool sheared = std::any_of(s.drivers.begin(), s.drivers.end(),
-                                     [](const DriverSection& d) { return d.shear_rate != 0.0; });
-    if ((shear && s.geometry.periodic == "x") || (sheared && s.output.stress))
+    if ((shear && s.geometry.periodic == "x") || (sheared_cell(s) && s.output.stress))
       attempt("rheology", [&] { return analyze_rheology(run, o); });
     // a layer periodic along a tilted slope: a chute
     if (!servo && s.geometry.periodic == "x" && s.simulation.gravity.x != 0.0)

@@ -18,13 +18,6 @@ namespace talus::cli {
 
 namespace {
 
-// Whether the run is simple shear in a sheared cell (a cell driver with a shear rate).
-bool sheared_cell(const Scenario& s) {
-  for (const DriverSection& d : s.drivers)
-    if (d.type == "cell" && d.shear_rate != 0.0) return true;
-  return false;
-}
-
 // The sheared cell's rows of thermo.csv from `from` on.
 std::vector<CellShearRow> cell_rows(RunData& run, double from) {
   const std::string needs = "a sheared cell's run needs output.stress = true";
@@ -98,6 +91,12 @@ std::string point_text(const RheologyPoint& r) {
 }
 
 } // namespace
+
+bool sheared_cell(const Scenario& s) {
+  for (const DriverSection& d : s.drivers)
+    if (d.type == "cell" && d.shear_rate != 0.0) return true;
+  return false;
+}
 
 RheologyPoint run_rheology(RunData& run, const AnalysisOptions& a) {
   if (sheared_cell(run.scenario())) return cell_point(run, a);
