@@ -12,6 +12,7 @@
 
 #include "drivers/drivers.hpp"
 #include "io/checkpoint.hpp"
+#include "io/lammps_stages.hpp"
 #include "scenario/file/load.hpp"
 #include "simulation/rolling_pass.hpp"
 #include "talus/error.hpp"
@@ -54,10 +55,6 @@ std::optional<std::string> refusal(const Scenario& s) {
       return refused("drivers", "a servo driver has no counterpart in fix granthesis/wall; "
                                 "allowed types: vibrate, translate, rotate (docs/lammps.md names "
                                 "LAMMPS' own ways to hold a wall at a load)");
-    if (d.type == "cell" && d.shear_rate != 0.0)
-      return refused("drivers", "a sheared cell (Lees-Edwards) is a tilted box in LAMMPS (a "
-                                "triclinic box with fix deform 1 xy erate R remap v), which "
-                                "talus export does not write; allowed: a cell without shear_rate");
     if (d.type == "cell" && d.pressure > 0.0)
       return refused("drivers", "a cell held at a pressure has no counterpart with the same "
                                 "controller (fix press/berendsen and fix box/relax differ; "
@@ -66,7 +63,7 @@ std::optional<std::string> refusal(const Scenario& s) {
   if (s.frost.model == "front")
     return refused("frost.model", "the freezing front has no LAMMPS style; allowed: none, uniform "
                                   "(fix frost/heave)");
-  return std::nullopt;
+  return cell_and_stages_refusal(s);
 }
 
 // A LAMMPS atom type per (role, material): role 0 the grains, 1 the fixed wall particles, 2 + k
@@ -184,8 +181,10 @@ std::string data_file(const Scenario& s, const BuiltScenario& b, const Typing& t
   std::string out = fmt::format("LAMMPS data file: {}, written by talus export lammps\n\n", s.name);
   out += fmt::format("{} atoms\n{} atom types\n\n", p.size(), t.key_of.size());
   out +=
-      fmt::format("{} {} xlo xhi\n{} {} ylo yhi\n{} {} zlo zhi\n\n", exact(box.lo.x),
-                  exact(box.hi.x), exact(box.lo.y), exact(box.hi.y), exact(-box.z), exact(box.z));
+      fmt::format("{} {} xlo xhi\n{} {} ylo yhi\n{} {} zlo zhi\n", exact(box.lo.x), exact(box.hi.x),
+                  exact(box.lo.y), exact(box.hi.y), exact(-box.z), exact(box.z));
+  // a sheared cell's box is LAMMPS' tilted one, untilted at the start
+  out += shears_in_any_stage(s) ? "0 0 0 xy xz yz\n\n" : "\n";
   // read_data takes a density and makes the mass 4/3 pi r^3 rho; masses.NAME then sets the
   // native engine's masses exactly
   out += "Atoms # sphere\n\n";
@@ -254,10 +253,18 @@ std::string driver_fix(const Driver& d, std::size_t k) {
 std::string deck_header(const Scenario& s, const BuiltScenario& b, const std::string& command) {
   std::string out = fmt::format("# {}: {}\n", s.name, s.description);
   out += "# Written by: " + command + "\n";
-  out += fmt::format(
-      "# Run it here: talus-lmp -in in.{0} (or mpirun -np N talus-lmp -in in.{0}); -var steps K\n"
-      "# runs K steps instead of the whole {1} s, -var snapshot_every K dumps every K steps.\n",
-      s.name, exact(s.simulation.duration));
+  if (s.stages.size() < 2)
+    out +=
+        fmt::format("# Run it here: talus-lmp -in in.{0} (or mpirun -np N talus-lmp -in in.{0}); "
+                    "-var steps K\n# runs K steps instead of the whole {1} s, -var "
+                    "snapshot_every K dumps every K steps.\n",
+                    s.name, exact(s.simulation.duration));
+  else
+    out +=
+        fmt::format("# Run it here: talus-lmp -in in.{0} (or mpirun -np N talus-lmp -in in.{0}): "
+                    "its {1} stages,\n# {2} s, one LAMMPS run each; -var snapshot_every K dumps "
+                    "every K steps.\n",
+                    s.name, s.stages.size(), exact(s.simulation.duration));
   out += fmt::format(
       "# The native scenario's system: its grains after the packing, materials, laws, timestep,\n"
       "# gravity, wall particles, wall segments and drivers. LAMMPS' atom ids are the native\n"
@@ -362,11 +369,6 @@ std::string motion_section(const Scenario& s, const BuiltScenario& b, const Typi
   for (std::size_t k = 0; k < b.world.drivers.size(); ++k)
     if (!t.role_types[2 + k].empty()) out += driver_fix(b.world.drivers[k], k);
   out += walls_section(b, t);
-  for (const Driver& d : b.world.drivers)
-    if (const auto* c = std::get_if<Cell>(&d.motion)) // the box's true strain rate, every atom
-      out += fmt::format("fix cell all deform 1{}{} remap x\n",
-                         b.world.domain.periodic_x ? " x trate " + exact(c->strain_rate.x) : "",
-                         b.world.domain.periodic_y ? " y trate " + exact(c->strain_rate.y) : "");
   return out + "fix plane all enforce2d\n";
 }
 
@@ -402,19 +404,27 @@ std::string deck(const Scenario& s, const BuiltScenario& b, const Typing& t, con
                                : "compute contact_parts grains reduce ave c_contacts f_walls\n"
                                  "variable coordination equal "
                                  "c_contact_parts[1]+c_contact_parts[2]\n";
+  // a cell's stress, its contact part as thermo.csv's stress_xx, stress_yy and stress_yx
+  // (compression positive: LAMMPS' pressure tensor, sum d_a f_b / A with d from j to i)
+  const bool cell = std::ranges::any_of(
+      b.world.drivers, [](const Driver& d) { return std::holds_alternative<Cell>(d.motion); });
+  if (cell) out += "compute contact_stress all pressure NULL virial\n";
   // f_gravity: the grains' potential energy in gravity; f_walls[1]: the walls' work on them
   out += fmt::format(
       "thermo_style custom step time c_grains_ke c_grains_rotation {}coordination "
-      "pe press{}{}{}\n",
+      "pe press{}{}{}{}\n",
       b.world.walls.empty() ? "c_" : "v_", norm(b.world.gravity) > 0.0 ? " f_gravity" : "",
-      b.world.walls.empty() ? "" : " f_walls[1]", s.frost.model == "uniform" ? " f_frost" : "");
+      b.world.walls.empty() ? "" : " f_walls[1]", s.frost.model == "uniform" ? " f_frost" : "",
+      cell ? " c_contact_stress[1] c_contact_stress[2] c_contact_stress[4] vol" : "");
   out += fmt::format("thermo {}\nthermo_modify norm no\n", thermo);
   if (s.output.snapshot_interval > 0.0)
     out += fmt::format("dump snapshots all custom ${{snapshot_every}} dump.{}.lammpstrj id type "
                        "radius mass x y vx vy omegaz\ndump_modify snapshots sort id format float "
                        "%.17g\n",
                        s.name);
-  return out + "\nrun ${steps}\n";
+  return out + "\n" +
+         cell_and_runs(s, b.world.domain.periodic_x, b.world.domain.periodic_y, dt,
+                       steps_of(s.simulation.duration, dt));
 }
 
 } // namespace

@@ -270,7 +270,10 @@ toml::array stages_array(const std::vector<StageSection>& stages) {
       toml::table parsed = toml::parse("v = " + c.substr(eq + 1));
       set.insert(c.substr(0, eq), std::move(*parsed.get("v")));
     }
-    toml::table t{{"name", st.name}, {"duration", st.duration}, {"until", st.until}};
+    toml::table t{{"name", st.name}};
+    // the last stage may have none (it lasts to the run's end): 0 would read back as refused
+    if (st.duration > 0.0) t.insert("duration", st.duration);
+    t.insert("until", st.until);
     if (st.until.starts_with("kinetic")) t.insert("kinetic", st.kinetic);
     if (st.until.starts_with("wall")) t.insert("group", st.group);
     if (st.until == "wall_force_above") t.insert("force", st.force);
