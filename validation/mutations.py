@@ -1,8 +1,8 @@
 """Small errors that are still errors, put into one engine of the cross-check on purpose
 (`validation/crosscheck.py --mutate KIND`): its comparison of native Verlet (half step) with
-LAMMPS must fail each (tests/validation/mutation_test.py), so that a pass means something. One is
-not small (`friction`): a chaotic case's statistics must fail on a change of its physics
-(docs/validation.md shows the chute's).
+LAMMPS must fail each (tests/validation/mutation_test.py), so that a pass means something. Two
+are not small (`friction`, `shear_remap`): a chaotic case's statistics must fail on a change of
+its physics (docs/validation.md shows the chute's and the sheared cell's).
 """
 import os
 import re
@@ -16,6 +16,8 @@ MUTATIONS = {
     "damper_velocity": "native: the dampers given the predicted velocity, not the half step's",
     # not small: a long case's statistics must see a change of the physics, not of rounding
     "friction": "LAMMPS: every pair_coeff's friction times 0.75 (for a flow's statistics)",
+    "shear_remap": "LAMMPS: the sheared cell's fix deform remaps the atoms' positions (remap x), "
+                   "not the velocities of those that cross the tilted box (remap v)",
 }
 NATIVE_MUTATIONS = {"lever_arm": ["simulation.lever_arm=radius"],
                     "damper_velocity": ["simulation.verlet_velocity=predicted"]}
@@ -54,6 +56,9 @@ def mutate_deck(folder, deck_name, kind, radius):
                         [(r"(?<=\s)((?:normal_stiffness|young) )(\S+)", grow)]),
         "friction": ("in", lambda line: line.startswith("pair_coeff"),
                      [(r"(?<=\s)(friction )(\S+)", lambda x: 0.75 * x)]),
+        # a text change: (the regex, its replacement)
+        "shear_remap": ("in", lambda line: line.startswith("fix cell all deform 1 xy erate"),
+                        [(r"remap v$", "remap x")]),
         "wall": ("in", lambda line: line.lstrip().startswith("segment "),
                  [(r"^(\s*segment " + r"\S+ " * k + r")(\S+)", shift) for k in range(4)]),
     }[kind]
@@ -66,7 +71,10 @@ def mutate_deck(folder, deck_name, kind, radius):
     for k, line in enumerate(lines):
         if chosen(line):
             for pattern, change in edits:
-                line, n = scale_numbers(line, pattern, change)
+                line, n = (re.subn(pattern, change, line.rstrip("\n")) if isinstance(change, str)
+                           else scale_numbers(line, pattern, change))
+                if isinstance(change, str):
+                    line += "\n"
                 count += n
             lines[k] = line
     if count == 0:

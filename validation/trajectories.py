@@ -2,7 +2,7 @@
 
 read_track (a native track.csv) and read_dump (a LAMMPS dump) both give
 {time: {id: (x, y, vx, vy, omega)}}, LAMMPS' ids; differences() compares two of them at their
-common times. read_lammps_thermo reads the thermo table of a LAMMPS log.
+common times. read_lammps_thermo reads the thermo table of a LAMMPS log (all its runs).
 """
 import numpy as np
 
@@ -38,20 +38,30 @@ def read_dump(path, dt):
 
 
 def read_lammps_thermo(path):
-    """The thermo table of a LAMMPS log (the last run's), as a dict of arrays by column."""
+    """The thermo table of a LAMMPS log, as a dict of arrays by column: every run's rows in
+    order (a deck in stages runs once per stage), the row a run repeats from the one before
+    left out. The runs must print the same columns."""
     with open(path) as f:
         lines = f.read().splitlines()
-    start = max(i for i, l in enumerate(lines) if l.split()[:2] == ["Step", "Time"])
-    names = lines[start].split()
-    rows = []
-    for line in lines[start + 1:]:
-        words = line.split()
-        if len(words) != len(names):
-            break
-        try:
-            rows.append([float(w) for w in words])
-        except ValueError:
-            break
+    names, rows = None, []
+    for start, line in enumerate(lines):
+        if line.split()[:2] != ["Step", "Time"]:
+            continue
+        if names is not None and line.split() != names:
+            raise ValueError(f"{path}: runs with other thermo columns ({line.split()} after "
+                             f"{names})")
+        names = line.split()
+        for row in lines[start + 1:]:
+            words = row.split()
+            if len(words) != len(names):
+                break
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                break
+            if rows and values[0] <= rows[-1][0]:
+                continue  # the run's first row: the step the one before ended on
+            rows.append(values)
     table = np.array(rows)
     return {n: table[:, k] for k, n in enumerate(names)}
 
