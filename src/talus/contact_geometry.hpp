@@ -78,6 +78,34 @@ template <class R> struct ContactGeometryOf {
 };
 using ContactGeometry = ContactGeometryOf<double>;
 
+/// The lever arms' reaches for the spins' part of the contact points' velocity.
+template <class R> struct Reaches { R i{}, j{}; };
+
+/// The scalars of a pair's contact, the same in 2D and 3D (G: ContactGeometryOf or
+/// ContactGeometry3Of): the overlap, r_eff (0 without `with_r_eff`), m_eff and the lever arms;
+/// returns the reaches the spins' velocity takes.
+template <class G, class R>
+Reaches<R> set_pair_scalars(G& g, R dist, R r_i, R r_j, R m_i, R m_j, bool with_r_eff,
+                            LeverShares shares) {
+  g.overlap = r_i + r_j - dist;
+  g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : R{};
+  g.m_eff = m_i * m_j / (m_i + m_j);
+  g.arm_i = r_i - shares.torque * g.overlap;
+  g.arm_j = r_j - shares.torque * g.overlap;
+  // the same arms, to the bit, where the convention takes the velocity there too
+  return {r_i - shares.velocity * g.overlap, r_j - shares.velocity * g.overlap};
+}
+
+/// The same against a wall, of infinite radius and mass: r_eff = R, m_eff = m, no arm for j.
+template <class G, class R> R set_wall_scalars(G& g, R dist, R r_i, R m_i, LeverShares shares) {
+  g.overlap = r_i - dist;
+  g.r_eff = r_i;
+  g.m_eff = m_i;
+  g.arm_i = r_i - shares.torque * g.overlap;
+  g.arm_j = R{};
+  return r_i - shares.velocity * g.overlap;
+}
+
 /// Geometry of a particle-particle pair: d = r_i - r_j (minimum image), dist = |d| > 0, the
 /// velocities by components, w the spins. `with_r_eff` = false leaves r_eff at 0 for laws that
 /// do not use it (it saves a division). `shares`: the lever-arm convention's (lever_shares).
@@ -89,16 +117,10 @@ ContactGeometryOf<R> pair_geometry(R dx, R dy, R dist, R r_i, R r_j, R m_i, R m_
   const R inverse = 1.0 / dist;
   g.normal_x = inverse * dx;
   g.normal_y = inverse * dy;
-  g.overlap = r_i + r_j - dist;
-  g.r_eff = with_r_eff ? r_i * r_j / (r_i + r_j) : R{};
-  g.m_eff = m_i * m_j / (m_i + m_j);
-  g.arm_i = r_i - shares.torque * g.overlap;
-  g.arm_j = r_j - shares.torque * g.overlap;
-  // the same arms, to the bit, where the convention takes the velocity there too
-  const R reach_i = r_i - shares.velocity * g.overlap, reach_j = r_j - shares.velocity * g.overlap;
+  const Reaches<R> reach = set_pair_scalars(g, dist, r_i, r_j, m_i, m_j, with_r_eff, shares);
   const R dvx = vx_i - vx_j, dvy = vy_i - vy_j;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
-  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * reach_i + w_j * reach_j);
+  g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - (w_i * reach.i + w_j * reach.j);
   return g;
 }
 
@@ -111,12 +133,7 @@ ContactGeometryOf<R> wall_geometry(R dx, R dy, R dist, R r_i, R m_i, R vx_i, R v
   ContactGeometryOf<R> g;
   g.normal_x = dx / dist;
   g.normal_y = dy / dist;
-  g.overlap = r_i - dist;
-  g.r_eff = r_i;
-  g.m_eff = m_i;
-  g.arm_i = r_i - shares.torque * g.overlap;
-  g.arm_j = R{};
-  const R reach_i = r_i - shares.velocity * g.overlap;
+  const R reach_i = set_wall_scalars(g, dist, r_i, m_i, shares);
   const R dvx = vx_i - vx_wall, dvy = vy_i - vy_wall;
   g.v_normal = dvx * g.normal_x + dvy * g.normal_y;
   g.v_tangent = (dvx * -g.normal_y + dvy * g.normal_x) - w_i * reach_i;

@@ -40,6 +40,11 @@ template <class R> R power(R x, double y) {
 template <class R> bool all_zero(R x) {
   return Number<R>::all_zero(x);
 }
+/// The force of size f against the velocity v (none when v is zero): along a 2D contact's
+/// tangent, -f for v > 0, f for v < 0 (vector3.hpp has the 3D contact's).
+template <class R> R opposing(R f, R v) {
+  return select(v > 0.0, -f, select(v < 0.0, f, R{}));
+}
 /// std::max(x, 0.0): 0 for a negative x, x itself otherwise (NaN stays NaN).
 template <class R> R not_below_zero(R x) {
   return select(x < 0.0, R{}, x);

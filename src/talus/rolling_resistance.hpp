@@ -9,6 +9,7 @@
 #include "talus/contact_geometry.hpp"
 #include "talus/number.hpp"
 #include "talus/pair_parameters.hpp"
+#include "talus/vector3.hpp"
 
 namespace talus {
 
@@ -45,13 +46,15 @@ struct ElasticPlasticRolling {
     return p.rolling_stiffness_factor * p.rolling_friction * p.rolling_friction * g.r_eff *
            g.r_eff * N::stiffness(p, g);
   }
-  /// The torque on i (N m) of a contact whose normal force is `normal_force`, relative spin
-  /// `spin` (rad/s) and rolling inertia `inertia` (kg m^2); advances `theta` by dt.
-  template <class N, class P, class G, class R>
-  static R torque(const P& p, const G& g, R normal_force, R spin, R inertia, R& theta, double dt) {
+  /// The torque on i (N m) of a contact whose normal force is `normal_force`, relative rolling
+  /// spin `spin` (rad/s) and rolling inertia `inertia` (kg m^2); advances `theta` by dt. H: the
+  /// spin's, the angle's and the torque's type: R in 2D (about z), a vector of R in 3D (in the
+  /// tangent plane: contact_force.hpp's rolling_torque).
+  template <class N, class P, class G, class R, class H>
+  static H torque(const P& p, const G& g, R normal_force, H spin, R inertia, H& theta, double dt) {
     const R kr = stiffness<N>(p, g);
     const R limit = p.rolling_friction * g.r_eff * normal_force;
-    R spring;
+    H spring;
     if constexpr (N::stiffness_follows_overlap) {
       G before = g; // the overlap one step before, from its rate
       before.overlap = not_below_zero(g.overlap - g.overlap_rate() * dt);
@@ -64,9 +67,9 @@ struct ElasticPlasticRolling {
     // not then gain the dashpot that the step that held it left out
     const auto mobilised = magnitude(spring) >= (1.0 - 1e-12) * limit;
     spring = select(mobilised, copy_sign(limit, spring), spring);
-    theta = select(kr > 0.0, -spring / kr, R{});
+    theta = select(kr > 0.0, -spring / kr, H{});
     const R dashpot = p.rolling_damping * 2.0 * square_root(inertia * kr);
-    const R m = spring - select(mobilised, R{}, dashpot * spin);
+    const H m = spring - select(mobilised, H{}, dashpot * spin);
     return select(magnitude(m) > limit, copy_sign(limit, m), m);
   }
   /// The spring's energy 1/2 k_r theta^2, J.
@@ -75,6 +78,16 @@ struct ElasticPlasticRolling {
     return 0.5 * stiffness<N>(p, g) * theta * theta;
   }
 };
+
+/// The rolling part of two spheres' relative spin w_i - w_j (w_j = 0 for a wall) at a contact
+/// of normal n: its part in the tangent plane. The part about n is twisting, which Ai et al.'s
+/// model leaves out (as LIGGGHTS' epsd does); in a plane (spins along z, n in the plane) it is
+/// the whole relative spin, as in 2D.
+template <class R>
+Vec3Of<R> rolling_spin(const Vec3Of<R>& w_i, const Vec3Of<R>& w_j, const Vec3Of<R>& n) {
+  const Vec3Of<R> w = w_i - w_j;
+  return w - dot(w, n) * n;
+}
 
 /// The rolling law of every engine.
 using RollingLaw = ElasticPlasticRolling;

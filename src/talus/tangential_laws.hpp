@@ -1,9 +1,12 @@
 #pragma once
 // Tangential contact laws: friction force along t from the slip velocity and, for the spring
-// laws, the stored tangential displacement (the contact's history, a scalar along the current
-// tangent, so it is always kept in the current tangent direction). Like the normal laws, they
-// take one contact or several side by side (number.hpp). Each law is given the normal law N of
-// its contact, whose stiffness a spring may follow.
+// laws, the stored tangential displacement (the contact's history). In 2D the tangential
+// velocity, force and spring are scalars along the current tangent t (so the spring is always
+// kept in the current tangent direction); in 3D they are vectors in the tangent plane
+// (vector3.hpp; contact_force.hpp turns the spring into the plane as the contact turns). The
+// same lines serve both: magnitude, copy_sign, select and opposing take either. Like the normal
+// laws, they take one contact or several side by side (number.hpp). Each law is given the normal
+// law N of its contact, whose stiffness a spring may follow.
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -12,6 +15,7 @@
 #include "talus/contact_geometry.hpp"
 #include "talus/material.hpp"
 #include "talus/number.hpp"
+#include "talus/vector3.hpp"
 
 namespace talus {
 
@@ -22,11 +26,11 @@ struct ViscousCoulomb {
   static constexpr bool has_history = false;
   static constexpr bool has_friction = true;
   static constexpr bool uses_r_eff = false;
-  template <class N, class P, class G, class R>
-  static R force(const P& p, const G& g, R normal_force, R& /*history*/, double /*dt*/) {
+  template <class N, class P, class G, class R, class H>
+  static H force(const P& p, const G& g, R normal_force, H& /*history*/, double /*dt*/) {
     const R viscous = p.tangential_damping * g.m_eff * magnitude(g.v_tangent);
     const R f = smaller(viscous, p.friction * normal_force);
-    return select(g.v_tangent > 0.0, -f, select(g.v_tangent < 0.0, f, R{}));
+    return opposing(f, g.v_tangent);
   }
   template <class P, class G, class R> static R stiffness(const P&, const G&, R) { return R{}; }
   /// What is wrong with a material for this law ("" if nothing).
@@ -68,12 +72,13 @@ template <class Stiffness> struct TangentialSpring {
     return rate_part +
            (N::tsuji_factor * p.tangential_damping_sqrt_coeff) * square_root(kt * g.m_eff);
   }
-  // the slip by selects, not a branch: two contacts side by side may differ
-  template <class N, class P, class G, class R>
-  static R force(const P& p, const G& g, R normal_force, R& s, double dt) {
+  // the slip by selects, not a branch: two contacts side by side may differ. H: the spring's
+  // type, R in 2D, a vector of R in 3D
+  template <class N, class P, class G, class R, class H>
+  static H force(const P& p, const G& g, R normal_force, H& s, double dt) {
     const R kt = Stiffness::of(p, g, N::stiffness(p, g));
     const R limit = p.friction * normal_force;
-    R spring;
+    H spring;
     if constexpr (Stiffness::template follows_overlap<N>) {
       G before = g; // the overlap one step before, from its rate
       before.overlap = not_below_zero(g.overlap - g.overlap_rate() * dt);
@@ -81,15 +86,15 @@ template <class Stiffness> struct TangentialSpring {
       // loading keeps the force (k_t,before s), unloading the stretch (k_t s): the smaller
       spring = -smaller(kt, kt_before) * s - kt * (g.v_tangent * dt);
       spring = select(magnitude(spring) > limit, copy_sign(limit, spring), spring);
-      s = select(kt > 0.0, -spring / kt, R{});
+      s = select(kt > 0.0, -spring / kt, H{});
     } else {
       s += g.v_tangent * dt;
       spring = -kt * s;
       const auto slips = magnitude(spring) > limit;
       spring = select(slips, copy_sign(limit, spring), spring);
-      s = select(slips, select(kt > 0.0, -spring / kt, R{}), s);
+      s = select(slips, select(kt > 0.0, -spring / kt, H{}), s);
     }
-    const R f = spring - dashpot<N>(p, g, kt) * g.v_tangent;
+    const H f = spring - dashpot<N>(p, g, kt) * g.v_tangent;
     return select(magnitude(f) > limit, copy_sign(limit, f), f);
   }
   static std::string material_error(const Material&) { return {}; }
@@ -127,9 +132,9 @@ struct Frictionless {
   static constexpr bool has_history = false;
   static constexpr bool has_friction = false;
   static constexpr bool uses_r_eff = false;
-  template <class N, class P, class G, class R>
-  static R force(const P&, const G&, R, R& /*history*/, double /*dt*/) {
-    return R{};
+  template <class N, class P, class G, class R, class H>
+  static H force(const P&, const G&, R, H& /*history*/, double /*dt*/) {
+    return H{};
   }
   template <class P, class G, class R> static R stiffness(const P&, const G&, R) { return R{}; }
   static std::string material_error(const Material&) { return {}; }
