@@ -19,17 +19,22 @@ constexpr const char* style_name = "fix granthesis/history";
 
 FixContactHistory::FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
     : Fix(instance, narg, arg) {
-  if (narg != 3 && narg != 5)
-    fail("usage: fix ID GROUP granthesis/history [slots K] (pair_style granthesis and fix "
-         "granthesis/wall make it themselves)");
-  if (narg == 5) {
-    const std::optional<double> k = finite_number(arg[4]);
-    if (std::string(arg[3]) != "slots" || !k || *k < 1.0 || *k > 1000.0 || *k != int(*k))
-      fail(std::string("slots = ") + arg[4] + "; allowed: a whole number from 1 to 1000");
-    slots_ = static_cast<int>(*k);
+  if (narg != 3 && narg != 5 && narg != 7)
+    fail("usage: fix ID GROUP granthesis/history [slots K] [values V] (pair_style granthesis "
+         "and fix granthesis/wall make it themselves)");
+  for (int a = 3; a + 1 < narg; a += 2) {
+    const std::string key = arg[a];
+    const std::optional<double> k = finite_number(arg[a + 1]);
+    if (key == "slots" && k && *k >= 1.0 && *k <= 1000.0 && *k == int(*k))
+      slots_ = static_cast<int>(*k);
+    else if (key == "values" && k && (*k == 1.0 || *k == 3.0))
+      values_ = static_cast<int>(*k);
+    else
+      fail(key + " = " + arg[a + 1] +
+           "; allowed: slots, a whole number from 1 to 1000; values, 1 (2d) or 3 (3d)");
   }
   create_attribute = 1;
-  maxexchange = 1 + 2 * slots_;
+  maxexchange = 1 + (1 + values_) * slots_;
   restart_peratom = 1;
   grow_arrays(atom->nmax); // no springs yet for any atom
   atom->add_callback(LAMMPS_NS::Atom::GROW);
@@ -38,12 +43,18 @@ FixContactHistory::FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char
 
 FixContactHistory* FixContactHistory::find_or_make(LAMMPS_NS::LAMMPS* instance,
                                                    const std::string& id, int slots,
-                                                   const std::string& owner) {
+                                                   const std::string& owner, int values) {
   LAMMPS_NS::Modify* modify = instance->modify;
   if (modify->find_fix(id) < 0)
-    modify->add_fix(id + " all granthesis/history slots " + std::to_string(slots));
+    modify->add_fix(id + " all granthesis/history slots " + std::to_string(slots) + " values " +
+                    std::to_string(values));
   auto* fix = dynamic_cast<FixContactHistory*>(modify->fix[modify->find_fix(id)]);
   if (!fix) talus::lammps::fail(instance->error, owner, "fix " + id + " is not granthesis/history");
+  if (fix->values() != values)
+    talus::lammps::fail(instance->error, owner,
+                        "fix " + id + " keeps springs of " + std::to_string(fix->values()) +
+                            " numbers, and this run's dimension needs " + std::to_string(values) +
+                            " (a restart file of another dimension)");
   return fix;
 }
 
@@ -78,26 +89,30 @@ void FixContactHistory::set_arrays(int i) {
   count_[static_cast<std::size_t>(i)] = 0;
 }
 
-// count, then (partner, spring) per contact; the partner as an integer in a double's bits
+// count, then (partner, the spring's values) per contact; the partner as an integer in a
+// double's bits
 int FixContactHistory::pack_exchange(int i, double* buffer) {
   const int n = count_[static_cast<std::size_t>(i)];
   const Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(i)];
   buffer[0] = n;
+  double* out = buffer + 1;
   for (int k = 0; k < n; ++k) {
-    buffer[1 + 2 * k] = LAMMPS_NS::ubuf(static_cast<int64_t>(s[k].partner)).d;
-    buffer[2 + 2 * k] = s[k].spring;
+    *out++ = LAMMPS_NS::ubuf(static_cast<int64_t>(s[k].partner)).d;
+    for (int v = 0; v < values_; ++v) *out++ = s[k].spring[v];
   }
-  return 1 + 2 * n;
+  return static_cast<int>(out - buffer);
 }
 
 int FixContactHistory::unpack_exchange(int nlocal, double* buffer) {
   const int n = static_cast<int>(buffer[0]);
   count_[static_cast<std::size_t>(nlocal)] = n;
   Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(nlocal)];
-  for (int k = 0; k < n; ++k)
-    s[k] = {static_cast<LAMMPS_NS::tagint>(LAMMPS_NS::ubuf(buffer[1 + 2 * k]).i), buffer[2 + 2 * k],
-            pass_};
-  return 1 + 2 * n;
+  const double* in = buffer + 1;
+  for (int k = 0; k < n; ++k) {
+    s[k] = {static_cast<LAMMPS_NS::tagint>(LAMMPS_NS::ubuf(*in++).i), {0.0, 0.0, 0.0}, pass_};
+    for (int v = 0; v < values_; ++v) s[k].spring[v] = *in++;
+  }
+  return static_cast<int>(in - buffer);
 }
 
 // As pack_exchange, after the size of the whole (counted in): restart files hold every fix's
@@ -121,11 +136,11 @@ void FixContactHistory::unpack_restart(int nlocal, int nth) {
 }
 
 int FixContactHistory::size_restart(int nlocal) {
-  return 2 + 2 * count_[static_cast<std::size_t>(nlocal)];
+  return 2 + (1 + values_) * count_[static_cast<std::size_t>(nlocal)];
 }
 
 int FixContactHistory::maxsize_restart() {
-  return 2 + 2 * slots_;
+  return 2 + (1 + values_) * slots_;
 }
 
 double FixContactHistory::memory_usage() {
@@ -148,21 +163,26 @@ double& FixContactHistory::spring(int i, LAMMPS_NS::tagint partner) {
   for (int k = 0; k < n; ++k)
     if (s[k].partner == partner) {
       s[k].pass = pass_;
-      return s[k].spring;
+      return s[k].spring[0];
     }
   if (n == slots_)
     fail("atom " + std::to_string(atom->tag[i]) + " touches more than " + std::to_string(slots_) +
          " others at once; give the pair style more: pair_style granthesis NORMAL TANGENTIAL "
          "history_slots K");
-  s[n] = {partner, 0.0, pass_};
-  return s[n++].spring;
+  s[n] = {partner, {0.0, 0.0, 0.0}, pass_};
+  return s[n++].spring[0];
 }
 
-double FixContactHistory::peek(int i, LAMMPS_NS::tagint partner) const {
+const double* FixContactHistory::peek_springs(int i, LAMMPS_NS::tagint partner) const {
   const Slot* s = &slot_[static_cast<std::size_t>(slots_) * static_cast<std::size_t>(i)];
   for (int k = 0; k < count_[static_cast<std::size_t>(i)]; ++k)
     if (s[k].partner == partner) return s[k].spring;
-  return 0.0;
+  return nullptr;
+}
+
+double FixContactHistory::peek(int i, LAMMPS_NS::tagint partner) const {
+  const double* s = peek_springs(i, partner);
+  return s ? s[0] : 0.0;
 }
 
 } // namespace talus::lammps

@@ -25,14 +25,15 @@ namespace talus::lammps {
 
 class FixContactHistory : public LAMMPS_NS::Fix {
 public:
-  /// fix ID group granthesis/history [slots K]: K springs at most per atom (default 16).
+  /// fix ID group granthesis/history [slots K] [values V]: K springs at most per atom (default
+  /// 16), each of V numbers (1: a 2D spring along the tangent, 3: a 3D vector; default 1).
   FixContactHistory(LAMMPS_NS::LAMMPS* instance, int narg, char** arg);
   ~FixContactHistory() override;
 
   /// The fix `id` of this style, made with `slots` slots if there is none yet; `owner` (a style's
   /// name) is named in the error when a fix of that ID is of another style.
   static FixContactHistory* find_or_make(LAMMPS_NS::LAMMPS* instance, const std::string& id,
-                                         int slots, const std::string& owner);
+                                         int slots, const std::string& owner, int values = 1);
 
   int setmask() override;
   void grow_arrays(int nmax) override;
@@ -56,11 +57,16 @@ public:
   double& spring(int i, LAMMPS_NS::tagint partner);
   /// The spring of atom i's contact with `partner`, 0 if it has none; changes nothing.
   double peek(int i, LAMMPS_NS::tagint partner) const;
+  /// The V numbers of atom i's contact with `partner` (zeros for a new one), as spring() does.
+  double* springs(int i, LAMMPS_NS::tagint partner) { return &spring(i, partner); }
+  /// The same as peek(): nullptr where atom i has no such contact.
+  const double* peek_springs(int i, LAMMPS_NS::tagint partner) const;
+  int values() const { return values_; }
 
 private:
   struct Slot {
     LAMMPS_NS::tagint partner;
-    double spring;
+    double spring[3]; ///< the first values_ in use
     unsigned pass;
   };
   /// Stops the run naming this style; LAMMPS cites the caller's file and line.
@@ -68,6 +74,7 @@ private:
                          std::source_location at = std::source_location::current()) const;
 
   int slots_ = 16;         ///< springs per atom at most
+  int values_ = 1;         ///< numbers per spring
   unsigned pass_ = 0;      ///< the current pass
   std::vector<int> count_; ///< per atom: springs kept
   std::vector<Slot> slot_; ///< per atom: slots_ slots, the first count_ in use

@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_contact_history.h"
 #include "force.h"
@@ -141,6 +142,10 @@ double FixSegmentWalls::now() const {
 void FixSegmentWalls::init() {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     fail("needs per-atom radius, mass, angular velocity and torque: atom_style sphere");
+  if (domain->dimension == 3)
+    fail("the segments are lines of the x-y plane, whose contacts are computed in that plane: "
+         "in 3d they would miss a sphere's motion out of it; allowed: dimension 2 (for walls "
+         "in 3d: LAMMPS' fix wall/gran, with its own contact law)");
   pair_ = dynamic_cast<PairGranthesis*>(force->pair_match("granthesis", 1));
   if (!pair_)
     fail("needs pair_style granthesis: the walls take its laws and the materials of its types");
@@ -208,6 +213,10 @@ void FixSegmentWalls::make_history() {
 // springs' fix is made now, not at init(): only a fix made before the first run after
 // read_restart gets its atoms' values from the restart file.
 void FixSegmentWalls::post_constructor() {
+  if (domain->dimension == 3)
+    fail("the segments are lines of the x-y plane, whose contacts are computed in that plane: "
+         "in 3d they would miss a sphere's motion out of it; allowed: dimension 2 (for walls "
+         "in 3d: LAMMPS' fix wall/gran, with its own contact law)");
   pair_ = dynamic_cast<PairGranthesis*>(force->pair_match("granthesis", 1));
   if (pair_) make_history();
 }

@@ -86,11 +86,13 @@ class FixContactHistory {
 public:
   void begin_pass() {}
   void end_pass(int) {}
-  double& spring(int, LAMMPS_NS::tagint) { return unused_; }
+  double& spring(int, LAMMPS_NS::tagint) { return unused_[0]; }
+  double* springs(int, LAMMPS_NS::tagint) { return unused_; }
   double peek(int, LAMMPS_NS::tagint) const { return 0.0; }
+  const double* peek_springs(int, LAMMPS_NS::tagint) const { return nullptr; }
 
 private:
-  double unused_ = 0.0;
+  double unused_[3] = {};
 };
 inline constexpr bool host_keeps_springs = false;
 #else
@@ -143,15 +145,17 @@ protected:
 #endif
   }
 
-  /// The fix `id` that keeps the springs (slots per atom), found or made; in a host that keeps
-  /// none, the run stops (`style` names the asker).
-  FixContactHistory* springs_fix(const std::string& id, int slots, const std::string& style) {
+  /// The fix `id` that keeps the springs (slots per atom, `values` numbers each), found or made;
+  /// in a host that keeps none, the run stops (`style` names the asker).
+  FixContactHistory* springs_fix(const std::string& id, int slots, const std::string& style,
+                                 int values = 1) {
 #ifdef TALUS_HOST_LIGGGHTS
     (void)id;
     (void)slots;
+    (void)values;
     fail(error, style, "a law with a contact history is not available in LIGGGHTS");
 #else
-    return FixContactHistory::find_or_make(lmp, id, slots, style);
+    return FixContactHistory::find_or_make(lmp, id, slots, style, values);
 #endif
   }
 

@@ -186,10 +186,6 @@ void PairGranthesis::init_style() {
     if (!problem.empty()) fail("type " + std::to_string(i) + ": " + problem);
   }
   mix_pairs();
-  if (domain->dimension == 3 && comm->me == 0)
-    warn(error, std::string(style_name) +
-                    ": in 3d the contacts must lie in the x-y plane (spheres moving in a plane); a "
-                    "contact out of it stops the run");
   if (keeps_history(tangential_)) init_history();
   inertia_factor_ = inertia_ == 1 || (inertia_ == 0 && domain->dimension == 2) ? 0.5 : 0.4;
   init_rolling();
@@ -286,7 +282,9 @@ void PairGranthesis::init_history() {
     fail("tangential law '" + std::string(name_of(tangential_)) +
          "' keeps a spring per contact, which needs newton_pair off (newton off before the box, "
          "or newton off on after it), so that each rank computes its own atoms' contacts");
-  history_ = springs_fix(history_fix_id, history_slots_, style_name);
+  // a spring along the tangent in 2d, a vector in the tangent plane in 3d
+  history_ =
+      springs_fix(history_fix_id, history_slots_, style_name, domain->dimension == 3 ? 3 : 1);
 }
 
 // Rolling resistance keeps its springs as the tangential laws do, in a fix of its own.
@@ -312,7 +310,8 @@ void PairGranthesis::init_rolling() {
          "newton_pair off (newton off before the box, or newton off on after it), so that each "
          "rank computes its own "
          "atoms' contacts");
-  rolling_fix_ = springs_fix(rolling_fix_id, history_slots_, style_name);
+  rolling_fix_ =
+      springs_fix(rolling_fix_id, history_slots_, style_name, domain->dimension == 3 ? 3 : 1);
 }
 
 double PairGranthesis::rim_inertia(int i) const {
@@ -360,6 +359,7 @@ double PairGranthesis::init_one(int i, int j) {
 }
 
 void PairGranthesis::compute(int eflag, int vflag) {
+  if (domain->dimension == 3) return compute_3d_pass(eflag, vflag);
   with_contact_law(normal_, tangential_,
                    [&]<class N, class T>() { compute_with<N, T>(eflag, vflag); });
 }
@@ -447,6 +447,7 @@ double PairGranthesis::single(int i, int j, int itype, int jtype, double rsq,
                               double /*factor_coul*/, double /*factor_lj*/, double& fforce) {
   std::fill(std::begin(svector_storage_), std::end(svector_storage_), 0.0);
   fforce = 0.0;
+  if (domain->dimension == 3) return single_3d(i, j, itype, jtype, rsq, fforce);
   double** x = atom->x;
   double** v = atom->v;
   const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1];

@@ -64,6 +64,10 @@ public:
 
 private:
   template <class N, class T> void compute_with(int eflag, int vflag);
+  /// The same for spheres in 3D: springs, rolling angles, forces and torques as vectors
+  /// (pair_granthesis_3d.cpp); compute_3d_pass chooses the law pair.
+  template <class N, class T> void compute_3d(int eflag, int vflag);
+  void compute_3d_pass(int eflag, int vflag);
   void allocate();
   void check_hybrid() const; ///< refuses a hybrid style that would count a contact twice
   void mix_pairs();          ///< every type pair's parameters that can be known, into pair_
@@ -76,6 +80,12 @@ private:
   template <class N>
   double add_rolling_torque(int i, int j, const PairParameters& p, const ContactGeometry& g,
                             double fn, bool advance);
+  /// The same in 3D: the rolling part of the relative spin, the angle as a vector.
+  template <class N>
+  double add_rolling_torque_3d(int i, int j, const PairParameters& p, const ContactGeometry3& g,
+                               double fn, bool advance);
+  /// single() for spheres in 3D.
+  double single_3d(int i, int j, int itype, int jtype, double rsq, double& fforce);
   /// The index of type pair (i, j) in pair_ and explicit_pair_.
   std::size_t slot(int i, int j) const {
     return static_cast<std::size_t>(i) * static_cast<std::size_t>(ntypes_ + 1) +
@@ -107,8 +117,10 @@ private:
   /// 1 for the types whose material pair_coeff I I gave. LAMMPS' own setflag is 1 everywhere,
   /// so that its check before init_style passes and init_style names the type that is missing.
   std::vector<char> given_;
-  double max_radius_ = 0.0;        ///< the largest radius of any atom, or to be poured (m), at init
-  double svector_storage_[6] = {}; ///< single(): fx, fy, torque_i, torque_j, F_n, overlap
+  double max_radius_ = 0.0; ///< the largest radius of any atom, or to be poured (m), at init
+  /// single(): fx, fy, torque_i, torque_j, F_n, overlap in 2d; fx, fy, fz, |F_t|, F_n, overlap
+  /// in 3d
+  double svector_storage_[6] = {};
 };
 
 } // namespace talus::lammps

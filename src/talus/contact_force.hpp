@@ -87,5 +87,16 @@ inline double contact_elastic_energy(const PairParameters& p, const ContactGeome
   }
   return e;
 }
+/// The same for spheres in 3D: 1/2 k_t |s|^2 of the spring's vector.
+template <class N, class T>
+inline double contact_elastic_energy(const PairParameters& p, const ContactGeometry3& g,
+                                     const Vec3& history) {
+  double e = N::elastic_energy(p, g);
+  if constexpr (T::has_history) {
+    const double kt = T::stiffness(p, g, N::stiffness(p, g));
+    e += 0.5 * kt * dot(history, history);
+  }
+  return e;
+}
 
 } // namespace talus

@@ -44,7 +44,7 @@ struct LinearSpringDashpot {
   template <class P, class G> static auto stiffness(const P& p, const G&) {
     return p.normal_stiffness;
   }
-  static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
+  template <class G> static double elastic_energy(const PairParameters& p, const G& g) {
     return 0.5 * p.normal_stiffness * g.overlap * g.overlap;
   }
   /// Duration of a contact of reduced mass m_eff (any impact speed).
@@ -125,7 +125,7 @@ struct HertzViscoelastic {
   template <class P, class G> static auto stiffness(const P& p, const G& g) {
     return 2.0 * p.effective_young * square_root(g.r_eff * g.overlap);
   }
-  static double elastic_energy(const PairParameters& p, const ContactGeometry& g) {
+  template <class G> static double elastic_energy(const PairParameters& p, const G& g) {
     const double rho = 4.0 / 3.0 * p.effective_young * std::sqrt(g.r_eff);
     return 0.4 * rho * g.overlap * g.overlap * std::sqrt(g.overlap);
   }

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "talus/contact_geometry.hpp"
+#include "talus/contact_geometry_3d.hpp"
 #include "talus/number.hpp"
 #include "talus/pair_parameters.hpp"
 #include "talus/vector3.hpp"
@@ -76,6 +77,12 @@ struct ElasticPlasticRolling {
   template <class N>
   static double elastic_energy(const PairParameters& p, const ContactGeometry& g, double theta) {
     return 0.5 * stiffness<N>(p, g) * theta * theta;
+  }
+  /// The same in 3D, of the angle's vector.
+  template <class N>
+  static double elastic_energy(const PairParameters& p, const ContactGeometry3& g,
+                               const Vec3& theta) {
+    return 0.5 * stiffness<N>(p, g) * dot(theta, theta);
   }
 };
 
