@@ -41,10 +41,11 @@ Scenario at_stage(const Scenario& s, std::size_t k) {
   return load_scenario(to_toml(s), s.name, sets);
 }
 
-const DriverSection* cell_of(const Scenario& s) {
+// A copy: the scenario is often a stage's, a temporary.
+std::optional<DriverSection> cell_of(const Scenario& s) {
   for (const DriverSection& d : s.drivers)
-    if (d.type == "cell") return &d;
-  return nullptr;
+    if (d.type == "cell") return d;
+  return std::nullopt;
 }
 
 std::optional<std::string> cell_refusal(const DriverSection& c, std::size_t stage) {
@@ -84,27 +85,27 @@ std::optional<std::string> cell_and_stages_refusal(const Scenario& s) {
                                         "drivers.N.shear_rate of a cell driver");
   }
   for (std::size_t k = 0; k < std::max<std::size_t>(1, s.stages.size()); ++k)
-    if (const DriverSection* c = cell_of(at_stage(s, k)))
+    if (const auto c = cell_of(at_stage(s, k)))
       if (auto why = cell_refusal(*c, k)) return why;
   return std::nullopt;
 }
 
 bool shears_in_any_stage(const Scenario& s) {
   for (std::size_t k = 0; k < std::max<std::size_t>(1, s.stages.size()); ++k)
-    if (const DriverSection* c = cell_of(at_stage(s, k)); c && c->shear_rate != 0.0) return true;
+    if (const auto c = cell_of(at_stage(s, k)); c && c->shear_rate != 0.0) return true;
   return false;
 }
 
 std::string cell_and_runs(const Scenario& s, bool periodic_x, bool periodic_y, double dt,
                           std::uint64_t steps) {
-  const DriverSection* first = cell_of(s);
+  const auto first = cell_of(s);
   std::string out = first ? cell_fix(*first, periodic_x, periodic_y) : "";
   if (s.stages.size() < 2) return out + "run ${steps}\n";
   std::string previous = out;
   std::uint64_t done = 0;
   for (std::size_t k = 0; k < s.stages.size() && done < steps; ++k) {
     if (k > 0) {
-      const DriverSection* c = cell_of(at_stage(s, k));
+      const auto c = cell_of(at_stage(s, k));
       const std::string fix = c ? cell_fix(*c, periodic_x, periodic_y) : "";
       if (fix != previous) out += "unfix cell\n" + fix;
       previous = fix;
