@@ -21,6 +21,7 @@ struct Impact {
   double spin = 0.0;
   double steps_per_collision = 50.0;
   LeverArm arm = LeverArm::contact_point;
+  Integrator integrator = Integrator::gear;
 };
 
 // A rigid floor of the grain's own material.
@@ -54,6 +55,7 @@ inline Simulation impact(const Impact& c) {
   config.normal_law = c.normal;
   config.tangential_law = c.tangential;
   config.lever_arm = c.arm;
+  config.integrator = c.integrator;
   config.impact_speed = std::abs(c.velocity.y);
   config.timestep = collision_time(c, w.particles.mass[0]) / c.steps_per_collision;
   return Simulation(std::move(w), config);

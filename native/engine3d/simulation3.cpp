@@ -1,0 +1,142 @@
+#include "engine3d/simulation3.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "talus/error.hpp"
+
+namespace talus {
+
+namespace {
+
+void validate(const Scene3& scene, const Settings3& settings) {
+  require(settings.timestep > 0.0 && std::isfinite(settings.timestep),
+          "simulation.timestep must be finite and > 0 s");
+  require(settings.skin >= 0.0 && std::isfinite(settings.skin),
+          "simulation.skin must be finite and >= 0 m");
+  require(!scene.materials.empty(), "at least one material is needed");
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    const Material& material = scene.materials[m];
+    const std::string problem = material_error(settings.normal_law, settings.tangential_law,
+                                               material, settings.linear_damping);
+    require(problem.empty(), "material " + std::to_string(m) + ": " + problem);
+    require(
+        material.rolling_friction == 0.0,
+        "material " + std::to_string(m) +
+            ": rolling_friction is not there yet in 3D; allowed: 0 (spheres in 3D roll freely)");
+  }
+  const auto known = [&](std::uint16_t m) { return m < scene.materials.size(); };
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+    require(known(scene.spheres.material[i]), "sphere " + std::to_string(i) + " has material " +
+                                                  std::to_string(scene.spheres.material[i]) +
+                                                  ", which is not defined");
+  for (std::size_t w = 0; w < scene.plates.size(); ++w)
+    require(known(scene.plates[w].material), "plate " + std::to_string(w) + " has material " +
+                                                 std::to_string(scene.plates[w].material) +
+                                                 ", which is not defined");
+  const Domain3& d = scene.domain;
+  require(d.lo.x < d.hi.x && d.lo.y < d.hi.y && d.lo.z < d.hi.z,
+          "the domain needs lo < hi along every axis");
+}
+
+double resolved_skin(const Scene3& scene, const Settings3& settings) {
+  return settings.skin > 0.0 ? settings.skin : 0.5 * scene.spheres.max_radius();
+}
+
+} // namespace
+
+Simulation3::Simulation3(Scene3 scene, Settings3 settings)
+    : scene_(std::move(scene)), settings_(settings) {
+  validate(scene_, settings_);
+  table_ = PairTable(scene_.materials, settings_.impact_speed, settings_.linear_damping);
+  lag_ = verlet_lag(settings_.verlet_velocity);
+  build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
+                    resolved_skin(scene_, settings_));
+  compute_forces();
+  guard();
+}
+
+void Simulation3::compute_forces() {
+  Spheres& s = scene_.spheres;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    s.force[i] = s.is_free(i) ? s.mass[i] * scene_.gravity : Vec3{};
+    s.torque[i] = {};
+  }
+  last_ = add_contact_forces(scene_, list_, table_, settings_);
+}
+
+// Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
+// see while F(t + dt) is computed is v(t) + (1 + lag) dt/2 a(t).
+void Simulation3::step() {
+  Spheres& s = scene_.spheres;
+  const double dt = settings_.timestep, half = 0.5 * dt;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec3 kick = (half * s.inv_mass[i]) * s.force[i];
+    s.position[i] += dt * (s.velocity[i] + kick);
+    s.velocity[i] += (1.0 + lag_) * kick;
+    const Vec3 spin_kick = (half * s.inv_inertia[i]) * s.torque[i];
+    s.angular_velocity[i] += (1.0 + lag_) * spin_kick;
+  }
+  std::swap(s.force, s.force_previous);
+  std::swap(s.torque, s.torque_previous);
+  for (Plane& p : scene_.plates) p.centre += dt * p.velocity;
+  if (list_is_stale(list_, s, scene_.plates)) {
+    guard();
+    build_sphere_list(list_, s, scene_.plates, scene_.domain, resolved_skin(scene_, settings_));
+  }
+  compute_forces();
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    s.velocity[i] += (half * s.inv_mass[i]) * (s.force[i] - lag_ * s.force_previous[i]);
+    s.angular_velocity[i] +=
+        (half * s.inv_inertia[i]) * (s.torque[i] - lag_ * s.torque_previous[i]);
+  }
+  ++steps_;
+  time_ = static_cast<double>(steps_) * dt;
+  guard();
+}
+
+void Simulation3::run(std::uint64_t steps) {
+  for (std::uint64_t k = 0; k < steps; ++k) step();
+}
+
+void Simulation3::guard() const {
+  const Spheres& s = scene_.spheres;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec3& r = s.position[i];
+    const Vec3& v = s.velocity[i];
+    if (std::isfinite(r.x + r.y + r.z + v.x + v.y + v.z)) continue;
+    std::ostringstream msg;
+    msg << "sphere " << s.id[i] << " has a non-finite position or velocity at step " << steps_
+        << " (t = " << time_ << " s): the timestep is too long for the stiffest contact";
+    throw InstabilityError(msg.str());
+  }
+  if (last_.deepest <= settings_.max_overlap_fraction) return;
+  std::ostringstream msg;
+  msg << "at step " << steps_ << " (t = " << time_ << " s) sphere " << s.id[last_.deepest_i];
+  if (last_.deepest_j >= 0)
+    msg << " overlaps sphere " << s.id[static_cast<std::size_t>(last_.deepest_j)];
+  else
+    msg << " overlaps plate " << last_.deepest_plate;
+  msg << " by " << last_.deepest
+      << " of the smaller radius (allowed: " << settings_.max_overlap_fraction
+      << "): the contact is too soft for the load, or the timestep too long";
+  throw InstabilityError(msg.str());
+}
+
+Energies3 Simulation3::energies() const {
+  const Spheres& s = scene_.spheres;
+  Energies3 e;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (!s.is_free(i)) continue;
+    e.kinetic += 0.5 * s.mass[i] * norm2(s.velocity[i]);
+    e.rotational += 0.5 * s.inertia[i] * norm2(s.angular_velocity[i]);
+    e.potential -=
+        s.mass[i] * dot(scene_.gravity, scene_.domain.unwrapped(s.position[i], s.image[i]));
+  }
+  e.elastic = contact_elastic_energy(scene_, list_, table_, settings_);
+  return e;
+}
+
+} // namespace talus

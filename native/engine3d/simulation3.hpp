@@ -1,0 +1,61 @@
+#pragma once
+// The 3D engine's facade: owns a scene of spheres and runs its steps with velocity Verlet.
+//
+// What it has: spheres (free or fixed), plates (fixed or translating), gravity, periodic axes,
+// every law pair of the table, the Verlet list with its springs, the stability guard. What it
+// does not have yet is refused where it is set (Simulation3's constructor, Spheres::add):
+// rolling resistance, moved spheres, Gear. Single-threaded.
+#include <cstdint>
+
+#include "engine3d/force_pass3.hpp"
+#include "engine3d/scene3.hpp"
+#include "engine3d/sphere_list.hpp"
+#include "materials/pair_table.hpp"
+
+namespace talus {
+
+/// The energies of a scene of spheres (J). Gravity's potential is -m g.r, 0 at the origin.
+struct Energies3 {
+  double kinetic = 0.0;    ///< 1/2 m v^2, free spheres
+  double rotational = 0.0; ///< 1/2 I w^2, free spheres
+  double potential = 0.0;  ///< gravity's
+  double elastic = 0.0;    ///< stored in the contacts
+  double total() const { return kinetic + rotational + potential + elastic; }
+};
+
+class Simulation3 {
+public:
+  /// Validates the scene and the settings (InvalidArgument naming what is wrong), builds the
+  /// list and computes the first forces.
+  Simulation3(Scene3 scene, Settings3 settings);
+
+  /// One step: half kick and drift, plates move, the list is rebuilt if stale, contact forces,
+  /// second half kick, guard (InstabilityError: a non-finite velocity, or an overlap beyond
+  /// the allowed fraction of a radius).
+  void step();
+  void run(std::uint64_t steps);
+
+  double time() const { return time_; }
+  std::uint64_t step_count() const { return steps_; }
+  const Scene3& scene() const { return scene_; }
+  const Settings3& settings() const { return settings_; }
+  const SphereList& list() const { return list_; }
+  /// The touching contacts of the last force pass.
+  std::size_t contact_count() const { return last_.contacts; }
+  Energies3 energies() const;
+
+private:
+  void compute_forces();
+  void guard() const;
+
+  Scene3 scene_;
+  Settings3 settings_;
+  PairTable table_;
+  SphereList list_;
+  ContactPass3 last_;
+  double lag_ = 1.0;
+  double time_ = 0.0;
+  std::uint64_t steps_ = 0;
+};
+
+} // namespace talus

@@ -1,0 +1,195 @@
+#include "engine3d/sphere_list.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "talus/error.hpp"
+
+namespace talus {
+
+namespace {
+
+// A grid of cells at least `range` wide over the spheres (over the box along periodic axes),
+// with the spheres sorted into cells by a counting sort.
+struct Grid3 {
+  std::array<double, 3> lo{}, size{};
+  std::array<int, 3> cells{1, 1, 1};
+  std::vector<std::uint32_t> start, items;
+
+  // the cell along axis k; a position outside the grid (or NaN) goes to the nearest end cell
+  int cell_along(int k, double v) const {
+    const double c = std::floor((v - lo[k]) / size[k]);
+    if (!(c > 0.0)) return 0;
+    return c < cells[k] - 1 ? static_cast<int>(c) : cells[k] - 1;
+  }
+  std::size_t index(int cx, int cy, int cz) const {
+    return (static_cast<std::size_t>(cz) * cells[1] + cy) * cells[0] + cx;
+  }
+};
+
+// Cells along each axis: as many as fit, at least three along a periodic axis; an open axis of
+// a sparse scene is cut into fewer cells so that the grid stays within a few cells per sphere.
+std::array<int, 3> cell_counts(const std::array<double, 3>& extent, double range, const Domain3& d,
+                               std::size_t n) {
+  std::array<int, 3> c{};
+  for (int k = 0; k < 3; ++k) {
+    const double fit = std::floor(extent[k] / range);
+    c[k] = static_cast<int>(std::clamp(fit, 1.0, 4096.0));
+    if (d.periodic[k])
+      require(c[k] >= 3, "a periodic axis must be at least 3 interaction ranges long (" +
+                             std::to_string(3.0 * range) + " m): it is " +
+                             std::to_string(extent[k]) + " m");
+  }
+  const double most = 8.0 * static_cast<double>(n) + 64.0;
+  for (;;) {
+    if (1.0 * c[0] * c[1] * c[2] <= most) break;
+    int widest = -1;
+    for (int k = 0; k < 3; ++k)
+      if (!d.periodic[k] && c[k] > 1 && (widest < 0 || c[k] > c[widest])) widest = k;
+    if (widest < 0) break;
+    c[widest] = (c[widest] + 1) / 2;
+  }
+  return c;
+}
+
+Grid3 make_grid(const Spheres& s, const Domain3& d, double range) {
+  Grid3 g;
+  std::array<double, 3> extent{};
+  for (int k = 0; k < 3; ++k) {
+    if (d.periodic[k]) {
+      g.lo[k] = component(d.lo, k);
+      extent[k] = component(d.hi, k) - g.lo[k];
+      continue;
+    }
+    double lo = component(s.position[0], k), hi = lo;
+    for (const Vec3& p : s.position) {
+      lo = std::min(lo, component(p, k));
+      hi = std::max(hi, component(p, k));
+    }
+    g.lo[k] = lo;
+    extent[k] = hi - lo;
+  }
+  g.cells = cell_counts(extent, range, d, s.size());
+  for (int k = 0; k < 3; ++k) g.size[k] = std::max(extent[k], range) / g.cells[k];
+  const std::size_t total = static_cast<std::size_t>(g.cells[0]) * g.cells[1] * g.cells[2];
+  std::vector<std::uint32_t> cell_of(s.size());
+  g.start.assign(total + 1, 0);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Vec3& p = s.position[i];
+    cell_of[i] = static_cast<std::uint32_t>(
+        g.index(g.cell_along(0, p.x), g.cell_along(1, p.y), g.cell_along(2, p.z)));
+    ++g.start[cell_of[i] + 1];
+  }
+  for (std::size_t c = 0; c < total; ++c) g.start[c + 1] += g.start[c];
+  g.items.resize(s.size());
+  std::vector<std::uint32_t> fill(g.start.begin(), g.start.end() - 1);
+  for (std::size_t i = 0; i < s.size(); ++i)
+    g.items[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  return g;
+}
+
+struct Candidate {
+  std::uint32_t j;
+  Shift3 shift;
+};
+
+// The pairs (i, j > i) within reach of sphere i, ascending in j.
+void row_of(std::size_t i, const Spheres& s, const Grid3& g, const Domain3& d, double skin,
+            std::vector<Candidate>& row) {
+  row.clear();
+  const Vec3& p = s.position[i];
+  const std::array<int, 3> home{g.cell_along(0, p.x), g.cell_along(1, p.y), g.cell_along(2, p.z)};
+  const Vec3 l = d.size();
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::array<int, 3> step{dx, dy, dz};
+        std::array<int, 3> c{};
+        std::array<std::int8_t, 3> shift{};
+        bool inside = true;
+        for (int k = 0; k < 3; ++k) {
+          c[k] = home[k] + step[k];
+          if (c[k] >= 0 && c[k] < g.cells[k]) continue;
+          if (!d.periodic[k] || g.cells[k] < 3) {
+            inside = false;
+            break;
+          }
+          shift[k] = static_cast<std::int8_t>(c[k] < 0 ? -1 : 1);
+          c[k] += c[k] < 0 ? g.cells[k] : -g.cells[k];
+        }
+        if (!inside) continue;
+        const Vec3 offset{shift[0] * l.x, shift[1] * l.y, shift[2] * l.z};
+        const std::size_t cell = g.index(c[0], c[1], c[2]);
+        for (std::uint32_t k = g.start[cell]; k < g.start[cell + 1]; ++k) {
+          const std::uint32_t j = g.items[k];
+          if (j <= i || (!s.is_free(i) && !s.is_free(j))) continue;
+          const double reach = s.radius[i] + s.radius[j] + skin;
+          if (norm2(p - (s.position[j] + offset)) < reach * reach)
+            row.push_back({j, {shift[0], shift[1], shift[2]}});
+        }
+      }
+  std::sort(row.begin(), row.end(),
+            [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
+}
+
+// The spring the old list kept for (i, j) in its row i, or 0 (rows ascend in j).
+Vec3 kept_spring(const std::vector<std::uint32_t>& offset, const std::vector<std::uint32_t>& key,
+                 const std::vector<Vec3>& spring, std::size_t i, std::uint32_t j) {
+  if (i + 1 >= offset.size()) return {};
+  const auto first = key.begin() + offset[i], last = key.begin() + offset[i + 1];
+  const auto at = std::lower_bound(first, last, j);
+  return at != last && *at == j ? spring[static_cast<std::size_t>(at - key.begin())] : Vec3{};
+}
+
+} // namespace
+
+void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
+                       const Domain3& domain, double skin) {
+  require(skin >= 0.0 && std::isfinite(skin), "the skin must be finite and >= 0 m");
+  for (std::size_t i = 0; i < s.size(); ++i) s.position[i] = domain.wrap(s.position[i], s.image[i]);
+  SphereList next;
+  next.skin = skin;
+  next.builds = list.builds + 1;
+  next.row_offset.assign(1, 0);
+  next.plate_offset.assign(1, 0);
+  if (!s.empty()) {
+    const Grid3 grid = make_grid(s, domain, 2.0 * s.max_radius() + skin);
+    std::vector<Candidate> row;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      row_of(i, s, grid, domain, skin, row);
+      for (const Candidate& c : row) {
+        next.neighbour.push_back(c.j);
+        next.shift.push_back(c.shift);
+        next.spring.push_back(kept_spring(list.row_offset, list.neighbour, list.spring, i, c.j));
+      }
+      next.row_offset.push_back(static_cast<std::uint32_t>(next.neighbour.size()));
+      for (std::uint32_t w = 0; s.is_free(i) && w < plates.size(); ++w) {
+        const double reach = s.radius[i] + skin;
+        if (norm2(s.position[i] - closest_point(plates[w], s.position[i])) >= reach * reach)
+          continue;
+        next.plate.push_back(w);
+        next.plate_spring.push_back(
+            kept_spring(list.plate_offset, list.plate, list.plate_spring, i, w));
+      }
+      next.plate_offset.push_back(static_cast<std::uint32_t>(next.plate.size()));
+    }
+  }
+  next.reference = s.position;
+  for (const Plane& p : plates) next.plate_reference.push_back(p.centre);
+  list = std::move(next);
+}
+
+bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates) {
+  if (list.reference.size() != s.size() || list.plate_reference.size() != plates.size())
+    return true;
+  const double limit2 = 0.25 * list.skin * list.skin;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!(norm2(s.position[i] - list.reference[i]) <= limit2)) return true;
+  for (std::size_t w = 0; w < plates.size(); ++w)
+    if (!(norm2(plates[w].centre - list.plate_reference[w]) <= limit2)) return true;
+  return false;
+}
+
+} // namespace talus

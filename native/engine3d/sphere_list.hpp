@@ -1,0 +1,50 @@
+#pragma once
+// The Verlet list of spheres: every pair within reach (touching, or closer than the skin) as a
+// half list (j > i) in CSR form, each entry with the periodic image of j it takes and the
+// tangential spring of the contact, and every sphere-plate pair with its spring.
+#include <cstdint>
+#include <vector>
+
+#include "engine3d/planes.hpp"
+#include "engine3d/spheres.hpp"
+
+namespace talus {
+
+/// Periodic image of j in a pair entry: j is taken at r_j + (sx L_x, sy L_y, sz L_z).
+struct Shift3 {
+  std::int8_t x = 0, y = 0, z = 0;
+  friend bool operator==(Shift3, Shift3) = default;
+};
+
+struct SphereList {
+  std::vector<std::uint32_t> row_offset; ///< entries row_offset[i] .. row_offset[i+1] have i first
+  std::vector<std::uint32_t> neighbour;  ///< j > i, ascending within a row
+  std::vector<Shift3> shift;
+  std::vector<Vec3> spring; ///< tangential spring (m) of each entry, 0 when not touching
+  std::vector<std::uint32_t> plate_offset; ///< CSR over spheres: their plates within reach
+  std::vector<std::uint32_t> plate;
+  std::vector<Vec3> plate_spring;
+  std::vector<Vec3> reference;       ///< sphere positions at the last build
+  std::vector<Vec3> plate_reference; ///< plate centres at the last build
+  double skin = 0.0;
+  std::uint64_t builds = 0;
+
+  std::size_t pair_count() const { return neighbour.size(); }
+  Vec3 offset(std::size_t entry, const Domain3& d) const {
+    const Vec3 l = d.size();
+    return {shift[entry].x * l.x, shift[entry].y * l.y, shift[entry].z * l.z};
+  }
+};
+
+/// Rebuilds the list with the given skin (m). Wraps positions into the domain along periodic
+/// axes first. Pairs of two spheres that are not free are left out. The springs of pairs still
+/// within reach are carried over. Throws InvalidArgument if a periodic axis is shorter than
+/// three interaction ranges (2 max radius + skin): a sphere would meet j through two images.
+void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
+                       const Domain3& domain, double skin);
+
+/// True when some sphere or plate moved more than half the skin since the last build, or the
+/// spheres or plates are not those of the build.
+bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates);
+
+} // namespace talus

@@ -1,0 +1,108 @@
+// Spheres poured into a box settle: their energy only falls, the bed comes to rest and the floor
+// and the walls carry its weight. And what the 3D engine does not have yet is refused, not run
+// wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "engine3d/simulation3.hpp"
+#include "support/two_body.hpp"
+#include "talus/error.hpp"
+
+namespace talus {
+namespace {
+
+constexpr double g = 9.81;
+
+// n spheres of radius 2 mm +- 10% on a loose lattice above the floor of a 24 mm box.
+Scene3 poured(std::size_t n) {
+  Material m = testing::elastic_material();
+  m.restitution = 0.5;
+  m.friction = 0.5;
+  Scene3 scene;
+  scene.materials = {m};
+  scene.gravity = {0.0, 0.0, -g};
+  const double r = 2e-3, side = 24e-3;
+  scene.plates = box_planes({0.0, 0.0, 0.0}, {side, side, 10.0 * side}, 0, true);
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto at = [&](std::size_t c) { return r * (1.5 + 2.5 * static_cast<double>(c)); };
+  for (std::size_t k = 0; k < n; ++k)
+    scene.add_sphere(
+        {.position = {at(k % 4) + 0.2 * r * u(rng), at((k / 4) % 4) + 0.2 * r * u(rng), at(k / 16)},
+         .radius = r * (1.0 + 0.1 * u(rng))});
+  return scene;
+}
+
+Settings3 settings_for(const Scene3& scene) {
+  const double mass = scene.spheres.mass[0];
+  return {.timestep = linear_collision_time(scene.materials[0].normal_stiffness, 0.0, mass) / 30.0};
+}
+
+// The energy (kinetic, rotational, gravity's and the contacts' elastic) of a bed of damped
+// frictional spheres falls; velocity Verlet lets it swing by O(dt^2) of a contact's energy while a
+// contact loads and unloads, so a rise is allowed up to a thousandth of the energy the fall
+// releases. At rest, the walls carry the weight to a millionth (the bed still creeps).
+TEST(Settling3, ABedPouredIntoABoxComesToRestOnItsFloor) {
+  const Scene3 scene = poured(96);
+  Simulation3 s(scene, settings_for(scene));
+  double weight = 0.0;
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) weight += scene.spheres.mass[i] * g;
+  const double e0 = s.energies().total();
+  double lowest = e0, worst_rise = 0.0;
+  for (int k = 0; k < 400; ++k) {
+    s.run(250);
+    const double e = s.energies().total();
+    worst_rise = std::max(worst_rise, e - lowest);
+    lowest = std::min(lowest, e);
+  }
+  const Energies3 end = s.energies();
+  const double released = e0 - end.total();
+  ASSERT_GT(released, 0.0);
+  EXPECT_LT(worst_rise, 1e-3 * released);
+  EXPECT_LT(end.kinetic + end.rotational, 1e-6 * released);
+  Vec3 on_plates{}; // the floor and, through friction, the sides (Janssen)
+  for (const Plane& p : s.scene().plates) on_plates += p.force;
+  EXPECT_NEAR(-on_plates.z, weight, 1e-6 * weight);
+  // sideways, what is left is the bed's last ringing: the plates' forces balance to 1e-4
+  EXPECT_LT(std::abs(on_plates.x) + std::abs(on_plates.y), 1e-4 * weight);
+  EXPECT_GT(s.contact_count(), scene.spheres.size()); // a bed, not a layer of loose grains
+}
+
+TEST(Refusals3, RollingResistanceIsNotThereYetIn3D) {
+  Scene3 scene = poured(4);
+  scene.materials[0].rolling_friction = 0.1;
+  try {
+    Simulation3 s(scene, settings_for(scene));
+    FAIL() << "rolling resistance ran in 3D";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("rolling_friction is not there yet in 3D"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Refusals3, ASphereMovedByADriverIsNotThereYet) {
+  Scene3 scene;
+  EXPECT_THROW(scene.add_sphere({.position = {}, .radius = 1e-3, .kind = Kind::moved}),
+               InvalidArgument);
+  EXPECT_THROW(scene.add_sphere({.position = {}, .radius = 1e-3, .material = 3}), InvalidArgument);
+}
+
+TEST(Guard3, ATimestepTooLongStopsWithTheOverlapThatShowsIt) {
+  const Scene3 scene = poured(32);
+  Settings3 settings = settings_for(scene);
+  settings.timestep *= 40.0;
+  try {
+    Simulation3 s(scene, settings);
+    s.run(20000);
+    FAIL() << "an unstable run went on";
+  } catch (const InstabilityError& e) {
+    EXPECT_NE(std::string(e.what()).find("overlaps"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace
+} // namespace talus
