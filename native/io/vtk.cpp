@@ -4,21 +4,11 @@
 
 #include "analysis/observables.hpp"
 #include "analysis/stress.hpp"
+#include "io/vtk_arrays.hpp"
 
 namespace talus {
 
-namespace {
-
-template <class F>
-void array(std::string& out, const char* name, int components, std::size_t n, F value) {
-  out += fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                     "format=\"ascii\">\n",
-                     name, components);
-  for (std::size_t i = 0; i < n; ++i) out += value(i) + "\n";
-  out += "        </DataArray>\n";
-}
-
-} // namespace
+using vtk_detail::array;
 
 std::string vtp_particles(const Simulation& sim, bool stress) {
   const Particles& p = sim.world().particles;
@@ -51,13 +41,8 @@ std::string vtp_particles(const Simulation& sim, bool stress) {
   array(out, "position", 3, n, [&](std::size_t i) {
     return fmt::format("{:.12g} {:.12g} 0", p.position[i].x, p.position[i].y);
   });
-  out += "      </Points>\n      <Verts>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}\n", i);
-  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) out += fmt::format("{}\n", i + 1);
-  out += "        </DataArray>\n      </Verts>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
+  out += "      </Points>\n";
+  vtk_detail::end_with_verts(out, n);
   return out;
 }
 
