@@ -37,6 +37,7 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     simple_shear) short=(--set simulation.duration=0.6) ;;
     chute) short=(--set simulation.duration=0.4) ;;
     chute_stop) short=(--set particles.count=100 --set stages.0.duration=0.2 --set stages.1.duration=0.2) ;;
+    pour3d) echo "pour3d: spheres in 3D, run and read back by pour3d_test.sh"; continue ;;
     *) fail "no short version in $0" ;;
   esac
   "$talus" run "$name" "${common[@]}" "${short[@]}" || fail "run"

@@ -11,6 +11,7 @@
 
 #include "cli/analyze/analyses.hpp"
 #include "cli/commands.hpp"
+#include "cli/run/run3d.hpp"
 #include "cli/sweep/analyze_sweep.hpp"
 #include "cli/sweep/sweep.hpp"
 #include "scenario/file/load.hpp"
@@ -239,6 +240,7 @@ void add_analyze_command(CLI::App& app) {
       analyze_sweep(o->dir, w, o->a);
       return;
     }
+    refuse_3d_run_folder(o->dir, "analyze");
     if (w != "all") check_analysis_name(w);
     RunData run{fs::path(o->dir)};
     if (w == "all") {

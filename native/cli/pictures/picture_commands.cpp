@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/pictures/pictures.hpp"
+#include "cli/run/run3d.hpp"
 
 namespace fs = std::filesystem;
 
@@ -37,6 +38,7 @@ void add_picture_commands(CLI::App& app) {
                    "trajectories of the tracked particles (track.csv) up to each frame");
   render->callback([o] {
     const fs::path dir(o->dir);
+    refuse_3d_run_folder(dir, "render");
     const fs::path out = o->out.empty() ? dir / "pictures" : fs::path(o->out);
     const std::size_t n =
         render_run(dir, {o->colour, o->chains, o->tracks}, o->frames, o->width, out);
@@ -59,6 +61,7 @@ void add_picture_commands(CLI::App& app) {
   movie->add_flag("--tracks", o->tracks, "trajectories of the tracked particles");
   movie->callback([o] {
     const fs::path dir(o->dir);
+    refuse_3d_run_folder(dir, "movie");
     const std::size_t n = make_movie(dir, {o->colour, o->chains, o->tracks}, o->fps, o->width);
     fmt::print("wrote {} ({} frames, {} per second)\n", (dir / "movie.mp4").string(), n, o->fps);
   });

@@ -8,12 +8,14 @@
 
 #include "cli/builtin_scenarios.hpp"
 #include "cli/commands.hpp"
+#include "cli/run/run3d.hpp"
 #include "cli/run/run_loop.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/file/load3.hpp"
 #include "scenario/timestep_accuracy.hpp"
 
 namespace fs = std::filesystem;
@@ -71,7 +73,13 @@ void add_run_command(CLI::App& app) {
       ->check(stop_time);
   cmd->add_flag("--quiet", o->run.quiet, "no progress output");
   cmd->callback([o] {
-    const Scenario s = resolve_scenario(o->scenario, o->set);
+    const ScenarioText text = scenario_text(o->scenario);
+    if (scenario_dimension(text, o->set) == 3) {
+      const Scenario3 s = load_scenario3(text.text, text.file, o->set);
+      exit_status() = run_3d(s, o->out.empty() ? "runs/" + s.name : o->out, o->run, o->scenario);
+      return;
+    }
+    const Scenario s = load_scenario(text.text, text.file, o->set);
     const std::string dir = o->out.empty() ? "runs/" + s.name : o->out;
     // the folder and its lock before the settling, which can take minutes
     RunFolder folder = RunFolder::create(dir, s);
@@ -112,6 +120,7 @@ void add_resume_command(CLI::App& app) {
       sweep->quiet = o->quiet;
       exit_status() = run_sweep(*dir, nullptr, *sweep);
     } else {
+      refuse_3d_run_folder(*dir, "resume");
       exit_status() = resume_run(*dir, *o);
     }
   });
@@ -133,6 +142,7 @@ void add_checkpoint_command(CLI::App& app) {
   cmd->callback([dir] {
     // the checkpoint talus resume would continue from
     const fs::path d(*dir);
+    refuse_3d_run_folder(d, "checkpoint");
     const auto [c, book] = checkpoint_to_resume(d, read_file((d / "scenario.toml").string()));
     const Particles& p = c.state.world.particles;
     std::uint64_t h = 1469598103934665603ULL;

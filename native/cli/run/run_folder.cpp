@@ -89,6 +89,10 @@ bool never_checkpointed(const fs::path& dir) {
 }
 
 RunFolder RunFolder::create(const std::string& dir, const Scenario& s) {
+  return create(dir, to_toml(s));
+}
+
+RunFolder RunFolder::create(const std::string& dir, const std::string& scenario_toml) {
   const fs::path d(dir);
   if (fs::exists(d) && !fs::is_directory(d))
     throw InvalidArgument("--out '" + dir + "' is a file, not a folder; choose another with --out");
@@ -107,15 +111,19 @@ RunFolder RunFolder::create(const std::string& dir, const Scenario& s) {
                             dir);
     // a run stopped before its first checkpoint: nothing in it can be continued
   }
-  folder.start_afresh(s);
+  folder.start_afresh(scenario_toml);
   return folder;
 }
 
 void RunFolder::start_afresh(const Scenario& s) {
+  start_afresh(to_toml(s));
+}
+
+void RunFolder::start_afresh(const std::string& scenario_toml) {
   for (const auto& e : fs::directory_iterator(dir_))
     if (e.path().filename() != lock_name) fs::remove_all(e.path());
   fs::create_directories(dir_ / "snapshots");
-  write_file_atomically((dir_ / "scenario.toml").string(), to_toml(s));
+  write_file_atomically((dir_ / "scenario.toml").string(), scenario_toml);
 }
 
 RunFolder RunFolder::open(const std::string& dir) {

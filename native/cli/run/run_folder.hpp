@@ -17,6 +17,8 @@ public:
   /// makes snapshots/ and writes the scenario as scenario.toml. Throws InvalidArgument (naming
   /// the holder's pid, or saying how to continue the run already there) otherwise.
   static RunFolder create(const std::string& dir, const Scenario& s);
+  /// The same with the resolved scenario's text (a 3D scenario's).
+  static RunFolder create(const std::string& dir, const std::string& scenario_toml);
   /// A run folder to resume: takes the lock. Throws InvalidArgument if another process holds it.
   static RunFolder open(const std::string& dir);
 
@@ -29,6 +31,7 @@ public:
   /// Empties the folder but for its lock, makes snapshots/ and writes the scenario as
   /// scenario.toml: a new run's start (a run stopped before its first checkpoint starts again).
   void start_afresh(const Scenario& s);
+  void start_afresh(const std::string& scenario_toml);
   /// Why the folder at path() is no longer the one this object locked (deleted, moved, or
   /// replaced by another run's folder), or empty while it is: the lock file there must be the
   /// one whose lock is held.

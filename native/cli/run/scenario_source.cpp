@@ -6,28 +6,28 @@
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/file/shared_sections.hpp"
 #include "scenario/file/toml_reader.hpp"
 
 namespace fs = std::filesystem;
 
 namespace talus::cli {
 
-// A scenario from a .toml path, a thesis .in path or a built-in name.
-Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides) {
+ScenarioText scenario_text(const std::string& what) {
   // a folder (say, the run folder of a built-in scenario, named after it) is never a scenario
   if (fs::is_regular_file(what)) {
     if (fs::path(what).extension() == ".in") {
       const ThesisFile f = read_thesis_in(read_file(what), what);
-      const Scenario s = scenario_from_thesis(f, fs::path(what).stem().string());
-      return load_scenario(to_toml(s), what + " (converted)", overrides);
+      return {to_toml(scenario_from_thesis(f, fs::path(what).stem().string())),
+              what + " (converted)"};
     }
-    return load_scenario_file(what, overrides);
+    return {read_file(what), what};
   }
   std::string names, best;
   std::size_t best_d = 1000;
   for (const auto& b : builtin_scenarios()) {
     if (b.name == what)
-      return load_scenario(b.text, "inputs/" + std::string(b.name) + "/scenario.toml", overrides);
+      return {std::string(b.text), "inputs/" + std::string(b.name) + "/scenario.toml"};
     names += (names.empty() ? "" : ", ") + std::string(b.name);
     if (const auto d = edit_distance(what, b.name); d < best_d) best_d = d, best = b.name;
   }
@@ -37,6 +37,15 @@ Scenario resolve_scenario(const std::string& what, const std::vector<std::string
           "resume; its scenario is " + (fs::path(what) / "scenario.toml").string() + ")";
   if (best_d <= 3) msg += "; did you mean '" + best + "'?";
   throw InvalidArgument(msg + " (built-in: " + names + ")");
+}
+
+int scenario_dimension(const ScenarioText& t, const std::vector<std::string>& overrides) {
+  return talus::scenario_dimension(parse_with_overrides(t.text, t.file, overrides), t.file);
+}
+
+Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides) {
+  const ScenarioText t = scenario_text(what);
+  return load_scenario(t.text, t.file, overrides);
 }
 
 } // namespace talus::cli

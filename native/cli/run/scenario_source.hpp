@@ -7,8 +7,20 @@
 
 namespace talus::cli {
 
-/// The scenario `what` names, with the --set overrides applied. Throws InvalidArgument listing the
-/// built-in names (and the nearest one) for a name that is neither a file nor built in.
+/// A scenario's TOML text and the name errors give its source by.
+struct ScenarioText {
+  std::string text;
+  std::string file;
+};
+
+/// The text of the scenario `what` names (a thesis .in file converted). Throws InvalidArgument
+/// listing the built-in names (and the nearest one) for a name that is neither a file nor built
+/// in.
+ScenarioText scenario_text(const std::string& what);
+/// simulation.dimension of the text with the overrides applied: 2 or 3.
+int scenario_dimension(const ScenarioText& t, const std::vector<std::string>& overrides);
+
+/// The scenario `what` names, with the --set overrides applied.
 Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides);
 
 } // namespace talus::cli

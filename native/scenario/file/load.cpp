@@ -8,89 +8,15 @@
 
 #include "scenario/file/driver_keys.hpp"
 #include "scenario/file/picture_request.hpp"
+#include "scenario/file/shared_sections.hpp"
+#include "scenario/file/simulation_keys.hpp"
 #include "scenario/file/stages.hpp"
-#include "talus/material_keys.hpp"
 
 namespace talus {
 
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-
-// ---- --set overrides -------------------------------------------------------------------------
-
-toml::node* child(toml::node& parent, const std::string& part, bool create,
-                  const std::string& key) {
-  if (auto* t = parent.as_table()) {
-    if (!t->contains(part)) {
-      if (!create) return nullptr;
-      t->insert(part, toml::table{});
-    }
-    return t->get(part);
-  }
-  if (auto* a = parent.as_array()) {
-    std::size_t idx = 0;
-    try {
-      idx = std::stoul(part);
-    } catch (...) {
-      throw ScenarioError("--set " + key + ": '" + part + "' must be an index into an array");
-    }
-    if (idx >= a->size())
-      throw ScenarioError("--set " + key + ": index " + part + " is past the end of the array (" +
-                          std::to_string(a->size()) + " entries)");
-    return a->get(idx);
-  }
-  throw ScenarioError("--set " + key + ": '" + part + "' is inside a value, not a table");
-}
-
-void apply_override(toml::table& root, const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw ScenarioError("--set '" + assignment +
-                        "': expected key=value, e.g. particles.count=5000");
-  const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
-  // dotted parts; an array index may also be written in brackets: materials[0].friction is
-  // materials.0.friction
-  std::vector<std::string> parts;
-  std::stringstream in(key);
-  for (std::string p; std::getline(in, p, '.');) {
-    std::size_t open = p.find('[');
-    parts.push_back(p.substr(0, open));
-    while (open != std::string::npos) {
-      const std::size_t close = p.find(']', open);
-      if (close == std::string::npos || close == open + 1 ||
-          (close + 1 < p.size() && p[close + 1] != '['))
-        throw ScenarioError("--set " + key + ": '" + p +
-                            "': write an array index as name[0] or name.0");
-      parts.push_back(p.substr(open + 1, close - open - 1));
-      open = close + 1 < p.size() ? close + 1 : std::string::npos;
-    }
-  }
-  toml::node* node = &root;
-  for (std::size_t k = 0; k + 1 < parts.size(); ++k) node = child(*node, parts[k], true, key);
-  // the value's source is the command line: errors about it name "--set KEY=VALUE", not a line
-  // of the scenario file (TableReader::where)
-  const std::string source = "--set " + assignment;
-  toml::table parsed;
-  try {
-    parsed = toml::parse("v = " + value, source);
-  } catch (const toml::parse_error&) {
-    std::string quoted; // a bare word: a string
-    for (const char c : value) {
-      if (c == '"' || c == '\\') quoted += '\\';
-      quoted += c;
-    }
-    try {
-      parsed = toml::parse("v = \"" + quoted + "\"", source);
-    } catch (const toml::parse_error&) {
-      throw ScenarioError(source + ": not a TOML value (a number, \"text\", [a, b] or true)");
-    }
-  }
-  if (auto* t = node->as_table())
-    t->insert_or_assign(parts.back(), std::move(*parsed.get("v")));
-  else
-    throw ScenarioError("--set " + key + ": the parent of '" + parts.back() + "' is not a table");
-}
 
 // ---- sections --------------------------------------------------------------------------------
 
@@ -102,57 +28,17 @@ Rect rect(TableReader& r, std::string_view key) {
 }
 
 void read_simulation(TableReader& r, SimulationSection& s) {
-  s.duration = r.number("duration", s.duration, 0.0, inf, "> 0 s");
-  if (s.duration <= 0.0) r.fail("duration", "must be > 0 s");
-  // a number, or "auto" (the collision time / timestep_factor)
-  if (r.has("timestep")) {
-    if (r.is_number("timestep")) {
-      s.timestep = r.optional_number("timestep", 0.0, inf, "> 0 s or \"auto\"");
-      if (!(*s.timestep > 0.0)) r.fail("timestep", "must be > 0 s or \"auto\"");
-    } else if (r.text("timestep", "auto") != "auto") {
-      r.fail("timestep", "allowed: a number in s, or \"auto\"");
-    }
-  }
-  s.timestep_factor = r.number("timestep_factor", s.timestep_factor, 1.0, 1e6, ">= 1");
+  if (r.integer("dimension", 2, 2, 3) == 3)
+    r.fail("dimension", "3 (spheres) is run by `talus run` alone for now: this command, the Python "
+                        "module and the LAMMPS export take 2D scenarios (docs/scenarios.md, "
+                        "\"Spheres in 3D\"); allowed here: 2");
+  read_clock_and_laws(r, s);
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
-  s.verlet_velocity =
-      parse_verlet_velocity(r.choice("verlet_velocity", "predicted", {"predicted", "half_step"}));
-  s.lever_arm = parse_lever_arm(
-      r.choice("lever_arm", "contact_point", {"contact_point", "radius", "granular"}));
-  s.normal_law = parse_normal_law(r.choice("normal_law", "linear", NormalLaws::names));
-  const std::string damping = r.choice("linear_damping", "never_attractive", linear_damping_names);
-  for (std::size_t k = 0; k < linear_damping_names.size(); ++k)
-    if (damping == linear_damping_names[k]) s.linear_damping = static_cast<LinearDamping>(k);
-  if (s.linear_damping != LinearDamping::never_attractive &&
-      s.normal_law != law_id<LinearSpringDashpot>)
-    r.fail("linear_damping", "applies to the linear normal law only (the Hertz law's dashpot never "
-                             "pulls); allowed with normal_law = \"" +
-                                 std::string(name_of(s.normal_law)) + "\": never_attractive");
-  s.tangential_law =
-      parse_tangential_law(r.choice("tangential_law", "cundall_strack", TangentialLaws::names));
   s.gravity = r.vec2("gravity", s.gravity);
-  s.seed = static_cast<std::uint64_t>(r.integer("seed", static_cast<std::int64_t>(s.seed), 0,
-                                                std::numeric_limits<std::int64_t>::max()));
   s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
-  s.skin = r.number("skin", s.skin, 0.0, inf, ">= 0 m (0: automatic)");
   s.sort_every =
       static_cast<std::uint64_t>(r.integer("sort_every", static_cast<std::int64_t>(s.sort_every), 0,
                                            std::numeric_limits<std::int64_t>::max()));
-  s.impact_speed = r.number("impact_speed", s.impact_speed, 1e-9, inf, "> 0 m/s");
-}
-
-Material read_material(TableReader& r, std::size_t index) {
-  Material m;
-  m.name = r.text("name", "material" + std::to_string(index));
-  for (const MaterialKey& k : material_keys) {
-    const double x = r.number(k.name, k.fallback, k.minus_one_derives ? -1.0 : k.lowest, k.highest,
-                              k.allowed.data());
-    if (!allowed_value(k, x))
-      r.fail(k.name, fmt::format("{:g} is out of range; allowed: {}", x, k.allowed));
-    m.*k.field = x;
-  }
-  m.rigid = r.boolean("rigid", false);
-  return m;
 }
 
 // A name thermo.csv's columns (force_NAME_x) and a driver's target can carry.
@@ -160,25 +46,6 @@ bool is_group_name(const std::string& name) {
   return !name.empty() && name.find_first_not_of(
                               "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
                               std::string::npos;
-}
-
-void read_size(TableReader& r, SizeSpec& s) {
-  s.distribution = r.choice("distribution", "uniform", {"uniform", "wentworth", "discrete"});
-  s.mean_radius = r.number("mean_radius", s.mean_radius, 1e-12, inf, "> 0 m");
-  s.spread = r.number("spread", s.spread, 0.0, inf, ">= 0 m");
-  if (s.spread >= s.mean_radius) r.fail("spread", "must be smaller than mean_radius");
-  s.wentworth_class = r.text("class", "");
-  s.radii = r.numbers("radii", 1e-12, inf, "> 0 m");
-  s.fractions = r.numbers("fractions", 0.0, 1.0, "[0, 1]");
-  if (s.distribution == "wentworth" && s.wentworth_class.empty())
-    r.fail("class", "required with distribution = \"wentworth\"");
-  if (s.distribution == "discrete") {
-    if (s.radii.empty() || s.radii.size() != s.fractions.size())
-      r.fail("fractions", "distribution = \"discrete\" needs radii and fractions of equal length");
-    double sum = 0.0;
-    for (const double f : s.fractions) sum += f;
-    if (std::abs(sum - 1.0) > 1e-9) r.fail("fractions", "must add up to 1");
-  }
 }
 
 void read_particles(TableReader& r, ParticlesSection& p, const std::string& file) {
@@ -351,15 +218,6 @@ void read_frost(TableReader& r, FrostSection& f) {
 }
 
 // Reads the table at `name` (if present) with `read`, then rejects any key it did not read.
-template <class F>
-void section(TableReader& top, const char* name, const std::string& file, F&& read) {
-  if (const toml::table* t = top.table(name)) {
-    TableReader r(*t, file, name);
-    read(r);
-    r.finish();
-  }
-}
-
 } // namespace
 
 namespace {
@@ -376,13 +234,7 @@ std::string source_of(const toml::table& root, const std::string& path, const st
 } // namespace
 
 std::uint16_t material_index(const Scenario& s, const std::string& name, const std::string& key) {
-  if (name.empty()) return 0;
-  std::string names;
-  for (std::size_t i = 0; i < s.materials.size(); ++i) {
-    if (s.materials[i].name == name) return static_cast<std::uint16_t>(i);
-    names += (names.empty() ? "" : ", ") + s.materials[i].name;
-  }
-  throw ScenarioError("key '" + key + "': no material named '" + name + "'; defined: " + names);
+  return material_index(s.materials, name, key);
 }
 
 namespace {
@@ -422,31 +274,15 @@ void settle_stages(Scenario& s, const toml::table& root, const std::string& file
 Scenario load_root(const toml::table& root, const std::string& file, bool check_stages) {
   Scenario s;
   TableReader top(root, file, "");
-  s.name = top.text("name", s.name);
-  // the name makes the default run folder runs/NAME: one plain folder name, nothing that climbs
-  if (s.name.empty() || s.name == "." || s.name == ".." ||
-      s.name.find_first_not_of(
-          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
-    top.fail("name", "'" + s.name +
-                         "'; allowed: letters, digits, '_', '-' and '.' (it names the "
-                         "run folder runs/NAME)");
+  s.name = read_name(top, s.name);
   s.description = top.text("description", "");
   if (const toml::table* t = top.table("simulation")) {
     TableReader r(*t, file, "simulation");
     read_simulation(r, s.simulation);
     r.finish();
   }
+  s.materials = read_materials(top, file);
   std::size_t k = 0;
-  for (const toml::table* t : top.tables("materials")) {
-    TableReader r(*t, file, "materials." + std::to_string(k));
-    s.materials.push_back(read_material(r, k++));
-    r.finish();
-  }
-  if (s.materials.empty()) {
-    Material m; // every key at its default
-    m.name = "grain";
-    s.materials.push_back(m);
-  }
   section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
   section(top, "packing", file, [&](TableReader& r) { read_packing(r, s.packing); });
   section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry, file); });
@@ -478,10 +314,6 @@ Scenario load_root(const toml::table& root, const std::string& file, bool check_
   for (std::size_t i = 0; i < s.particles.list.size(); ++i)
     check_material(s.particles.list[i].material, "particles.list.material",
                    fmt::format("particles.list[{}].material", i));
-  for (std::size_t m = 0; m < s.materials.size(); ++m)
-    for (std::size_t n = m + 1; n < s.materials.size(); ++n)
-      if (s.materials[m].name == s.materials[n].name)
-        throw ScenarioError(file + ": two materials are named '" + s.materials[m].name + "'");
   const bool tracking = !s.track.ids.empty() || s.track.select != "none";
   for (const std::string& p : s.output.pictures)
     if (parse_picture_request(p).tracks && !tracking)
@@ -495,15 +327,7 @@ Scenario load_root(const toml::table& root, const std::string& file, bool check_
 
 Scenario load_scenario(std::string_view text, const std::string& file,
                        const std::vector<std::string>& overrides) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw ScenarioError(file + ":" + std::to_string(e.source().begin.line) + ": " +
-                        std::string(e.description()));
-  }
-  for (const auto& o : overrides) apply_override(root, o);
-  return load_root(root, file, true);
+  return load_root(parse_with_overrides(text, file, overrides), file, true);
 }
 
 Scenario load_scenario_file(const std::string& path, const std::vector<std::string>& overrides) {

@@ -7,7 +7,8 @@
 #include <fmt/format.h>
 
 #include "scenario/file/load.hpp"
-#include "talus/material_keys.hpp"
+#include "scenario/file/shared_sections.hpp"
+#include "scenario/file/simulation_keys.hpp"
 
 namespace talus {
 
@@ -18,11 +19,6 @@ toml::array vec(Vec2 v) {
 }
 toml::array rect(const Rect& r) {
   return toml::array{r.lo.x, r.lo.y, r.hi.x, r.hi.y};
-}
-toml::array list(const std::vector<double>& v) {
-  toml::array a;
-  for (const double x : v) a.push_back(x);
-  return a;
 }
 
 // toml++ writes a float with 17 significant digits (0.10000000000000001 for 0.1): each float
@@ -79,45 +75,16 @@ std::string shortest_floats(const std::string& text) {
 
 toml::table simulation_table(const SimulationSection& sim) {
   toml::table t;
-  t.insert("duration", sim.duration);
-  if (sim.timestep)
-    t.insert("timestep", *sim.timestep);
-  else
-    t.insert("timestep", "auto");
-  t.insert("timestep_factor", sim.timestep_factor);
+  write_clock_and_laws(t, sim);
   t.insert("integrator", std::string(to_string(sim.integrator)));
-  t.insert("verlet_velocity", std::string(to_string(sim.verlet_velocity)));
-  t.insert("lever_arm", std::string(to_string(sim.lever_arm)));
-  t.insert("normal_law", std::string(name_of(sim.normal_law)));
-  t.insert("linear_damping", std::string(to_string(sim.linear_damping)));
-  t.insert("tangential_law", std::string(name_of(sim.tangential_law)));
   t.insert("gravity", vec(sim.gravity));
-  t.insert("seed", static_cast<std::int64_t>(sim.seed));
   t.insert("threads", sim.threads);
-  t.insert("skin", sim.skin);
   t.insert("sort_every", static_cast<std::int64_t>(sim.sort_every));
-  t.insert("impact_speed", sim.impact_speed);
   return t;
 }
 
-toml::array materials_array(const std::vector<Material>& materials) {
-  toml::array out;
-  for (const Material& m : materials) {
-    toml::table row{{"name", m.name}};
-    for (const MaterialKey& k : material_keys) row.insert(k.name, m.*k.field);
-    row.insert("rigid", m.rigid);
-    out.push_back(std::move(row));
-  }
-  return out;
-}
-
 toml::table particles_table(const ParticlesSection& p) {
-  toml::table size{{"distribution", p.size.distribution},
-                   {"mean_radius", p.size.mean_radius},
-                   {"spread", p.size.spread},
-                   {"class", p.size.wentworth_class},
-                   {"radii", list(p.size.radii)},
-                   {"fractions", list(p.size.fractions)}};
+  const toml::table size = size_table(p.size);
   toml::array explicit_list;
   for (const ExplicitParticle& e : p.list) {
     toml::table t{{"position", vec(e.position)},

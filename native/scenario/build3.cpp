@@ -1,0 +1,113 @@
+#include "scenario/build3.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/random.hpp"
+#include "materials/pair_table.hpp"
+#include "scenario/file/load3.hpp"
+#include "scenario/size_distribution.hpp"
+
+namespace talus {
+
+namespace {
+
+// Where each sphere goes: a lattice of spacing a over the box, layers from the floor up.
+std::vector<Vec3> lattice_sites(const Scenario3& s, double a, RandomStream& rng) {
+  const Box3Section& g = s.geometry;
+  const Vec3 size = g.hi - g.lo;
+  const auto fit = [&](double length) { return static_cast<std::size_t>(std::floor(length / a)); };
+  const std::size_t nx = fit(size.x), ny = fit(size.y), nz = fit(size.z);
+  const std::size_t room = nx * ny * nz;
+  if (s.particles.count > room) {
+    std::ostringstream msg;
+    msg << "key 'particles.count': " << s.particles.count
+        << " spheres do not fit the box: it holds " << room
+        << " on a lattice of spacing 2.2 R_max = " << a
+        << " m; allowed: at most that, or a larger geometry.box";
+    throw ScenarioError(msg.str());
+  }
+  std::vector<Vec3> sites;
+  for (std::size_t k = 0; k < s.particles.count; ++k) {
+    const std::size_t i = k % nx, j = (k / nx) % ny, l = k / (nx * ny);
+    const auto nudge = [&] { return 0.05 * a * rng.uniform(-1.0, 1.0); };
+    sites.push_back(g.lo + Vec3{a * (0.5 + static_cast<double>(i)) + nudge(),
+                                a * (0.5 + static_cast<double>(j)) + nudge(),
+                                a * (0.5 + static_cast<double>(l)) + nudge()});
+  }
+  return sites;
+}
+
+std::vector<Plane> box_sides(const Box3Section& g, std::uint16_t material) {
+  std::vector<Plane> out;
+  for (int k = 0; k < 3; ++k) {
+    if (g.periodic[static_cast<std::size_t>(k)]) continue;
+    Vec3 normal{};
+    component(normal, k) = 1.0;
+    out.push_back(make_plane(g.lo, normal, unbounded, unbounded, material));
+    if (k == 2 && g.open_top) continue;
+    out.push_back(make_plane(g.hi, -normal, unbounded, unbounded, material));
+  }
+  return out;
+}
+
+// The shortest collision time of the pairs that can meet: two of the smallest spheres, and
+// the smallest against the walls.
+double shortest_collision_time(const Scene3& scene, const Settings3& c, double r_min,
+                               std::uint16_t grain, std::uint16_t wall) {
+  const PairTable pairs(scene.materials, c.impact_speed, c.linear_damping);
+  const double m = shape_mass(Shape::sphere, r_min, scene.materials[grain].density);
+  const auto t_c = [&](std::uint16_t other, double m_eff, double r_eff) {
+    return with_normal_law(c.normal_law, [&]<class N>() {
+      return N::collision_time(pairs(grain, other), m_eff, r_eff, c.impact_speed);
+    });
+  };
+  double shortest = t_c(grain, 0.5 * m, 0.5 * r_min);
+  if (!scene.plates.empty()) shortest = std::min(shortest, t_c(wall, m, r_min));
+  return shortest;
+}
+
+} // namespace
+
+BuiltScenario3 build_scenario3(const Scenario3& s) {
+  BuiltScenario3 out;
+  Scene3& scene = out.scene;
+  scene.materials = s.materials;
+  scene.gravity = s.simulation.gravity;
+  scene.domain = {.lo = s.geometry.lo, .hi = s.geometry.hi, .periodic = s.geometry.periodic};
+  const std::uint16_t grain = material_index(s, s.particles.material, "particles.material");
+  const std::uint16_t wall = material_index(s, s.geometry.wall_material, "geometry.wall_material");
+  scene.plates = box_sides(s.geometry, wall);
+  RandomStream sizes(s.simulation.seed, 1), places(s.simulation.seed, 2);
+  const auto [r_min, r_max] = radius_range(s.particles.size);
+  const std::vector<Vec3> sites = lattice_sites(s, 2.2 * r_max, places);
+  for (const Vec3& site : sites)
+    scene.add_sphere(
+        {.position = site, .radius = draw_radius(s.particles.size, sizes), .material = grain});
+  const Simulation3Section& sim = s.simulation;
+  Settings3& c = out.settings;
+  c.normal_law = sim.normal_law;
+  c.tangential_law = sim.tangential_law;
+  c.verlet_velocity = sim.verlet_velocity;
+  c.skin = sim.skin;
+  c.impact_speed = sim.impact_speed;
+  c.lever_arm = sim.lever_arm;
+  c.linear_damping = sim.linear_damping;
+  out.collision_time = shortest_collision_time(scene, c, r_min, grain, wall);
+  c.timestep = out.collision_time / sim.timestep_factor;
+  if (sim.timestep) {
+    if (*sim.timestep > out.collision_time / 5.0) {
+      std::ostringstream msg;
+      msg << "key 'simulation.timestep': " << *sim.timestep
+          << " s resolves the shortest collision (" << out.collision_time
+          << " s) in fewer than 5 steps; allowed: <= " << out.collision_time / 5.0
+          << " s, or \"auto\" (collision time / " << sim.timestep_factor << ")";
+      throw ScenarioError(msg.str());
+    }
+    c.timestep = *sim.timestep;
+  }
+  return out;
+}
+
+} // namespace talus

@@ -1,0 +1,146 @@
+#include "scenario/file/load3.hpp"
+
+#include <limits>
+#include <sstream>
+
+#include "scenario/file/load.hpp"
+#include "scenario/file/shared_sections.hpp"
+#include "scenario/file/simulation_keys.hpp"
+
+namespace talus {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// What 2D scenarios have and the 3D engine does not, with where the engine stands.
+constexpr const char* not_in_3d =
+    " is not there yet in 3D (simulation.dimension = 3); docs/scenarios.md, \"Spheres in 3D\", "
+    "lists what is";
+
+Vec3 vec3(TableReader& r, std::string_view key, Vec3 fallback) {
+  if (!r.has(key)) return fallback;
+  const std::vector<double> v = r.numbers(key, -inf, inf, "finite numbers");
+  if (v.size() != 3) r.fail(key, "expected [x, y, z]");
+  return {v[0], v[1], v[2]};
+}
+
+void read_simulation(TableReader& r, Simulation3Section& s) {
+  r.integer("dimension", 3, 3, 3);
+  read_clock_and_laws(r, s);
+  if (r.choice("integrator", "verlet", {"gear", "verlet"}) == "gear")
+    r.fail("integrator", std::string("\"gear\"") + not_in_3d + "; allowed: verlet");
+  s.gravity = vec3(r, "gravity", s.gravity);
+  for (const char* key : {"threads", "sort_every"})
+    if (r.has(key))
+      r.fail(key, std::string(key) + not_in_3d + " (the 3D engine runs on one thread)");
+}
+
+void read_particles(TableReader& r, Particles3Section& p, const std::string& file) {
+  p.count = static_cast<std::size_t>(r.integer("count", 0, 0, 100'000'000));
+  if (r.choice("shape", "sphere", {"disk", "sphere"}) == "disk")
+    r.fail("shape", "a 3D scenario's grains are spheres; allowed: sphere");
+  p.material = r.text("material", "");
+  if (const toml::table* t = r.table("size")) {
+    TableReader sr(*t, file, r.qualified("size"));
+    read_size(sr, p.size);
+    sr.finish();
+  }
+  if (r.has("list")) r.fail("list", std::string("an explicit list of grains") + not_in_3d);
+}
+
+void read_geometry(TableReader& r, Box3Section& g) {
+  r.choice("builder", "box", {"box"});
+  if (r.has("box")) {
+    const std::vector<double> v = r.numbers("box", -inf, inf, "finite numbers");
+    if (v.size() != 6 || !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
+      r.fail("box", "expected [x_min, y_min, z_min, x_max, y_max, z_max] in m, each max above "
+                    "its min");
+    g.lo = {v[0], v[1], v[2]};
+    g.hi = {v[3], v[4], v[5]};
+  }
+  const std::string periodic =
+      r.choice("periodic", "none", {"none", "x", "y", "z", "xy", "xz", "yz", "xyz"});
+  for (std::size_t k = 0; k < 3; ++k)
+    g.periodic[k] = periodic.find(static_cast<char>('x' + k)) != std::string::npos;
+  g.open_top = r.boolean("open_top", g.open_top);
+  if (g.periodic[2] && r.has("open_top"))
+    r.fail("open_top", "a box periodic along z has no top or floor");
+  g.wall_material = r.text("wall_material", "");
+}
+
+void read_output(TableReader& r, Output3Section& o) {
+  o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
+  o.snapshot_interval =
+      r.number("snapshot_interval", o.snapshot_interval, 0.0, inf, ">= 0 s (0: none)");
+}
+
+Scenario3 load_root(const toml::table& root, const std::string& file) {
+  Scenario3 s;
+  TableReader top(root, file, "");
+  s.name = read_name(top, s.name);
+  s.description = top.text("description", "");
+  section(top, "simulation", file, [&](TableReader& r) { read_simulation(r, s.simulation); });
+  s.materials = read_materials(top, file);
+  section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
+  section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry); });
+  section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
+  for (const char* name : {"packing", "drivers", "track", "frost", "stages"})
+    if (top.has(name)) top.fail(name, std::string("[") + name + "]" + not_in_3d);
+  top.finish();
+  try {
+    material_index(s, s.particles.material, "particles.material");
+    material_index(s, s.geometry.wall_material, "geometry.wall_material");
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(file + ": " + e.what());
+  }
+  return s;
+}
+
+toml::array vec(const Vec3& v) {
+  return toml::array{v.x, v.y, v.z};
+}
+
+} // namespace
+
+std::uint16_t material_index(const Scenario3& s, const std::string& name, const std::string& key) {
+  return material_index(s.materials, name, key);
+}
+
+Scenario3 load_scenario3(std::string_view text, const std::string& file,
+                         const std::vector<std::string>& overrides) {
+  return load_root(parse_with_overrides(text, file, overrides), file);
+}
+
+std::string to_toml(const Scenario3& s) {
+  toml::table sim{
+      {"dimension", 3}, {"integrator", "verlet"}, {"gravity", vec(s.simulation.gravity)}};
+  write_clock_and_laws(sim, s.simulation);
+  std::string periodic;
+  for (std::size_t k = 0; k < 3; ++k)
+    if (s.geometry.periodic[k]) periodic += static_cast<char>('x' + k);
+  toml::table geometry{{"builder", "box"},
+                       {"box", toml::array{s.geometry.lo.x, s.geometry.lo.y, s.geometry.lo.z,
+                                           s.geometry.hi.x, s.geometry.hi.y, s.geometry.hi.z}},
+                       {"periodic", periodic.empty() ? "none" : periodic},
+                       {"wall_material", s.geometry.wall_material}};
+  if (!s.geometry.periodic[2]) geometry.insert("open_top", s.geometry.open_top);
+  toml::table root{
+      {"name", s.name},
+      {"description", s.description},
+      {"simulation", sim},
+      {"materials", materials_array(s.materials)},
+      {"particles", toml::table{{"count", static_cast<std::int64_t>(s.particles.count)},
+                                {"shape", "sphere"},
+                                {"material", s.particles.material},
+                                {"size", size_table(s.particles.size)}}},
+      {"geometry", geometry},
+      {"output", toml::table{{"thermo_interval", s.output.thermo_interval},
+                             {"snapshot_interval", s.output.snapshot_interval}}}};
+  std::ostringstream out;
+  out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
+      << root << "\n";
+  return with_shortest_floats(out.str());
+}
+
+} // namespace talus

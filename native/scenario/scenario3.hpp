@@ -1,0 +1,66 @@
+#pragma once
+// A scenario of spheres in 3D (simulation.dimension = 3), typed and in SI units with every
+// default filled: what the 3D engine has (docs/scenarios.md, "Spheres in 3D"). The loader
+// (file/load3.hpp) makes one from TOML; build3.hpp makes a Scene3 from one.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec3.hpp"
+#include "integrate/integrator.hpp"
+#include "materials/material.hpp"
+#include "scenario/scenario.hpp"
+#include "talus/law_table.hpp"
+#include "talus/timestep_advice.hpp"
+
+namespace talus {
+
+struct Simulation3Section {
+  double duration = 1.0;                            ///< s
+  std::optional<double> timestep;                   ///< s; empty: "auto"
+  double timestep_factor = default_timestep_factor; ///< auto timestep = shortest t_c / factor
+  VerletVelocity verlet_velocity = VerletVelocity::predicted;
+  LeverArm lever_arm = LeverArm::contact_point;
+  LinearDamping linear_damping = LinearDamping::never_attractive;
+  NormalLaw normal_law = law_id<LinearSpringDashpot>;
+  TangentialLaw tangential_law = law_id<CundallStrack>;
+  Vec3 gravity{0.0, 0.0, -9.81}; ///< m/s^2
+  std::uint64_t seed = 1;
+  double skin = 0.0;         ///< m; 0: half the largest radius
+  double impact_speed = 1.0; ///< m/s: reference speed for Hertz collision times
+};
+
+struct Particles3Section {
+  std::size_t count = 0;
+  SizeSpec size;
+  std::string material;
+};
+
+/// A box of plates: a face on each side of every axis that does not wrap, the top (z = hi)
+/// left out when open_top.
+struct Box3Section {
+  Vec3 lo{0.0, 0.0, 0.0};
+  Vec3 hi{0.05, 0.05, 0.1};
+  std::array<bool, 3> periodic{false, false, false};
+  bool open_top = true;
+  std::string wall_material;
+};
+
+struct Output3Section {
+  double thermo_interval = 0.01;  ///< s
+  double snapshot_interval = 0.1; ///< s; 0: none
+};
+
+struct Scenario3 {
+  std::string name = "scenario";
+  std::string description;
+  Simulation3Section simulation;
+  std::vector<Material> materials;
+  Particles3Section particles;
+  Box3Section geometry;
+  Output3Section output;
+};
+
+} // namespace talus

@@ -1,0 +1,39 @@
+#!/bin/sh
+# The built-in 3D scenario, short: talus run writes thermo.csv, run.json and snapshots that VTK's
+# reader opens (read_vtk3d.py), the spheres come to rest in the box, and the commands that take
+# 2D runs refuse the folder with the reason.
+set -e
+talus="$1"
+here="$(dirname "$0")"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+run="$dir/run"
+"$talus" run pour3d --out "$run" --quiet --set particles.count=120 --set simulation.duration=0.3 \
+  --set output.snapshot_interval=0.05
+for f in thermo.csv run.json scenario.toml particles.pvd walls.pvd; do
+  [ -s "$run/$f" ] || { echo "FAIL: no $f"; exit 1; }
+done
+head -1 "$run/thermo.csv" | grep -q "^time,step,kinetic,rotational,potential,elastic,total,contacts" \
+  || { echo "FAIL: thermo.csv header"; exit 1; }
+/usr/bin/python3 - "$run/thermo.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+first, last = rows[0], rows[-1]
+fallen = float(first["potential"]) - float(last["potential"])
+assert fallen > 0, (first, last)
+# at rest in the box: the motion left is a speck of what the fall released
+assert float(last["kinetic"]) < 1e-3 * fallen, (last["kinetic"], fallen)
+assert int(last["contacts"]) > 120, last["contacts"]
+# the energy only fell (the Verlet swing of a contact allowed, a thousandth of what fell)
+totals = [float(r["total"]) for r in rows]
+assert all(b <= a + 1e-3 * fallen for a, b in zip(totals, totals[1:])), "the energy grew"
+print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
+PY
+/usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
+for command in render movie analyze resume; do
+  if "$talus" "$command" "$run" > "$dir/out.txt" 2>&1; then echo "FAIL: $command took a 3D run"; exit 1; fi
+  grep -q "is a run of spheres in 3D" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+done
+# and a resolved 3D scenario reruns as it is
+"$talus" run "$run/scenario.toml" --out "$dir/again" --quiet --set simulation.duration=0.01
+echo "pour3d: run, snapshots read back, 2D commands refuse it"
