@@ -35,6 +35,9 @@ struct Settings3 {
   LinearDamping linear_damping = LinearDamping::never_attractive;
   /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
   double max_overlap_fraction = 0.5;
+  /// 0: all cores. Results are bit-identical for any count; fewer are taken for a small scene
+  /// (Simulation3::threads).
+  int threads = 0;
 };
 
 } // namespace talus

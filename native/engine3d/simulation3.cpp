@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include <omp.h>
+
 #include "talus/error.hpp"
 
 namespace talus {
@@ -52,6 +54,10 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   validate(scene_, settings_);
   table_ = PairTable(scene_.materials, settings_.impact_speed, settings_.linear_damping);
   lag_ = verlet_lag(settings_.verlet_velocity);
+  require(settings_.threads >= 0, "simulation.threads must be >= 0 (0: all cores)");
+  const int asked = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+  const auto worth = static_cast<int>(std::max<std::size_t>(1, scene_.spheres.size() / 500));
+  threads_ = std::max(1, std::min(asked, worth));
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
   compute_forces();
@@ -60,11 +66,14 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
 
 void Simulation3::compute_forces() {
   Spheres& s = scene_.spheres;
-  for (std::size_t i = 0; i < s.size(); ++i) {
+  const auto n = static_cast<std::ptrdiff_t>(s.size());
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     s.force[i] = s.is_free(i) ? s.mass[i] * scene_.gravity : Vec3{};
     s.torque[i] = {};
   }
-  last_ = add_contact_forces(scene_, list_, table_, settings_);
+  last_ = force_pass_.add(scene_, list_, table_, settings_, threads_);
 }
 
 // Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
@@ -72,7 +81,10 @@ void Simulation3::compute_forces() {
 void Simulation3::step() {
   Spheres& s = scene_.spheres;
   const double dt = settings_.timestep, half = 0.5 * dt;
-  for (std::size_t i = 0; i < s.size(); ++i) {
+  const auto n = static_cast<std::ptrdiff_t>(s.size());
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     const Vec3 kick = (half * s.inv_mass[i]) * s.force[i];
     s.position[i] += dt * (s.velocity[i] + kick);
     s.velocity[i] += (1.0 + lag_) * kick;
@@ -87,7 +99,9 @@ void Simulation3::step() {
     build_sphere_list(list_, s, scene_.plates, scene_.domain, resolved_skin(scene_, settings_));
   }
   compute_forces();
-  for (std::size_t i = 0; i < s.size(); ++i) {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::ptrdiff_t k = 0; k < n; ++k) {
+    const auto i = static_cast<std::size_t>(k);
     s.velocity[i] += (half * s.inv_mass[i]) * (s.force[i] - lag_ * s.force_previous[i]);
     s.angular_velocity[i] +=
         (half * s.inv_inertia[i]) * (s.torque[i] - lag_ * s.torque_previous[i]);
@@ -114,13 +128,9 @@ void Simulation3::guard() const {
   }
   if (last_.deepest <= settings_.max_overlap_fraction) return;
   std::ostringstream msg;
-  msg << "at step " << steps_ << " (t = " << time_ << " s) sphere " << s.id[last_.deepest_i];
-  if (last_.deepest_j >= 0)
-    msg << " overlaps sphere " << s.id[static_cast<std::size_t>(last_.deepest_j)];
-  else
-    msg << " overlaps plate " << last_.deepest_plate;
-  msg << " by " << last_.deepest
-      << " of the smaller radius (allowed: " << settings_.max_overlap_fraction
+  msg << "at step " << steps_ << " (t = " << time_ << " s) "
+      << deepest_contact(scene_, list_, settings_)
+      << " (allowed: " << settings_.max_overlap_fraction
       << "): the contact is too soft for the load, or the timestep too long";
   throw InstabilityError(msg.str());
 }

@@ -4,7 +4,7 @@
 // What it has: spheres (free or fixed), plates (fixed or translating), gravity, periodic axes,
 // every law pair of the table, the Verlet list with its springs, the stability guard. What it
 // does not have yet is refused where it is set (Simulation3's constructor, Spheres::add):
-// rolling resistance, moved spheres, Gear. Single-threaded.
+// rolling resistance, moved spheres, Gear. Its results are bit-identical for any thread count.
 #include <cstdint>
 
 #include "engine3d/force_pass3.hpp"
@@ -42,6 +42,8 @@ public:
   const SphereList& list() const { return list_; }
   /// The touching contacts of the last force pass.
   std::size_t contact_count() const { return last_.contacts; }
+  /// The threads it runs on: those asked (all cores for 0), but at most one per 500 spheres.
+  int threads() const { return threads_; }
   Energies3 energies() const;
 
 private:
@@ -52,7 +54,9 @@ private:
   Settings3 settings_;
   PairTable table_;
   SphereList list_;
+  ForcePass3 force_pass_;
   ContactPass3 last_;
+  int threads_ = 1;
   double lag_ = 1.0;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;

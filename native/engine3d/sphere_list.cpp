@@ -176,6 +176,13 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
       next.plate_offset.push_back(static_cast<std::uint32_t>(next.plate.size()));
     }
   }
+  next.second_offset.assign(s.size() + 1, 0);
+  for (const std::uint32_t j : next.neighbour) ++next.second_offset[j + 1];
+  for (std::size_t k = 0; k < s.size(); ++k) next.second_offset[k + 1] += next.second_offset[k];
+  next.second_entry.resize(next.neighbour.size());
+  std::vector<std::uint32_t> fill(next.second_offset.begin(), next.second_offset.end() - 1);
+  for (std::uint32_t e = 0; e < next.neighbour.size(); ++e)
+    next.second_entry[fill[next.neighbour[e]]++] = e;
   next.reference = s.position;
   for (const Plane& p : plates) next.plate_reference.push_back(p.centre);
   list = std::move(next);

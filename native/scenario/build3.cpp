@@ -91,6 +91,7 @@ BuiltScenario3 build_scenario3(const Scenario3& s) {
   c.tangential_law = sim.tangential_law;
   c.verlet_velocity = sim.verlet_velocity;
   c.skin = sim.skin;
+  c.threads = sim.threads;
   c.impact_speed = sim.impact_speed;
   c.lever_arm = sim.lever_arm;
   c.linear_damping = sim.linear_damping;

@@ -28,6 +28,7 @@ struct Simulation3Section {
   TangentialLaw tangential_law = law_id<CundallStrack>;
   Vec3 gravity{0.0, 0.0, -9.81}; ///< m/s^2
   std::uint64_t seed = 1;
+  int threads = 0;           ///< 0: all cores (results identical for any count)
   double skin = 0.0;         ///< m; 0: half the largest radius
   double impact_speed = 1.0; ///< m/s: reference speed for Hertz collision times
 };

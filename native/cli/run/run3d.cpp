@@ -55,10 +55,10 @@ std::string run_json(const Scenario3& s, const Simulation3& sim, const BuiltScen
       "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"dimension\": 3,\n"
       "  \"seed\": {},\n  \"particles\": {},\n  \"plates\": {},\n  \"steps\": {},\n"
       "  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n  \"collision_time\": {:.9g},\n"
-      "  \"integrator\": \"verlet\",\n  \"threads\": 1,\n  \"wall_seconds\": {:.6f},\n"
+      "  \"integrator\": \"verlet\",\n  \"threads\": {},\n  \"wall_seconds\": {:.6f},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"ended_by\": \"{}\"\n}}\n",
       TALUS_VERSION, s.name, s.simulation.seed, n, sim.scene().plates.size(), sim.step_count(),
-      sim.time(), sim.settings().timestep, b.collision_time, wall, rate, ended);
+      sim.time(), sim.settings().timestep, b.collision_time, sim.threads(), wall, rate, ended);
 }
 
 BuiltScenario3 build_or_discard(const Scenario3& s, RunFolder& folder, const std::string& source) {
@@ -99,15 +99,23 @@ int run_3d(const Scenario3& s, const std::string& dir, const RunOptions& o,
   catch_stop_signals();
   BuiltScenario3 built = build_or_discard(s, folder, source);
   const std::size_t n = built.scene.spheres.size(), plates = built.scene.plates.size();
+  if (o.threads >= 0) built.settings.threads = o.threads;
+  Simulation3 sim = [&] {
+    try {
+      return Simulation3(built.scene, built.settings);
+    } catch (...) { // nothing left behind
+      folder.discard();
+      throw;
+    }
+  }();
   if (!o.quiet) {
     fmt::print("talus run {}: {}\n", s.name,
                s.description.empty() ? "(no description)" : s.description);
-    fmt::print("  {} spheres, {} plates (3D); dt = {:.4g} s (collision time {:.4g} s){}\n", n,
-               plates, built.settings.timestep, built.collision_time,
-               o.threads > 1 ? "; one thread (the 3D engine has no threads yet)" : "");
+    fmt::print("  {} spheres, {} plates (3D); dt = {:.4g} s (collision time {:.4g} s); {} "
+               "thread(s)\n",
+               n, plates, built.settings.timestep, built.collision_time, sim.threads());
   }
   Snapshots3 snapshots{folder.path(), norm(s.geometry.hi - s.geometry.lo), {}, {}};
-  Simulation3 sim(built.scene, built.settings);
   const double dt = built.settings.timestep;
   const std::uint64_t total = steps_until(s.simulation.duration, dt);
   const auto every = [&](double interval) {

@@ -31,9 +31,8 @@ void read_simulation(TableReader& r, Simulation3Section& s) {
   if (r.choice("integrator", "verlet", {"gear", "verlet"}) == "gear")
     r.fail("integrator", std::string("\"gear\"") + not_in_3d + "; allowed: verlet");
   s.gravity = vec3(r, "gravity", s.gravity);
-  for (const char* key : {"threads", "sort_every"})
-    if (r.has(key))
-      r.fail(key, std::string(key) + not_in_3d + " (the 3D engine runs on one thread)");
+  s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
+  if (r.has("sort_every")) r.fail("sort_every", std::string("renumbering the spheres") + not_in_3d);
 }
 
 void read_particles(TableReader& r, Particles3Section& p, const std::string& file) {
@@ -82,6 +81,10 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
   s.description = top.text("description", "");
   section(top, "simulation", file, [&](TableReader& r) { read_simulation(r, s.simulation); });
   s.materials = read_materials(top, file);
+  for (std::size_t m = 0; m < s.materials.size(); ++m)
+    if (s.materials[m].rolling_friction != 0.0)
+      throw ScenarioError(file + ": key 'materials." + std::to_string(m) +
+                          ".rolling_friction': rolling resistance" + not_in_3d + "; allowed: 0");
   section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
   section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry); });
   section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
