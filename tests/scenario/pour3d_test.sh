@@ -9,7 +9,7 @@ dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 run="$dir/run"
 "$talus" run pour3d --out "$run" --quiet --set particles.count=120 --set simulation.duration=0.3 \
-  --set output.snapshot_interval=0.05
+  --set output.snapshot_interval=0.05 --set simulation.timestep_factor=20
 for f in thermo.csv run.json scenario.toml particles.pvd walls.pvd; do
   [ -s "$run/$f" ] || { echo "FAIL: no $f"; exit 1; }
 done
