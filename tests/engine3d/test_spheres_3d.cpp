@@ -154,5 +154,61 @@ INSTANTIATE_TEST_SUITE_P(Laws, Rolling3,
                            return std::string(name_of(param_info.param));
                          });
 
+// ---- counter-spinning spheres ---------------------------------------------------------------
+
+// Two equal spheres meet head on along x, both spinning fast about z: their surfaces slide past
+// each other at the contact all through it (gross sliding), so the tangential force is mu F_n at
+// every step. Summed over the steps (the impulses velocity Verlet gives), the tangential impulse
+// is mu times the normal one, and each spin slows by R times the tangential impulse over I
+// (lever arms at the radius), to rounding; the two spheres' changes are equal and opposite, and
+// nothing moves along z. (The line of centres turns a little as they slide, so the impulses are
+// summed along each step's own normal, not along x.)
+TEST(CounterSpinning3, SlidingThroughoutTradesMuTimesTheNormalImpulse) {
+  const double r = 1e-3, v = 0.1, spin = 600.0, mu = 0.3;
+  Material m = testing::elastic_material();
+  m.restitution = 0.8;
+  m.friction = mu;
+  m.tangential_damping = 1e6; // 1/s: the viscous law at its Coulomb cap from the first step
+  Scene3 scene;
+  scene.materials = {m};
+  const double start = r * 1.01;
+  scene.add_sphere({.position = {-start, 0.0, 0.0},
+                    .radius = r,
+                    .velocity = {v, 0.0, 0.0},
+                    .angular_velocity = {0.0, 0.0, spin}});
+  scene.add_sphere({.position = {start, 0.0, 0.0},
+                    .radius = r,
+                    .velocity = {-v, 0.0, 0.0},
+                    .angular_velocity = {0.0, 0.0, spin}});
+  const double mass = scene.spheres.mass[0], inertia = scene.spheres.inertia[0];
+  Settings3 settings{.timestep = linear_collision_time(m.normal_stiffness, 0.0, 0.5 * mass) / 100.0,
+                     .tangential_law = law_id<ViscousCoulomb>,
+                     .lever_arm = LeverArm::radius};
+  Simulation3 s(std::move(scene), settings);
+  const Spheres& p = s.scene().spheres;
+  double normal = 0.0, tangential = 0.0; // impulses on sphere 0, N s
+  for (int k = 0; k < 3000; ++k) {
+    s.step();
+    const Vec3 n = (1.0 / norm(p.position[0] - p.position[1])) * (p.position[0] - p.position[1]);
+    const Vec3 f = p.force[0];
+    normal += dot(f, n) * settings.timestep;
+    tangential += norm(f - dot(f, n) * n) * settings.timestep;
+  }
+  ASSERT_GT(norm(p.position[1] - p.position[0]), 2.0 * r) << "still touching";
+  ASSERT_LT(p.velocity[0].x, 0.0); // it rebounded
+  EXPECT_NEAR(tangential, mu * normal, 1e-12 * normal);
+  const double slowed = r * tangential / inertia;
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(p.angular_velocity[i].z, spin - slowed, 1e-9 * spin);
+    EXPECT_EQ(p.velocity[i].z, 0.0);
+    EXPECT_EQ(p.angular_velocity[i].x, 0.0);
+    EXPECT_EQ(p.angular_velocity[i].y, 0.0);
+  }
+  EXPECT_NEAR(p.velocity[0].y, -p.velocity[1].y, 1e-15);
+  EXPECT_GT(std::abs(p.velocity[0].y), 0.1 * mu * v); // the friction pushed them apart sideways
+  EXPECT_GT(slowed, 0.1 * spin);                      // and slowed the spins
+  EXPECT_NEAR(normal, mass * (v - p.velocity[0].x), 1e-2 * normal); // the normal impulse
+}
+
 } // namespace
 } // namespace talus
