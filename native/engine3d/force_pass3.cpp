@@ -66,10 +66,10 @@ ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& t
     torque_j_.resize(list.pair_count());
     plate_force_.resize(list.plate.size());
     plate_torque_.resize(list.plate.size());
-    std::size_t contacts = 0;
+    std::size_t contacts = 0, on_plates = 0;
     double deepest = 0.0;
     // each entry's force, rows side by side
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : contacts) \
+#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : contacts, on_plates) \
     reduction(max : deepest)
     for (std::ptrdiff_t row = 0; row < n; ++row) {
       const auto i = static_cast<std::size_t>(row);
@@ -86,7 +86,7 @@ ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& t
               Vec3& spring) {
             const ContactForce3 c = contact_force<N, T>(p, g, spring, dt);
             plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
-            ++contacts;
+            ++contacts, ++on_plates;
             deepest = std::max(deepest, g.overlap / s.radius[i]);
           },
           [&](std::uint32_t e, bool plate) {
@@ -116,7 +116,7 @@ ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& t
     for (std::size_t i = 0; i < s.size(); ++i)
       for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e)
         scene.plates[list.plate[e]].force -= plate_force_[e];
-    return ContactPass3{contacts, deepest};
+    return ContactPass3{contacts, on_plates, deepest};
   });
 }
 

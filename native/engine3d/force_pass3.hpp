@@ -15,10 +15,11 @@
 
 namespace talus {
 
-/// What a force pass met: the touching contacts and the deepest overlap relative to the
-/// smaller radius.
+/// What a force pass met: the touching contacts (of them, those on plates) and the deepest
+/// overlap relative to the smaller radius.
 struct ContactPass3 {
   std::size_t contacts = 0;
+  std::size_t on_plates = 0;
   double deepest = 0.0;
 };
 

@@ -135,6 +135,23 @@ void Simulation3::guard() const {
   throw InstabilityError(msg.str());
 }
 
+double Simulation3::coordination() const {
+  const Spheres& s = scene_.spheres;
+  std::size_t free = 0, ends = 0; // contact ends on free spheres
+  for (std::size_t i = 0; i < s.size(); ++i) free += s.is_free(i) ? 1 : 0;
+  if (free == 0) return 0.0;
+  ends = last_.on_plates;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (std::uint32_t e = list_.row_offset[i]; e < list_.row_offset[i + 1]; ++e) {
+      const std::uint32_t j = list_.neighbour[e];
+      const Vec3 d = s.position[i] - (s.position[j] + list_.offset(e, scene_.domain));
+      const double reach = s.radius[i] + s.radius[j];
+      if (norm2(d) >= reach * reach) continue;
+      ends += (s.is_free(i) ? 1 : 0) + (s.is_free(j) ? 1 : 0);
+    }
+  return static_cast<double>(ends) / static_cast<double>(free);
+}
+
 Energies3 Simulation3::energies() const {
   const Spheres& s = scene_.spheres;
   Energies3 e;

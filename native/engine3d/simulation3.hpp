@@ -42,6 +42,9 @@ public:
   const SphereList& list() const { return list_; }
   /// The touching contacts of the last force pass.
   std::size_t contact_count() const { return last_.contacts; }
+  /// The mean number of contacts of a free sphere in the last force pass (plates counted; a
+  /// fixed sphere's contacts count for its free partner only).
+  double coordination() const;
   /// The threads it runs on: those asked (all cores for 0), but at most one per 500 spheres.
   int threads() const { return threads_; }
   Energies3 energies() const;

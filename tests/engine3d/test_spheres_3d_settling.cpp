@@ -71,6 +71,10 @@ TEST(Settling3, ABedPouredIntoABoxComesToRestOnItsFloor) {
   EXPECT_NEAR(-on_plates.z, weight, 1e-4 * weight);
   EXPECT_LT(std::abs(on_plates.x) + std::abs(on_plates.y), 1e-4 * weight);
   EXPECT_GT(s.contact_count(), scene.spheres.size()); // a bed, not a layer of loose grains
+  // frictional spheres at rest: between the isostatic 4 (mu large) and 6 (mu 0) in the bulk,
+  // fewer at the free top and along the walls
+  EXPECT_GT(s.coordination(), 3.0);
+  EXPECT_LT(s.coordination(), 6.5);
 }
 
 // Each sphere sums its contacts' forces in a fixed order whatever the threads: a run of 1200

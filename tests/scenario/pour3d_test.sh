@@ -24,6 +24,7 @@ assert fallen > 0, (first, last)
 # at rest in the box: the motion left is a speck of what the fall released
 assert float(last["kinetic"]) < 1e-3 * fallen, (last["kinetic"], fallen)
 assert int(last["contacts"]) > 120, last["contacts"]
+assert 2.5 < float(last["coordination"]) < 6.5, last["coordination"]
 # the energy only fell (the Verlet swing of a contact allowed, a thousandth of what fell)
 totals = [float(r["total"]) for r in rows]
 assert all(b <= a + 1e-3 * fallen for a, b in zip(totals, totals[1:])), "the energy grew"

@@ -20,13 +20,13 @@ namespace talus::cli {
 namespace {
 
 constexpr const char* thermo_header =
-    "time,step,kinetic,rotational,potential,elastic,total,contacts,list_builds\n";
+    "time,step,kinetic,rotational,potential,elastic,total,contacts,coordination,list_builds\n";
 
 std::string thermo_row(const Simulation3& sim) {
   const Energies3 e = sim.energies();
-  return fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{}\n", sim.time(),
+  return fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}\n", sim.time(),
                      sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
-                     sim.contact_count(), sim.list().builds);
+                     sim.contact_count(), sim.coordination(), sim.list().builds);
 }
 
 // The snapshots so far and their collection: spheres and plates, one file each per snapshot.
