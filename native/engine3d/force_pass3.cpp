@@ -34,7 +34,8 @@ void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table, Lever
   }
   for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e) {
     const auto& plate = scene.plates[list.plate[e]];
-    const Vec3 d = s.position[i] - closest_point(plate, s.position[i]);
+    const Vec3 touch = closest_point(plate, s.position[i]);
+    const Vec3 d = s.position[i] - touch;
     const double dist2 = norm2(d);
     if (dist2 >= s.radius[i] * s.radius[i] || dist2 == 0.0) {
       apart(e, true);
@@ -42,7 +43,7 @@ void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table, Lever
     }
     const ContactGeometry3 g =
         wall_geometry(d, std::sqrt(dist2), s.radius[i], s.mass[i], s.velocity[i],
-                      s.angular_velocity[i], plate.velocity, shares);
+                      s.angular_velocity[i], plate.velocity_at(touch), shares);
     on_plate(e, list.plate[e], g, table(s.material[i], plate.material), list.plate_spring[e]);
   }
 }

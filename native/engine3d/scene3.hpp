@@ -2,7 +2,7 @@
 // A scene of spheres in 3D and the settings of its run: what Simulation3 is built from.
 #include <vector>
 
-#include "engine3d/planes.hpp"
+#include "engine3d/plate_drivers.hpp"
 #include "engine3d/spheres.hpp"
 #include "integrate/integrator.hpp"
 #include "materials/material.hpp"
@@ -14,6 +14,7 @@ namespace talus {
 struct Scene3 {
   Spheres spheres;
   std::vector<Plane> plates;
+  std::vector<PlateDriver> drivers; ///< the plates' prescribed motions, from the run's start
   Domain3 domain;
   std::vector<Material> materials{Material{}};
   Vec3 gravity{}; ///< m/s^2

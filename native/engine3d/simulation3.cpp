@@ -38,6 +38,7 @@ void validate(const Scene3& scene, const Settings3& settings) {
     require(known(scene.plates[w].material), "plate " + std::to_string(w) + " has material " +
                                                  std::to_string(scene.plates[w].material) +
                                                  ", which is not defined");
+  validate(scene.drivers, scene.plates.size());
   const Domain3& d = scene.domain;
   require(d.lo.x < d.hi.x && d.lo.y < d.hi.y && d.lo.z < d.hi.z,
           "the domain needs lo < hi along every axis");
@@ -58,6 +59,8 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   const int asked = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
   const auto worth = static_cast<int>(std::max<std::size_t>(1, scene_.spheres.size() / 500));
   threads_ = std::max(1, std::min(asked, worth));
+  for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
+  drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
   compute_forces();
@@ -93,7 +96,7 @@ void Simulation3::step() {
   }
   std::swap(s.force, s.force_previous);
   std::swap(s.torque, s.torque_previous);
-  for (Plane& p : scene_.plates) p.centre += dt * p.velocity;
+  drive_plates(scene_.plates, scene_.drivers, start_, static_cast<double>(steps_ + 1) * dt);
   if (list_is_stale(list_, s, scene_.plates)) {
     guard();
     build_sphere_list(list_, s, scene_.plates, scene_.domain, resolved_skin(scene_, settings_));

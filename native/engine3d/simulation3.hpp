@@ -1,7 +1,8 @@
 #pragma once
 // The 3D engine's facade: owns a scene of spheres and runs its steps with velocity Verlet.
 //
-// What it has: spheres (free or fixed), plates (fixed or translating), gravity, periodic axes,
+// What it has: spheres (free or fixed), plates (fixed or driven: translating, vibrating,
+// turning), gravity, periodic axes,
 // every law pair of the table, the Verlet list with its springs, the stability guard. What it
 // does not have yet is refused where it is set (Simulation3's constructor, Spheres::add):
 // rolling resistance, moved spheres, Gear. Its results are bit-identical for any thread count.
@@ -57,6 +58,7 @@ private:
   Settings3 settings_;
   PairTable table_;
   SphereList list_;
+  std::vector<PlatePose> start_; ///< each plate where it stood at the start, for its driver
   ForcePass3 force_pass_;
   ContactPass3 last_;
   int threads_ = 1;

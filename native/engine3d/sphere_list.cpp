@@ -184,7 +184,7 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
   for (std::uint32_t e = 0; e < next.neighbour.size(); ++e)
     next.second_entry[fill[next.neighbour[e]]++] = e;
   next.reference = s.position;
-  for (const Plane& p : plates) next.plate_reference.push_back(p.centre);
+  for (const Plane& p : plates) next.plate_reference.push_back({p.centre, p.normal, p.axis_u});
   list = std::move(next);
 }
 
@@ -194,8 +194,18 @@ bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<P
   const double limit2 = 0.25 * list.skin * list.skin;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (!(norm2(s.position[i] - list.reference[i]) <= limit2)) return true;
-  for (std::size_t w = 0; w < plates.size(); ++w)
-    if (!(norm2(plates[w].centre - list.plate_reference[w]) <= limit2)) return true;
+  for (std::size_t w = 0; w < plates.size(); ++w) {
+    const Plane& p = plates[w];
+    const PlatePose& then = list.plate_reference[w];
+    double moved = norm(p.centre - then.centre);
+    const double turn = std::max(norm(p.normal - then.normal), norm(p.axis_u - then.axis_u));
+    if (turn > 0.0) {
+      double farthest2 = 0.0;
+      for (const Vec3& x : s.position) farthest2 = std::max(farthest2, norm2(x - p.centre));
+      moved += turn * std::sqrt(farthest2);
+    }
+    if (!(moved * moved <= limit2)) return true;
+  }
   return false;
 }
 

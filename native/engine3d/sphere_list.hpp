@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine3d/planes.hpp"
+#include "engine3d/plate_drivers.hpp"
 #include "engine3d/spheres.hpp"
 
 namespace talus {
@@ -28,8 +28,8 @@ struct SphereList {
   std::vector<std::uint32_t> plate_offset; ///< CSR over spheres: their plates within reach
   std::vector<std::uint32_t> plate;
   std::vector<Vec3> plate_spring;
-  std::vector<Vec3> reference;       ///< sphere positions at the last build
-  std::vector<Vec3> plate_reference; ///< plate centres at the last build
+  std::vector<Vec3> reference;            ///< sphere positions at the last build
+  std::vector<PlatePose> plate_reference; ///< the plates' poses at the last build
   double skin = 0.0;
   std::uint64_t builds = 0;
 
@@ -47,8 +47,9 @@ struct SphereList {
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin);
 
-/// True when some sphere or plate moved more than half the skin since the last build, or the
-/// spheres or plates are not those of the build.
+/// True when some sphere or some point of a plate near the spheres moved more than half the skin
+/// since the last build (a turned plate's points move by the turn times their distance from its
+/// centre, bounded by the farthest sphere's), or the spheres or plates are not those of the build.
 bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates);
 
 } // namespace talus
