@@ -19,7 +19,7 @@ double memory_estimate(std::size_t particles) {
   // the process itself (code, libraries), then the particles: their arrays, the neighbour list
   // and contact history, and the checkpoint's copy of the state as it is written, which makes
   // the peak (fitted to the peaks measured in docs/performance.md, "Memory")
-  return 10e6 + 1150.0 * static_cast<double>(particles);
+  return 16e6 + 1150.0 * static_cast<double>(particles);
 }
 
 std::string readable_bytes(double bytes) {
