@@ -52,6 +52,30 @@ double resolved_skin(const Scene3& scene, const Settings3& settings) {
 
 Simulation3::Simulation3(Scene3 scene, Settings3 settings)
     : scene_(std::move(scene)), settings_(settings) {
+  set_up();
+  for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
+  drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
+  build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
+                    resolved_skin(scene_, settings_));
+  compute_forces();
+  guard();
+}
+
+Simulation3::Simulation3(SimulationState3 state, Settings3 settings, bool)
+    : scene_(std::move(state.scene)), settings_(settings), list_(std::move(state.list)),
+      start_(std::move(state.start)), last_(state.last), time_(state.time), steps_(state.steps) {
+  set_up();
+  require(start_.size() == scene_.plates.size(),
+          "a saved state's start poses are not one per plate");
+}
+
+Simulation3 Simulation3::restore(SimulationState3 state, Settings3 settings) {
+  return Simulation3(std::move(state), settings, true);
+}
+
+// What both constructors check and derive: the scene and settings valid, the pair table, the
+// damper's lag and the threads.
+void Simulation3::set_up() {
   validate(scene_, settings_);
   table_ = PairTable(scene_.materials, settings_.impact_speed, settings_.linear_damping);
   lag_ = verlet_lag(settings_.verlet_velocity);
@@ -59,12 +83,6 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   const int asked = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
   const auto worth = static_cast<int>(std::max<std::size_t>(1, scene_.spheres.size() / 500));
   threads_ = std::max(1, std::min(asked, worth));
-  for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
-  drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
-  build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
-                    resolved_skin(scene_, settings_));
-  compute_forces();
-  guard();
 }
 
 void Simulation3::compute_forces() {

@@ -24,11 +24,27 @@ struct Energies3 {
   double total() const { return kinetic + rotational + potential + elastic; }
 };
 
+/// Everything that determines how a run continues: what a checkpoint saves.
+struct SimulationState3 {
+  Scene3 scene;
+  SphereList list;
+  std::vector<PlatePose> start; ///< each plate where it stood at the start, for its driver
+  ContactPass3 last;            ///< the last force pass' count and deepest overlap
+  double time = 0.0;
+  std::uint64_t steps = 0;
+};
+
 class Simulation3 {
 public:
   /// Validates the scene and the settings (InvalidArgument naming what is wrong), builds the
   /// list and computes the first forces.
   Simulation3(Scene3 scene, Settings3 settings);
+  /// Continues from a saved state exactly: forces, springs and the list with its build positions
+  /// are taken as saved, so the continuation is bit-identical to the run that was saved.
+  /// `settings.threads` may differ.
+  static Simulation3 restore(SimulationState3 state, Settings3 settings);
+  /// A copy of the state, for a checkpoint.
+  SimulationState3 state() const { return {scene_, list_, start_, last_, time_, steps_}; }
 
   /// One step: half kick and drift, plates move, the list is rebuilt if stale, contact forces,
   /// second half kick, guard (InstabilityError: a non-finite velocity, or an overlap beyond
@@ -51,6 +67,8 @@ public:
   Energies3 energies() const;
 
 private:
+  Simulation3(SimulationState3 state, Settings3 settings, bool restored);
+  void set_up();
   void compute_forces();
   void guard() const;
 

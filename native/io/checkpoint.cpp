@@ -10,107 +10,20 @@
 #include <type_traits>
 #include <unistd.h>
 
+#include "io/checkpoint_codec.hpp"
+
 namespace talus {
+
+using namespace checkpoint_codec;
 
 namespace {
 
 constexpr char magic[8] = {'T', 'A', 'L', 'U', 'S', 'C', 'K', 'P'};
 
-// FNV-1a's 64-bit offset basis. Format 7 was written with a basis one digit short (still a
-// working checksum), so a file of that version is checked with the basis it was written with.
-constexpr std::uint64_t fnv_offset_basis = 14695981039346656037ULL;
-constexpr std::uint64_t format7_offset_basis = 1469598103934665603ULL;
-constexpr std::uint32_t oldest_readable_version = 7; // with its basis and layout (below)
-
-std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t basis = fnv_offset_basis) {
-  std::uint64_t h = basis;
-  for (std::size_t k = 0; k < n; ++k)
-    h = (h ^ static_cast<unsigned char>(data[k])) * 1099511628211ULL;
-  return h;
-}
-
-class Writer {
-public:
-  template <class T> void pod(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    out_.append(reinterpret_cast<const char*>(&v), sizeof(T));
-  }
-  template <class T> void vec(const std::vector<T>& v) {
-    pod<std::uint64_t>(v.size());
-    if (!v.empty()) out_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-  }
-  void str(const std::string& s) {
-    pod<std::uint64_t>(s.size());
-    out_.append(s);
-  }
-  std::string& bytes() { return out_; }
-
-private:
-  std::string out_;
-};
-
-class Reader {
-public:
-  Reader(const std::string& bytes, std::size_t begin, std::size_t end, std::string source)
-      : b_(bytes), at_(begin), end_(end), source_(std::move(source)) {}
-  template <class T> T pod() {
-    need(sizeof(T));
-    T v;
-    std::memcpy(&v, b_.data() + at_, sizeof(T));
-    at_ += sizeof(T);
-    return v;
-  }
-  template <class T> void vec(std::vector<T>& v) {
-    const auto n = pod<std::uint64_t>();
-    if (n > (end_ - at_) / std::max<std::size_t>(sizeof(T), 1)) fail("an array runs past the end");
-    v.resize(n);
-    if (n) std::memcpy(v.data(), b_.data() + at_, n * sizeof(T));
-    at_ += n * sizeof(T);
-  }
-  /// A count of records that take at least `min_bytes` each: refused when they could not fit in
-  /// what is left (so that a damaged count never asks for more memory than the file holds).
-  std::size_t count(std::size_t min_bytes) {
-    const auto n = pod<std::uint64_t>();
-    if (n > (end_ - at_) / min_bytes) fail("a count of records runs past the end");
-    return static_cast<std::size_t>(n);
-  }
-  std::string str() {
-    const auto n = pod<std::uint64_t>();
-    need(n);
-    std::string s = b_.substr(at_, n);
-    at_ += n;
-    return s;
-  }
-  /// One member of a struct stored member by member: a bool is a byte that must be 0 or 1.
-  template <class T> void member(T& v) {
-    if constexpr (std::is_same_v<T, bool>) {
-      const auto b = pod<std::uint8_t>();
-      if (b > 1) fail("a flag is neither 0 nor 1");
-      v = b == 1;
-    } else {
-      v = pod<T>();
-    }
-  }
-  bool done() const { return at_ == end_; }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw CheckpointError(source_ + ": corrupt checkpoint: " + what);
-  }
-
-private:
-  void need(std::size_t n) const {
-    if (n > end_ - at_) fail("truncated");
-  }
-  const std::string& b_;
-  std::size_t at_, end_;
-  std::string source_;
-};
-
 // The structs with padding are stored member by member: a padding byte's value is unspecified,
 // and written whole they would put it in the file (the same state, different files). Format 7
 // stored them whole; a member added to one of them must be added here, in a new format version
 // (SimulationConfig::linear_damping, of format 12, is written after the list).
-template <class T, class U>
-concept either = std::is_same_v<std::remove_const_t<T>, U>;
 template <either<Domain> D, class F> void for_each_member(D& d, F&& f) {
   f(d.lo), f(d.hi), f(d.periodic_x), f(d.periodic_y);
 }
@@ -184,31 +97,6 @@ void read_particles(Reader& r, Particles& p, std::uint32_t version) {
     if (m != g.r2.size()) r.fail("Gear's derivatives of different lengths");
   if (p.force_previous.size() != p.torque_previous.size())
     r.fail("Verlet's previous force and torque of different lengths");
-}
-
-void write_material(Writer& w, const Material& m) {
-  w.str(m.name);
-  for (const double v :
-       {m.density, m.young, m.poisson, m.restitution, m.friction, m.tangential_damping,
-        m.normal_stiffness, m.tangential_stiffness_ratio, m.normal_damping_rate, m.hertz_damping,
-        m.rolling_friction, m.rolling_stiffness_factor, m.rolling_damping})
-    w.pod(v);
-  w.pod<std::uint8_t>(m.rigid ? 1 : 0);
-}
-
-// Format 11 added rolling resistance; a material of an older file has none (the keys' defaults).
-Material read_material(Reader& r, std::uint32_t version) {
-  Material m;
-  m.name = r.str();
-  for (double* v : {&m.density, &m.young, &m.poisson, &m.restitution, &m.friction,
-                    &m.tangential_damping, &m.normal_stiffness, &m.tangential_stiffness_ratio,
-                    &m.normal_damping_rate, &m.hertz_damping})
-    *v = r.pod<double>();
-  if (version >= 11)
-    for (double* v : {&m.rolling_friction, &m.rolling_stiffness_factor, &m.rolling_damping})
-      *v = r.pod<double>();
-  m.rigid = r.pod<std::uint8_t>() != 0;
-  return m;
 }
 
 void write_driver(Writer& w, const Driver& d) {
@@ -325,37 +213,19 @@ std::string encode_checkpoint(const Checkpoint& c) {
 }
 
 std::string seal_checkpoint(const std::string& payload) {
-  std::string out(magic, sizeof(magic));
-  const std::uint32_t version = checkpoint_version;
-  const std::uint64_t size = payload.size(), sum = fnv1a(payload.data(), payload.size());
-  out.append(reinterpret_cast<const char*>(&version), sizeof(version));
-  out.append(reinterpret_cast<const char*>(&size), sizeof(size));
-  out += payload;
-  out.append(reinterpret_cast<const char*>(&sum), sizeof(sum));
-  return out;
+  return seal(magic, checkpoint_version, payload);
 }
 
 Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source) {
-  constexpr std::size_t head = sizeof(magic) + sizeof(std::uint32_t) + sizeof(std::uint64_t);
-  if (bytes.size() < head + sizeof(std::uint64_t) ||
-      bytes.compare(0, sizeof(magic), magic, sizeof(magic)) != 0)
-    throw CheckpointError(source + ": not a talus checkpoint (or truncated)");
-  std::uint32_t version = 0;
-  std::uint64_t size = 0, sum = 0;
-  std::memcpy(&version, bytes.data() + sizeof(magic), sizeof(version));
-  std::memcpy(&size, bytes.data() + sizeof(magic) + sizeof(version), sizeof(size));
+  const Header h = read_header(bytes, magic, source, "talus checkpoint");
+  const std::uint32_t version = h.version;
   if (version < oldest_readable_version || version > checkpoint_version)
     throw CheckpointError(source + ": checkpoint format version " + std::to_string(version) +
                           "; this talus reads versions " + std::to_string(oldest_readable_version) +
                           " to " + std::to_string(checkpoint_version));
-  if (size != bytes.size() - head - sizeof(sum))
-    throw CheckpointError(source + ": corrupt checkpoint: truncated or padded (size mismatch)");
-  std::memcpy(&sum, bytes.data() + head + size, sizeof(sum));
-  const std::uint64_t basis = version == 7 ? format7_offset_basis : fnv_offset_basis;
-  if (sum != fnv1a(bytes.data() + head, size, basis))
-    throw CheckpointError(source + ": corrupt checkpoint: checksum mismatch");
+  check_payload(bytes, h, source, version == 7 ? format7_offset_basis : fnv_offset_basis);
 
-  Reader r(bytes, head, head + size, source);
+  Reader r(bytes, header_bytes, header_bytes + h.size, source);
   Checkpoint c;
   World& world = c.state.world;
   read_particles(r, world.particles, version);

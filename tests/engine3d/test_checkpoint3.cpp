@@ -1,0 +1,91 @@
+// 3D checkpoints (io/checkpoint3.hpp): a run saved, read back and continued is the run that went
+// on without stopping, to the bit (springs, list, plates on their drivers, periodic images); a
+// damaged or foreign file is refused with what is wrong.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "engine3d/simulation3.hpp"
+#include "io/checkpoint3.hpp"
+#include "support/two_body.hpp"
+
+namespace talus {
+namespace {
+
+// 300 spheres falling in a box periodic along x onto a vibrating floor, with friction.
+Simulation3 shaken_bed() {
+  Material m = testing::elastic_material();
+  m.restitution = 0.5;
+  m.friction = 0.4;
+  Scene3 scene;
+  scene.materials = {m};
+  scene.gravity = {0.0, 0.0, -9.81};
+  scene.domain = {.lo = {0.0, 0.0, 0.0}, .hi = {0.02, 0.02, 0.2}, .periodic = {true, false, false}};
+  scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}));
+  scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}));
+  scene.plates.push_back(make_plane({0.0, 0.02, 0.0}, {0.0, -1.0, 0.0}));
+  scene.drivers.push_back(
+      {.plate = 0, .motion = PlateDriver::Motion::vibrate, .amplitude = 2e-4, .frequency = 50.0});
+  for (int k = 0; k < 300; ++k)
+    scene.add_sphere({.position = {0.002 + 0.004 * (k % 5), 0.002 + 0.004 * ((k / 5) % 5),
+                                   0.002 + 0.004 * (k / 25)},
+                      .radius = 1.5e-3 + 1e-4 * (k % 3),
+                      .velocity = {0.2 * ((k % 7) - 3), 0.0, 0.0}});
+  const double mass = 2650.0 * 4.0 / 3.0 * 3.14159 * 1.5e-9;
+  return Simulation3(std::move(scene),
+                     {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 30.0});
+}
+
+bool same(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
+  return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(Vec3)) == 0;
+}
+
+TEST(Checkpoint3, AResumedRunIsTheWholeRunToTheBit) {
+  Simulation3 whole = shaken_bed(), first = shaken_bed();
+  whole.run(12000);
+  first.run(6000);
+  const std::string bytes =
+      encode_checkpoint3({first.state(), first.settings(), "the run's own notes"});
+  const Checkpoint3 c = decode_checkpoint3(bytes, "test");
+  EXPECT_EQ(c.run_data, "the run's own notes");
+  EXPECT_EQ(encode_checkpoint3(c), bytes); // every field read back as written
+  Simulation3 second = Simulation3::restore(c.state, c.settings);
+  second.run(6000);
+  const Spheres &a = whole.scene().spheres, &b = second.scene().spheres;
+  EXPECT_TRUE(same(a.position, b.position));
+  EXPECT_TRUE(same(a.velocity, b.velocity));
+  EXPECT_TRUE(same(a.angular_velocity, b.angular_velocity));
+  EXPECT_TRUE(same(whole.list().spring, second.list().spring));
+  EXPECT_TRUE(a.image == b.image);
+  EXPECT_EQ(whole.time(), second.time());
+  EXPECT_EQ(whole.scene().plates[0].centre.z, second.scene().plates[0].centre.z);
+  EXPECT_GT(whole.contact_count(), 100u);
+  bool crossed = false; // and the run did what it is meant to test
+  for (const Image3& i : a.image) crossed = crossed || i[0] != 0;
+  EXPECT_TRUE(crossed) << "no sphere crossed the periodic side";
+}
+
+TEST(Checkpoint3, ADamagedOrForeignFileIsRefused) {
+  Simulation3 s = shaken_bed();
+  s.run(10);
+  const std::string bytes = encode_checkpoint3({s.state(), s.settings(), ""});
+  const auto refusal = [](const std::string& b) {
+    try {
+      decode_checkpoint3(b, "f.bin");
+    } catch (const CheckpointError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string flipped = bytes;
+  flipped[bytes.size() / 2] = static_cast<char>(flipped[bytes.size() / 2] ^ 0x10);
+  EXPECT_NE(refusal(flipped).find("checksum mismatch"), std::string::npos);
+  EXPECT_NE(refusal(bytes.substr(0, bytes.size() - 9)).find("size mismatch"), std::string::npos);
+  EXPECT_NE(refusal("TALUSCKP and the rest").find("not a talus 3D checkpoint"), std::string::npos);
+  std::string newer = bytes;
+  newer[8] = 9; // the version
+  EXPECT_NE(refusal(newer).find("format version 9"), std::string::npos);
+}
+
+} // namespace
+} // namespace talus
