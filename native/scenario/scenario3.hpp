@@ -50,8 +50,9 @@ struct Box3Section {
 };
 
 struct Output3Section {
-  double thermo_interval = 0.01;  ///< s
-  double snapshot_interval = 0.1; ///< s; 0: none
+  double thermo_interval = 0.01;    ///< s
+  double snapshot_interval = 0.1;   ///< s; 0: none
+  double checkpoint_interval = 1.0; ///< s; 0: only at the end, at --stop-at and on a signal
 };
 
 struct Scenario3 {

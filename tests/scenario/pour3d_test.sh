@@ -1,7 +1,7 @@
 #!/bin/sh
 # The built-in 3D scenario, short: talus run writes thermo.csv, run.json and snapshots that VTK's
-# reader opens (read_vtk3d.py), the spheres come to rest in the box, and the commands that take
-# 2D runs refuse the folder with the reason.
+# reader opens (read_vtk3d.py), the spheres come to rest in the box, a run stopped and resumed
+# is the run that never stopped, and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -31,10 +31,25 @@ assert all(b <= a + 1e-3 * fallen for a, b in zip(totals, totals[1:])), "the ene
 print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
-for command in render movie analyze resume; do
+for command in render movie analyze checkpoint; do
   if "$talus" "$command" "$run" > "$dir/out.txt" 2>&1; then echo "FAIL: $command took a 3D run"; exit 1; fi
   grep -q "is a run of spheres in 3D" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 done
+# stopped at a checkpoint and resumed, with outputs past the checkpoint left behind by a run that
+# died (a row of thermo.csv, a snapshot): the same files as a run that never stopped
+short="--quiet --set particles.count=60 --set simulation.duration=0.1 --set simulation.timestep_factor=20
+       --set output.snapshot_interval=0.02 --set output.checkpoint_interval=0.03"
+"$talus" run pour3d --out "$dir/whole" $short
+status=0; "$talus" run pour3d --out "$dir/parts" $short --stop-at 0.045 || status=$?
+[ "$status" -eq 4 ] || { echo "FAIL: --stop-at exited with $status, not 4"; exit 1; }
+echo "0.05,1,2,3" >> "$dir/parts/thermo.csv"
+cp "$dir/parts/snapshots/spheres_000002.vtp" "$dir/parts/snapshots/spheres_000003.vtp"
+"$talus" resume "$dir/parts" --quiet
+for f in thermo.csv particles.pvd walls.pvd $(cd "$dir/whole" && ls snapshots/*); do
+  cmp -s "$dir/whole/$f" "$dir/parts/$f" || { echo "FAIL: $f differs after a resume"; exit 1; }
+done
+[ "$(ls "$dir/parts/snapshots" | wc -l)" -eq "$(ls "$dir/whole/snapshots" | wc -l)" ] \
+  || { echo "FAIL: the snapshots after a resume are not the whole run's"; exit 1; }
 # and a resolved 3D scenario reruns as it is
 "$talus" run "$run/scenario.toml" --out "$dir/again" --quiet --set simulation.duration=0.01
-echo "pour3d: run, snapshots read back, 2D commands refuse it"
+echo "pour3d: run, snapshots read back, stopped and resumed as one run, 2D commands refuse it"

@@ -9,6 +9,7 @@
 #include "cli/builtin_scenarios.hpp"
 #include "cli/commands.hpp"
 #include "cli/run/run3d.hpp"
+#include "cli/run/run3d_session.hpp"
 #include "cli/run/run_loop.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "cli/sweep/sweep.hpp"
@@ -120,7 +121,10 @@ void add_resume_command(CLI::App& app) {
       sweep->quiet = o->quiet;
       exit_status() = run_sweep(*dir, nullptr, *sweep);
     } else {
-      refuse_3d_run_folder(*dir, "resume");
+      if (is_3d_run_folder(*dir)) {
+        exit_status() = resume_3d(RunFolder::open(*dir), *o);
+        return;
+      }
       exit_status() = resume_run(*dir, *o);
     }
   });

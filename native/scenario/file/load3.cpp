@@ -72,6 +72,8 @@ void read_output(TableReader& r, Output3Section& o) {
   o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
   o.snapshot_interval =
       r.number("snapshot_interval", o.snapshot_interval, 0.0, inf, ">= 0 s (0: none)");
+  o.checkpoint_interval = r.number("checkpoint_interval", o.checkpoint_interval, 0.0, inf,
+                                   ">= 0 s (0: only at the end)");
 }
 
 Scenario3 load_root(const toml::table& root, const std::string& file) {
@@ -139,7 +141,8 @@ std::string to_toml(const Scenario3& s) {
                                 {"size", size_table(s.particles.size)}}},
       {"geometry", geometry},
       {"output", toml::table{{"thermo_interval", s.output.thermo_interval},
-                             {"snapshot_interval", s.output.snapshot_interval}}}};
+                             {"snapshot_interval", s.output.snapshot_interval},
+                             {"checkpoint_interval", s.output.checkpoint_interval}}}};
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";

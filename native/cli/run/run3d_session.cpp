@@ -1,0 +1,198 @@
+#include "cli/run/run3d_session.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include "io/checkpoint3.hpp"
+#include "io/vtk.hpp"
+#include "io/vtk_spheres.hpp"
+#include "run/progress.hpp"
+#include "scenario/file/load3.hpp"
+
+namespace fs = std::filesystem;
+
+namespace talus::cli {
+
+namespace {
+
+constexpr const char* thermo_header =
+    "time,step,kinetic,rotational,potential,elastic,total,contacts,coordination,list_builds\n";
+
+std::string thermo_row(const Simulation3& sim) {
+  const Energies3 e = sim.energies();
+  return fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}\n", sim.time(),
+                     sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
+                     sim.contact_count(), sim.coordination(), sim.list().builds);
+}
+
+// A snapshot of the spheres and one of the plates, listed in the book and their collections.
+void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, Book3& book) {
+  const std::string k = fmt::format("{:06d}", book.spheres.size());
+  const std::string s = "snapshots/spheres_" + k + ".vtp", p = "snapshots/plates_" + k + ".vtp";
+  write_file_atomically((dir / s).string(), vtp_spheres(sim.scene()));
+  write_file_atomically((dir / p).string(), vtp_plates(sim.scene(), reach));
+  book.spheres.emplace_back(sim.time(), s);
+  book.plates.emplace_back(sim.time(), p);
+  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(book.spheres));
+  write_file_atomically((dir / "walls.pvd").string(), pvd_collection(book.plates));
+}
+
+std::string run_json(const Scenario3& s, const Simulation3& sim, double collision_time, double wall,
+                     std::uint64_t steps_done, const std::string& ended) {
+  const std::size_t n = sim.scene().spheres.size();
+  const double rate = wall > 0 ? static_cast<double>(steps_done * n) / wall : 0.0;
+  return fmt::format(
+      "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"dimension\": 3,\n"
+      "  \"seed\": {},\n  \"particles\": {},\n  \"plates\": {},\n  \"steps\": {},\n"
+      "  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n  \"collision_time\": {:.9g},\n"
+      "  \"integrator\": \"verlet\",\n  \"threads\": {},\n  \"wall_seconds\": {:.6f},\n"
+      "  \"particle_steps_per_second\": {:.6g},\n  \"ended_by\": \"{}\"\n}}\n",
+      TALUS_VERSION, s.name, s.simulation.seed, n, sim.scene().plates.size(), sim.step_count(),
+      sim.time(), sim.settings().timestep, collision_time, sim.threads(), wall, rate, ended);
+}
+
+void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::ofstream& thermo) {
+  thermo.flush();
+  book.thermo_bytes = fs::file_size(dir / "thermo.csv");
+  write_file_atomically((dir / "checkpoint.bin").string(),
+                        encode_checkpoint3({sim.state(), sim.settings(), book.encode()}));
+}
+
+} // namespace
+
+std::string Book3::encode() const {
+  std::string out = fmt::format("talus 3D run book\n{:.17g} {}\n{}\n", collision_time, thermo_bytes,
+                                spheres.size());
+  for (std::size_t k = 0; k < spheres.size(); ++k)
+    out += fmt::format("{:.17g} {} {}\n", spheres[k].first, spheres[k].second, plates[k].second);
+  return out;
+}
+
+Book3 Book3::decode(const std::string& text, const std::string& source) {
+  std::istringstream in(text);
+  std::string title;
+  std::getline(in, title);
+  Book3 b;
+  std::size_t count = 0;
+  if (title != "talus 3D run book" || !(in >> b.collision_time >> b.thermo_bytes >> count))
+    throw CheckpointError(source + ": its run book is not a 3D run's");
+  for (std::size_t k = 0; k < count; ++k) {
+    double t = 0.0;
+    std::string s, p;
+    if (!(in >> t >> s >> p)) throw CheckpointError(source + ": its run book is cut short");
+    b.spheres.emplace_back(t, s);
+    b.plates.emplace_back(t, p);
+  }
+  return b;
+}
+
+int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& folder,
+                 const RunOptions& o) {
+  const fs::path& dir = folder.path();
+  const double dt = sim.settings().timestep;
+  const std::uint64_t total = steps_until(s.simulation.duration, dt);
+  const std::uint64_t stop = o.stop_at >= 0.0 ? std::min(total, steps_until(o.stop_at, dt)) : total;
+  const auto every = [&](double interval) {
+    return interval > 0.0 ? std::max<std::uint64_t>(1, steps_until(interval, dt)) : 0;
+  };
+  const std::uint64_t thermo_every = every(s.output.thermo_interval),
+                      snapshot_every = every(s.output.snapshot_interval),
+                      checkpoint_every = every(s.output.checkpoint_interval);
+  const double reach = norm(s.geometry.hi - s.geometry.lo);
+  const bool fresh = book.spheres.empty() && book.thermo_bytes == 0;
+  std::ofstream thermo(dir / "thermo.csv", fresh ? std::ios::trunc : std::ios::app);
+  if (fresh) {
+    thermo << thermo_header << thermo_row(sim);
+    if (snapshot_every > 0) write_snapshot(dir, sim, reach, book);
+  }
+  run::RunProgress progress(o.quiet, s.simulation.duration, s.output.thermo_interval, dt);
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint64_t first = sim.step_count();
+  const auto wall = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const auto record = [&](const std::string& ended) {
+    write_file_atomically((dir / "run.json").string(), run_json(s, sim, book.collision_time, wall(),
+                                                                sim.step_count() - first, ended));
+  };
+  while (sim.step_count() < stop) {
+    if (stop_signal()) {
+      checkpoint(dir, sim, book, thermo);
+      progress.finish();
+      fmt::print(stderr,
+                 "talus: interrupted at t = {:.6g} s after a checkpoint; continue with: "
+                 "talus resume {}\n",
+                 sim.time(), dir.string());
+      return exit_interrupted;
+    }
+    try {
+      sim.step();
+    } catch (const InstabilityError&) { // the last checkpoint and the outputs up to here stay
+      thermo.close();
+      record("unstable");
+      throw;
+    }
+    const std::uint64_t k = sim.step_count();
+    if (k % thermo_every == 0 || k == total) thermo << thermo_row(sim);
+    if (snapshot_every > 0 && (k % snapshot_every == 0 || k == total))
+      write_snapshot(dir, sim, reach, book);
+    if ((checkpoint_every > 0 && k % checkpoint_every == 0) || k == stop)
+      checkpoint(dir, sim, book, thermo);
+    if (k % 256 == 0 || k == stop)
+      progress.report(sim.time(), k, total, stop, wall(), k - first, sim.energies().kinetic);
+  }
+  progress.finish();
+  if (stop < total) {
+    if (!o.quiet)
+      fmt::print("stopped at t = {:.6g} s after a checkpoint; continue with: talus resume {}\n",
+                 sim.time(), dir.string());
+    return exit_stopped;
+  }
+  thermo.close();
+  record("duration");
+  if (!o.quiet)
+    fmt::print("finished at t = {:.6g} s after {} steps; run folder {}\n", sim.time(),
+               sim.step_count(), dir.string());
+  return exit_completed;
+}
+
+int resume_3d(RunFolder folder, const RunOptions& o) {
+  if (!o.set.empty() || o.duration >= 0.0)
+    throw InvalidArgument("--set and --duration: a 3D run continues as it started, for now");
+  const fs::path& dir = folder.path();
+  const std::string toml = (dir / "scenario.toml").string(),
+                    bin = (dir / "checkpoint.bin").string();
+  if (!fs::exists(bin))
+    throw InvalidArgument("no checkpoint in '" + dir.string() + "': start it again with talus run");
+  const Scenario3 s = load_scenario3(read_file(toml), toml);
+  Checkpoint3 c = decode_checkpoint3(read_file(bin), bin);
+  Book3 book = Book3::decode(c.run_data, bin);
+  // the outputs cut back to the checkpoint: thermo.csv's tail, the later snapshots
+  if (fs::file_size(dir / "thermo.csv") < book.thermo_bytes)
+    throw InvalidArgument((dir / "thermo.csv").string() + " is shorter than at the checkpoint");
+  fs::resize_file(dir / "thermo.csv", book.thermo_bytes);
+  for (const auto& e : fs::directory_iterator(dir / "snapshots")) {
+    const std::string name = "snapshots/" + e.path().filename().string();
+    bool kept = false;
+    for (std::size_t k = 0; k < book.spheres.size(); ++k)
+      kept = kept || name == book.spheres[k].second || name == book.plates[k].second;
+    if (!kept) fs::remove(e.path());
+  }
+  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(book.spheres));
+  write_file_atomically((dir / "walls.pvd").string(), pvd_collection(book.plates));
+  fs::remove(dir / "run.json");
+  if (o.threads >= 0) c.settings.threads = o.threads;
+  Simulation3 sim = Simulation3::restore(std::move(c.state), c.settings);
+  if (!o.quiet)
+    fmt::print("talus resume {}: from t = {:.6g} s (step {})\n", dir.string(), sim.time(),
+               sim.step_count());
+  catch_stop_signals();
+  return run_session3(s, sim, book, folder, o);
+}
+
+} // namespace talus::cli
