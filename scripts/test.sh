@@ -2,8 +2,8 @@
 # Install what is missing, build, and run the whole test suite.
 #   scripts/test.sh              the test suite (Release build)
 #   scripts/test.sh --sanitize   then the same suite again under ASan + UBSan (CMakePresets.json;
-#                                the thesis' experiments and the longest physics runs run in the
-#                                Release pass only)
+#                                the thesis' experiments, the longest physics runs and the longest
+#                                command-line scripts run in the Release pass only)
 #   scripts/test.sh --long       also the long experiments (full built-in runs, minutes each)
 # CI (CI=true) always adds the sanitizer pass: it fits well within CI's time.
 set -euo pipefail
