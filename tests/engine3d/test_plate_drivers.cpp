@@ -20,8 +20,9 @@ Vec3 point_of(const Plane& p, double u, double v) {
   return p.centre + u * p.axis_u + v * p.axis_v();
 }
 
-// The velocity field of each motion is the derivative of its points' motion: central
-// differences over +-1 us, to 1e-6 of the speeds (the differences' own error, O(h^2)).
+// The velocity field of each motion is the derivative of its points' motion: a central
+// difference over a short step, whose own error is second order in the step; the bound is that
+// error's size, far below the speeds a wrong field would be off by.
 TEST(PlateDrivers, EachMotionsVelocityIsItsPointsRateOfMotion) {
   const Plane start = make_plane({0.1, 0.2, 0.3}, {0.2, -0.3, 1.0}, 0.05, 0.02);
   std::vector<PlateDriver> drivers(3);
