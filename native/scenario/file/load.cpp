@@ -165,11 +165,7 @@ void read_stress_regions(TableReader& r, OutputSection& o) {
 }
 
 void read_output(TableReader& r, OutputSection& o) {
-  o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
-  o.snapshot_interval =
-      r.number("snapshot_interval", o.snapshot_interval, 0.0, inf, ">= 0 s (0: none)");
-  o.checkpoint_interval = r.number("checkpoint_interval", o.checkpoint_interval, 0.0, inf,
-                                   ">= 0 s (0: only at the end)");
+  read_output_intervals(r, o);
   o.track_interval =
       r.number("track_interval", o.track_interval, 0.0, inf, ">= 0 s (0: every step)");
   o.thesis_out = r.boolean("thesis_out", o.thesis_out);

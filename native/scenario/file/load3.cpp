@@ -69,11 +69,7 @@ void read_geometry(TableReader& r, Box3Section& g) {
 }
 
 void read_output(TableReader& r, Output3Section& o) {
-  o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
-  o.snapshot_interval =
-      r.number("snapshot_interval", o.snapshot_interval, 0.0, inf, ">= 0 s (0: none)");
-  o.checkpoint_interval = r.number("checkpoint_interval", o.checkpoint_interval, 0.0, inf,
-                                   ">= 0 s (0: only at the end)");
+  read_output_intervals(r, o);
 }
 
 Scenario3 load_root(const toml::table& root, const std::string& file) {

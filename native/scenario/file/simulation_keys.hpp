@@ -1,7 +1,7 @@
 #pragma once
-// The keys of [simulation] that 2D and 3D scenarios share (the clock, the laws, the seed, the
-// skin), read and written for either section type: the 2D SimulationSection and the 3D
-// Simulation3Section name these fields alike.
+// The keys that 2D and 3D scenarios share (of [simulation]: the clock, the laws, the seed, the
+// skin; of [output]: the intervals), read and written for either section type: the 2D sections
+// and the 3D ones name these fields alike.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -47,6 +47,17 @@ template <class S> void read_clock_and_laws(TableReader& r, S& s) {
                                                 std::numeric_limits<std::int64_t>::max()));
   s.skin = r.number("skin", s.skin, 0.0, inf, ">= 0 m (0: automatic)");
   s.impact_speed = r.number("impact_speed", s.impact_speed, 1e-9, inf, "> 0 m/s");
+}
+
+/// The output intervals of [output] that 2D and 3D scenarios share (OutputSection and
+/// Output3Section name them alike).
+template <class O> void read_output_intervals(TableReader& r, O& o) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  o.thermo_interval = r.number("thermo_interval", o.thermo_interval, 1e-12, inf, "> 0 s");
+  o.snapshot_interval =
+      r.number("snapshot_interval", o.snapshot_interval, 0.0, inf, ">= 0 s (0: none)");
+  o.checkpoint_interval = r.number("checkpoint_interval", o.checkpoint_interval, 0.0, inf,
+                                   ">= 0 s (0: only at the end)");
 }
 
 template <class S> void write_clock_and_laws(toml::table& t, const S& s) {
