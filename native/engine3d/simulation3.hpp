@@ -59,6 +59,8 @@ public:
   const SphereList& list() const { return list_; }
   /// The touching contacts of the last force pass.
   std::size_t contact_count() const { return last_.contacts; }
+  /// The last force pass' contacts (of them, those on plates) and deepest overlap.
+  const ContactPass3& last_pass() const { return last_; }
   /// The mean number of contacts of a free sphere in the last force pass (plates counted; a
   /// fixed sphere's contacts count for its free partner only).
   double coordination() const;
