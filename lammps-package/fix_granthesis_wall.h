@@ -1,15 +1,18 @@
-// fix granthesis/wall: straight wall segments, fixed, translating or turning, that act on the
-// group's atoms with pair_style granthesis' laws and its materials, evaluated by the same code as
-// the native engine's segment walls (src/talus: segment_contact.hpp for where a grain touches,
-// contact_force.hpp for the force). Syntax and conventions: lammps-package/README.md.
+// fix granthesis/wall: walls, fixed, translating, vibrating or turning, that act on the group's
+// atoms with pair_style granthesis' laws and its materials, evaluated by the same code as the
+// native engine's walls: in 2d straight segments (src/talus/segment_contact.hpp for where a grain
+// touches), in 3d plates, whole planes or rectangles (src/talus/plate.hpp for where a sphere
+// touches and how a plate moves; fix_granthesis_wall_3d.cpp); contact_force.hpp for the force.
+// Syntax and conventions: lammps-package/README.md.
 // The style block lets the file drop into a LAMMPS source tree as a package (so no #pragma once).
 #ifdef FIX_CLASS
 // clang-format off
-FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
+FixStyle(granthesis/wall, talus::lammps::FixGranthesisWall);
 // clang-format on
 #else
-#ifndef TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
-#define TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#ifndef TALUS_LAMMPS_FIX_GRANTHESIS_WALL_H
+#define TALUS_LAMMPS_FIX_GRANTHESIS_WALL_H
+#include <optional>
 #include <source_location>
 #include <string>
 #include <vector>
@@ -18,6 +21,9 @@ FixStyle(granthesis/wall, talus::lammps::FixSegmentWalls);
 #include "run_clock.hpp"
 #include "segment_neighbours.hpp"
 #include "talus/contact_geometry.hpp"
+#include "talus/contact_geometry_3d.hpp"
+#include "talus/pair_parameters.hpp"
+#include "talus/plate.hpp"
 #include "talus/segment_contact.hpp"
 
 namespace talus::lammps {
@@ -25,10 +31,19 @@ namespace talus::lammps {
 class FixContactHistory;
 class PairGranthesis;
 
-class FixSegmentWalls : public LAMMPS_NS::Fix {
+namespace wall_words {
+inline constexpr const char* style_name = "fix granthesis/wall";
+inline constexpr const char* usage =
+    "usage: fix ID GROUP granthesis/wall segment AX AY BX BY type T [velocity VX VY | rotate CX "
+    "CY OMEGA | vibrate DX DY AMPLITUDE FREQUENCY PHASE] [segment ...] (2d), or plane PX PY PZ "
+    "NX NY NZ type T [extent HALF_U HALF_V] [velocity VX VY VZ | rotate PX PY PZ WX WY WZ | "
+    "vibrate DX DY DZ AMPLITUDE FREQUENCY PHASE] [plane ...] (3d)";
+} // namespace wall_words
+
+class FixGranthesisWall : public LAMMPS_NS::Fix {
 public:
-  FixSegmentWalls(LAMMPS_NS::LAMMPS* instance, int narg, char** arg);
-  ~FixSegmentWalls() override;
+  FixGranthesisWall(LAMMPS_NS::LAMMPS* instance, int narg, char** arg);
+  ~FixGranthesisWall() override;
 
   int setmask() override;
   void post_constructor() override;
@@ -58,13 +73,31 @@ private:
     double ax, ay, bx, by;
     double vx = 0.0, vy = 0.0; ///< m/s
   };
+  /// A plate in 3d: where the deck puts it (at the fix's start), where it is now, its motion.
+  struct PlateWall {
+    PlatePose start;
+    Plane now;
+    std::optional<PlateDriver> driver;
+    int type; ///< the atom type whose material (pair_coeff T T) the plate is of
+  };
   /// Stops the run naming this style; LAMMPS cites the caller's file and line.
   [[noreturn]] void fail(const std::string& message,
                          std::source_location at = std::source_location::current()) const;
   double number(int narg, char** arg, int k, const char* what) const;
+  int read_segment(int narg, char** arg, int k);
   int read_motion(int narg, char** arg, int k);
+  int read_vibration(int narg, char** arg, int k, const std::string& which, double& amplitude,
+                     double& frequency, double& phase) const;
+  int read_plate(int narg, char** arg, int k);
+  int read_plate_motion(int narg, char** arg, int k);
+  Vec3 vector(int narg, char** arg, int k, const char* what) const;
+  int read_type(int narg, char** arg, int k, const std::string& which) const;
+  std::size_t wall_count() const { return three_d_ ? plates_.size() : walls_.size(); }
+  int wall_type(std::size_t s) const { return three_d_ ? plates_[s].type : walls_[s].type; }
+  const char* wall_word() const { return three_d_ ? "plane" : "segment"; }
   double now() const; ///< s: the simulation time, carried across restart files
   void place(double t);
+  void place_plates(double t);
   void make_history();
   void check_timestep() const; ///< warns of a timestep too coarse for a wall contact
   /// fail(): atom i touches segment s, a type pair without parameters (pair_style hybrid).
@@ -74,8 +107,20 @@ private:
   ContactGeometry geometry(int i, std::size_t s, double hx, double hy, double& wx,
                            double& wy) const;
   template <class N, class T> void refresh_normal_forces();
+  void plate_pass(bool advance); ///< the 3d forces, for the run's laws
+  void refresh_plate_pass();     ///< the 3d end_of_step()
+  template <class N, class T> void add_plate_forces(bool advance);
+  template <class N, class T> void refresh_plate_normal_forces();
+  ContactGeometry3 plate_geometry(int i, std::size_t s, const Vec3& touch) const;
+  template <class N>
+  double add_plate_rolling_torque(int i, std::size_t s, const PairParameters& p,
+                                  const ContactGeometry3& g, double fn, bool advance,
+                                  double& power);
+  void begin_local();
 
+  bool three_d_ = false; ///< plates (dimension 3) rather than segments
   std::vector<Wall> walls_;
+  std::vector<PlateWall> plates_;
   std::vector<Placed> placed_;
   std::vector<SegmentHit> hits_; ///< one atom's hits on its row's segments, scratch
   SegmentNeighbours near_;       ///< the segments near each atom
@@ -88,12 +133,12 @@ private:
   std::string rolling_id_;
   double energy_ = 0.0;          ///< J: elastic energy in the wall contacts (this rank's atoms)
   double work_ = 0.0;            ///< J: work the walls did on this rank's atoms so far
-  double force_[2] = {};         ///< N: force of this rank's atoms on the walls, last step
+  double force_[3] = {};         ///< N: force of this rank's atoms on the walls, last step
   double totals_[4] = {};        ///< compute_vector's values, summed over ranks
   std::vector<double> contacts_; ///< per atom: segments touched in the last step
-  /// The local array's columns: the atom's id, the segment (from 1), the normal force F_n (N),
-  /// the overlap (m), and the contact's point on the segment (x, y, m).
-  static constexpr int local_columns = 6;
+  /// The local array's columns: the atom's id, the wall (from 1), the normal force F_n (N),
+  /// the overlap (m), and the contact's point on the wall (x, y, and in 3d z, m).
+  int columns_ = 6;
   std::vector<double> local_;       ///< the last step's wall contacts, a row after another
   std::vector<double*> local_rows_; ///< array_local: the rows of local_
   std::vector<int> local_atom_;     ///< each row's atom (its local index)
@@ -102,5 +147,5 @@ private:
 
 } // namespace talus::lammps
 
-#endif // TALUS_LAMMPS_FIX_SEGMENT_WALLS_H
+#endif // TALUS_LAMMPS_FIX_GRANTHESIS_WALL_H
 #endif // FIX_CLASS

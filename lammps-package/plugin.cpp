@@ -4,7 +4,7 @@
 // README.md, "Running it").
 #include "fix_contact_history.h"
 #include "fix_frost_heave.h"
-#include "fix_segment_walls.h"
+#include "fix_granthesis_wall.h"
 #include "lammpsplugin.h"
 #include "pair_granthesis.h"
 #include "version.h"
@@ -33,7 +33,7 @@ constexpr FixEntry fixes[] = {
     {"granthesis/history", "the tangential springs of granthesis' contacts (made by the styles)",
      &create_fix<talus::lammps::FixContactHistory>},
     {"granthesis/wall", "straight wall segments with granthesis' laws",
-     &create_fix<talus::lammps::FixSegmentWalls>},
+     &create_fix<talus::lammps::FixGranthesisWall>},
 };
 
 } // namespace

@@ -7,7 +7,7 @@
 #ifndef TALUS_HOST_LIGGGHTS
 #include "fix_contact_history.h"
 #include "fix_frost_heave.h"
-#include "fix_segment_walls.h"
+#include "fix_granthesis_wall.h"
 #endif
 
 namespace {
@@ -23,8 +23,8 @@ LAMMPS_NS::Fix* create_fix_frost_heave(LAMMPS_NS::LAMMPS* lmp, int narg, char** 
 LAMMPS_NS::Fix* create_fix_contact_history(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
   return new talus::lammps::FixContactHistory(lmp, narg, arg);
 }
-LAMMPS_NS::Fix* create_fix_segment_walls(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
-  return new talus::lammps::FixSegmentWalls(lmp, narg, arg);
+LAMMPS_NS::Fix* create_fix_granthesis_wall(LAMMPS_NS::LAMMPS* lmp, int narg, char** arg) {
+  return new talus::lammps::FixGranthesisWall(lmp, narg, arg);
 }
 #endif
 
@@ -36,6 +36,6 @@ extern "C" void talus_lammps_register(void* lmp) {
 #ifndef TALUS_HOST_LIGGGHTS // the LIGGGHTS adapter carries the pair style only
   (*instance->modify->fix_map)["frost/heave"] = &create_fix_frost_heave;
   (*instance->modify->fix_map)["granthesis/history"] = &create_fix_contact_history;
-  (*instance->modify->fix_map)["granthesis/wall"] = &create_fix_segment_walls;
+  (*instance->modify->fix_map)["granthesis/wall"] = &create_fix_granthesis_wall;
 #endif
 }

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """pair_style granthesis in 3d keeps vectors per contact (the Cundall-Strack springs and the
-rolling angles: fix granthesis/history with three numbers per contact): a run resumed from a
+rolling angles: fix granthesis/history with three numbers per contact), and so does fix
+granthesis/wall for its plates (a lid closing in, whose place and work a restart file keeps
+too): a run resumed from a
 restart file continues the run that wrote it to the bit on 1 rank, and the run on 2 ranks (the
 atoms and their springs moving between ranks) differs from it by rounding alone
 (springs3d.in: 500 spheres falling onto a frozen bed, 600 steps, the restart file, 400 more).
@@ -57,10 +59,14 @@ def main():
     require_mpirun()
     os.makedirs(work, exist_ok=True)
     failures = []
-    _, whole = run(lmp, work, 1, "whole", "whole")
+    printed, whole = run(lmp, work, 1, "whole", "whole")
+    last = [l.split() for l in printed.splitlines() if l.split()[:1] == ["1000"]]
+    if not last or not float(last[-1][2]) > 0.0:
+        failures.append("the lid did not touch the spheres (f_lid[4] at step 1000: "
+                        f"{last[-1][2] if last else 'no thermo row'})")
     _, split = run(lmp, work, 1, "split", "split")
     printed, resumed = run(lmp, work, 1, "resume", "resumed")
-    for fix_id in ("GRANTHESIS_HISTORY", "GRANTHESIS_ROLLING"):
+    for fix_id in ("GRANTHESIS_HISTORY", "GRANTHESIS_ROLLING", "lid_HISTORY", "lid_ROLLING"):
         if f"fix style: granthesis/history, fix ID: {fix_id}" not in printed:
             failures.append(f"the vectors of {fix_id} were not taken from the restart file")
     # not checked: a LAMMPS run split in two is not the whole run, for pair granthesis in 2d as in

@@ -6,61 +6,12 @@
 // neighbour lists, the periodic images or the order of the force sums.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 
-#include "engine3d/simulation3.hpp"
-#include "spheres3d.hpp"
+#include "native3d.hpp"
 
 namespace talus::lammps_test {
 namespace {
-
-struct Difference {
-  double position = 0.0; ///< the largest component of a position's difference, m
-  double velocity = 0.0; ///< m/s
-  double spin = 0.0;     ///< rad/s
-};
-
-// The largest differences between the engines, positions taken to their nearest image.
-Difference between(LammpsInstance& l, const Simulation3& s) {
-  const Spheres& p = s.scene().spheres;
-  const Domain3& d = s.scene().domain;
-  Difference out;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const int id = static_cast<int>(i) + 1;
-    const double* w = l.lmp()->atom->omega[l.index(id)];
-    for (int k = 0; k < 3; ++k) {
-      const auto axis = static_cast<std::size_t>(k);
-      double dx = l.position(id)[k] - component(p.position[i], k);
-      if (d.periodic[axis]) {
-        const double length = component(d.size(), k);
-        dx -= length * std::nearbyint(dx / length);
-      }
-      out.position = std::max(out.position, std::abs(dx));
-      out.velocity =
-          std::max(out.velocity, std::abs(l.velocity(id)[k] - component(p.velocity[i], k)));
-      out.spin = std::max(out.spin, std::abs(w[k] - component(p.angular_velocity[i], k)));
-    }
-  }
-  return out;
-}
-
-Simulation3 native(const std::string& normal, const std::string& tangential, const Material& m,
-                   const std::vector<Sphere>& spheres, double dt, const Domain3& domain = {}) {
-  Scene3 scene;
-  scene.materials = {m};
-  scene.domain = domain;
-  for (const Sphere& s : spheres)
-    scene.add_sphere({.position = s.position,
-                      .radius = s.radius,
-                      .velocity = s.velocity,
-                      .angular_velocity = s.spin,
-                      .mass = s.mass});
-  return Simulation3(std::move(scene), {.timestep = dt,
-                                        .normal_law = parse_normal_law(normal),
-                                        .tangential_law = parse_tangential_law(tangential),
-                                        .verlet_velocity = VerletVelocity::half_step});
-}
 
 Difference after(const std::string& normal, const std::string& tangential,
                  const std::vector<Sphere>& spheres, double dt, int steps,
@@ -70,7 +21,7 @@ Difference after(const std::string& normal, const std::string& tangential,
   LammpsInstance l;
   set_up_3d(l, normal + " " + tangential, m, spheres, dt, boundary, box);
   l.commands({"fix move all nve/sphere", "run " + std::to_string(steps)});
-  Simulation3 s = native(normal, tangential, m, spheres, dt, domain);
+  Simulation3 s = run_as_lammps(native_scene(m, spheres, domain), normal, tangential, dt);
   s.run(static_cast<std::uint64_t>(steps));
   return between(l, s);
 }
@@ -99,7 +50,8 @@ TEST(Engine3DAgreement, AnObliqueCollisionAgreesWithLammpsToRounding) {
       EXPECT_LT(d.spin, 1e-12 * 30.0);
     }
   // and they did collide: the first sphere was turned round
-  Simulation3 s = native("hertz", "mindlin", spheres_material(), oblique_pair(), 1e-7);
+  Simulation3 s =
+      run_as_lammps(native_scene(spheres_material(), oblique_pair()), "hertz", "mindlin", 1e-7);
   s.run(3000);
   EXPECT_LT(s.scene().spheres.velocity[0].x, 0.0);
   EXPECT_GT(norm(s.scene().spheres.angular_velocity[0] - oblique_pair()[0].spin), 1.0);
@@ -128,7 +80,8 @@ TEST(Engine3DAgreement, CollisionsAcrossPeriodicSidesAgreeWithLammpsToRounding) 
   const Domain3 box{
       .lo = {0.0, 0.0, 0.0}, .hi = {side, side, side}, .periodic = {true, true, true}};
   const std::string lammps_box = words({"0", exact(side), "0", exact(side), "0", exact(side)});
-  Simulation3 alone = native("hertz", "mindlin", spheres_material(), spheres, 1e-6, box);
+  Simulation3 alone =
+      run_as_lammps(native_scene(spheres_material(), spheres, box), "hertz", "mindlin", 1e-6);
   std::size_t touching = 0;
   for (int k = 0; k < 20000; ++k) {
     alone.step();

@@ -1,7 +1,7 @@
 // pair_style granthesis for spheres in 3D (lammps-package/pair_granthesis_3d.cpp): single
 // contacts against the shared kernel's 3D contact to the bit, a collision of two spinning
-// spheres against the conservation laws and the planar 2D collision, springs that follow the
-// contact across ranks' exchange and a restart, and what is refused in 3D.
+// spheres against the conservation laws and the planar 2D collision, and springs that follow the
+// contact across ranks' exchange and a restart.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,18 +102,6 @@ TEST(PairGranthesis3D, ACollisionKeepsMomentumAndAngularMomentum) {
   EXPECT_LT(magnitude(p1 - p0), 1e-12 * magnitude(p0));
   EXPECT_LT(magnitude(l1 - l0), 1e-10 * magnitude(l0));
   EXPECT_LT(k1, 0.9 * k0); // they collided
-}
-
-// What is not there yet in 3D is refused: the segment walls, lines of the x-y plane.
-TEST(PairGranthesis3D, SegmentWallsAreRefusedIn3D) {
-  expect_deck_error({"dimension 3", "units si", "atom_style sphere", "boundary f f f",
-                     "comm_modify vel yes", "newton off", "region box block -1 1 -1 1 -1 1",
-                     "create_box 1 box", "create_atoms 1 single 0 0 0", "set atom * diameter 0.01",
-                     "set atom * density 2650", "pair_style granthesis linear coulomb",
-                     "pair_coeff 1 1 " + pair_coefficient_words(spheres_material()),
-                     "fix walls all granthesis/wall segment -1 -0.5 1 -0.5 type 1",
-                     "fix move all nve/sphere", "run 1"},
-                    "the segments are lines of the x-y plane");
 }
 
 } // namespace

@@ -56,7 +56,7 @@ TEST(PairGranthesis, BadInputNamesTheSettingAndTheAllowedValues) {
       "comm_modify vel yes");
 }
 
-TEST(FixSegmentWalls, BadInputNamesTheSettingAndTheAllowedValues) {
+TEST(FixGranthesisWall, BadInputNamesTheSettingAndTheAllowedValues) {
   const std::string pair = "pair_style granthesis linear coulomb";
   expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall"}, "no segment given");
   expect_error({pair, "pair_coeff * *", "fix w all granthesis/wall segment 0 0 1"},
@@ -89,7 +89,7 @@ TEST(FixSegmentWalls, BadInputNamesTheSettingAndTheAllowedValues) {
 
 // The per-atom vector of fix granthesis/wall counts each atom's wall contacts as the native
 // engine does: a face is one contact, the shared end point of two segments one, not two.
-TEST(FixSegmentWalls, CountsEachAtomsWallContactsAsTheNativeEngine) {
+TEST(FixGranthesisWall, CountsEachAtomsWallContactsAsTheNativeEngine) {
   LammpsInstance lammps;
   lammps.commands({"dimension 2", "units si", "atom_style sphere", "atom_modify map array",
                    "boundary f f p", "comm_modify vel yes", "region box block -1 1 -1 1 -0.01 0.01",
