@@ -13,6 +13,7 @@
 #include "drivers/drivers.hpp"
 #include "io/checkpoint.hpp"
 #include "io/lammps_stages.hpp"
+#include "io/lammps_words.hpp"
 #include "scenario/file/load.hpp"
 #include "simulation/rolling_pass.hpp"
 #include "talus/error.hpp"
@@ -21,11 +22,6 @@
 namespace talus {
 
 namespace {
-
-// Every number at full precision: LAMMPS reads back the same double.
-std::string exact(double x) {
-  return fmt::format("{}", x); // the shortest text that reads back as x
-}
 
 std::string refused(const std::string& key, const std::string& why) {
   return "key '" + key + "': " + why + "; talus export lammps writes only what LAMMPS and the " +
@@ -213,10 +209,6 @@ std::string type_list(const std::vector<int>& types) {
   std::string out;
   for (const int t : types) out.append(out.empty() ? "" : " ").append(std::to_string(t));
   return out;
-}
-
-std::uint64_t steps_of(double interval, double dt) {
-  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / dt)));
 }
 
 // fix move for driver k's group: wiggle, linear or rotate, as the native motion is.

@@ -8,8 +8,11 @@
 #include "cli/run/run_folder.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "io/lammps_export.hpp"
+#include "io/lammps_export3.hpp"
 #include "scenario/build.hpp"
+#include "scenario/build3.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/file/load3.hpp"
 
 namespace talus::cli {
 
@@ -57,6 +60,29 @@ void check_export_folder(const std::string& dir, bool replace) {
                           "--replace to write over a previous export there");
 }
 
+// A 3D scenario's case: its spheres where the builder puts them (no settling).
+void export_3d(const Scenario3& s, const std::string& source, const std::string& dir, bool replace,
+               const std::string& command, bool quiet) {
+  check_export_folder(dir, replace);
+  LammpsCase c;
+  std::size_t atoms = 0;
+  try {
+    check_lammps_export(s);
+    const BuiltScenario3 built = build_scenario3(s);
+    atoms = built.scene.spheres.size();
+    c = export_lammps(s, built, command);
+  } catch (const ScenarioError& e) {
+    throw ScenarioError(source + ": " + e.what());
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(source + ": " + e.what());
+  }
+  write_lammps_case(c, dir);
+  if (!quiet)
+    fmt::print("talus export lammps: {0}/in.{1}, data.{1}, masses.{1} and scenario.toml (the "
+               "native twin) ({2} spheres, 3D); run it in {0} with talus-lmp -in in.{1}\n",
+               dir, c.name, atoms);
+}
+
 } // namespace
 
 void add_export_command(CLI::App& app) {
@@ -82,7 +108,11 @@ void add_export_command(CLI::App& app) {
                    "DIR may hold a previous export, whose files are written over (never a run "
                    "or a sweep folder)");
   lammps->callback([o] {
-    const Scenario s = resolve_scenario(o->scenario, o->set);
+    const ScenarioText text = scenario_text(o->scenario);
+    if (scenario_dimension(text, o->set) == 3)
+      return export_3d(load_scenario3(text.text, text.file, o->set), o->scenario, o->dir,
+                       o->replace, command_line(o->scenario, o->dir, o->set), o->quiet);
+    const Scenario s = load_scenario(text.text, text.file, o->set);
     check_export_folder(o->dir, o->replace); // before the settling, which can take minutes
     try {
       check_lammps_export(s);
