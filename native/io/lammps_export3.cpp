@@ -7,6 +7,7 @@
 
 #include "io/lammps_words.hpp"
 #include "scenario/file/load3.hpp"
+#include "simulation/simulation.hpp"
 #include "talus/error.hpp"
 #include "talus/material_keys.hpp"
 
@@ -111,10 +112,12 @@ std::string deck(const Scenario3& s, const BuiltScenario3& b, const std::string&
   const double dt = b.settings.timestep;
   const bool walls = !b.scene.plates.empty();
   std::string out = deck_header(s, b, command) + "\n";
-  out += fmt::format("variable steps index {}\n", steps_of(s.simulation.duration, dt));
+  // the steps and intervals counted as the native 3D run counts them, so that the dumps fall on
+  // the steps of its snapshots
+  out += fmt::format("variable steps index {}\n", steps_until(s.simulation.duration, dt));
   if (s.output.snapshot_interval > 0.0)
-    out +=
-        fmt::format("variable snapshot_every index {}\n", steps_of(s.output.snapshot_interval, dt));
+    out += fmt::format("variable snapshot_every index {}\n",
+                       std::max<std::uint64_t>(1, steps_until(s.output.snapshot_interval, dt)));
   const auto side = [&](int k) {
     return s.geometry.periodic[static_cast<std::size_t>(k)] ? 'p' : 'f';
   };
@@ -141,7 +144,8 @@ std::string deck(const Scenario3& s, const BuiltScenario3& b, const std::string&
                      "{}coordination pe{}{}\nthermo {}\nthermo_modify norm no\n",
                      walls ? "v_" : "c_",
                      dot(b.scene.gravity, b.scene.gravity) > 0.0 ? " f_gravity" : "",
-                     walls ? " f_walls[1]" : "", steps_of(s.output.thermo_interval, dt));
+                     walls ? " f_walls[1]" : "",
+                     std::max<std::uint64_t>(1, steps_until(s.output.thermo_interval, dt)));
   if (s.output.snapshot_interval > 0.0)
     out += fmt::format("dump snapshots all custom ${{snapshot_every}} dump.{}.lammpstrj id type "
                        "radius mass x y z vx vy vz omegax omegay omegaz\ndump_modify snapshots "

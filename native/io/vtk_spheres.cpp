@@ -12,8 +12,10 @@ using vtk_detail::array;
 
 namespace {
 
-std::string triple(const Vec3& v, const char* format = "{:.9g} {:.9g} {:.9g}") {
-  return fmt::format(fmt::runtime(format), v.x, v.y, v.z);
+// Every number as the shortest text that reads back to the same double: a snapshot holds the
+// exact state, which validation/crosscheck3d.py compares with LAMMPS' to rounding.
+std::string triple(const Vec3& v) {
+  return fmt::format("{} {} {}", v.x, v.y, v.z);
 }
 
 const char* const header = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
@@ -28,7 +30,7 @@ std::string vtp_spheres(const Scene3& scene) {
   out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\">\n", n, n);
   out += "      <PointData Scalars=\"radius\">\n";
   array(out, "id", 1, n, [&](std::size_t i) { return fmt::format("{}", s.id[i]); });
-  array(out, "radius", 1, n, [&](std::size_t i) { return fmt::format("{:.9g}", s.radius[i]); });
+  array(out, "radius", 1, n, [&](std::size_t i) { return fmt::format("{}", s.radius[i]); });
   array(out, "velocity", 3, n, [&](std::size_t i) { return triple(s.velocity[i]); });
   array(out, "angular_velocity", 3, n,
         [&](std::size_t i) { return triple(s.angular_velocity[i]); });
@@ -36,10 +38,10 @@ std::string vtp_spheres(const Scene3& scene) {
   array(out, "kind", 1, n,
         [&](std::size_t i) { return fmt::format("{}", static_cast<int>(s.kind[i])); });
   array(out, "material", 1, n, [&](std::size_t i) { return fmt::format("{}", s.material[i]); });
-  array(out, "mass", 1, n, [&](std::size_t i) { return fmt::format("{:.9g}", s.mass[i]); });
+  array(out, "mass", 1, n, [&](std::size_t i) { return fmt::format("{}", s.mass[i]); });
   out += "      </PointData>\n      <Points>\n";
   array(out, "position", 3, n,
-        [&](std::size_t i) { return triple(s.position[i], "{:.12g} {:.12g} {:.12g}"); });
+        [&](std::size_t i) { return triple(s.position[i]); });
   out += "      </Points>\n";
   vtk_detail::end_with_verts(out, n);
   return out;
@@ -60,7 +62,7 @@ std::string vtp_plates(const Scene3& scene, double reach) {
     const double su = (c % 4 == 0 || c % 4 == 3) ? -1.0 : 1.0, sv = c % 4 < 2 ? -1.0 : 1.0;
     const Vec3 corner = p.centre + (su * std::min(p.half_u, reach)) * p.axis_u +
                         (sv * std::min(p.half_v, reach)) * p.axis_v();
-    return triple(corner, "{:.12g} {:.12g} {:.12g}");
+    return triple(corner);
   });
   out += "      </Points>\n      <Polys>\n"
          "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
