@@ -1,8 +1,10 @@
 // fix frost/heave: the thesis' freeze (chapter 5.2.1) in LAMMPS. Heights above the table are
 // multiplied by exactly the factor when the group's kinetic energy is below epsilon, and only
-// then; bad fix lines stop with their errors.
+// then; in 3d along z, where spheres on a plate settle, heave and settle again; bad fix lines
+// stop with their errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,69 @@ TEST(FixFrostHeave, InitialWaitCountsTheIntervalFromTheStart) {
 
   EXPECT_EQ(heaves(l), 1.0);
   EXPECT_EQ(l.position(1)[1], table + (heights[0] - table) * factor);
+}
+
+// In 3d the heave is along z, gravity's axis: spheres at rest in the air are lifted by exactly
+// the factor above the table, their x and y unchanged.
+TEST(FixFrostHeave, LiftsAlongZIn3d) {
+  LammpsInstance l;
+  l.commands({"dimension 3", "units si", "atom_style sphere", "atom_modify map array",
+              "boundary f f f", "comm_modify vel yes",
+              "region box block -0.5 0.5 -0.5 0.5 -0.5 0.5", "create_box 1 box"});
+  for (int k = 0; k < 3; ++k)
+    l.command("create_atoms 1 single " + exact(0.1 * k) + " 0.03 " + exact(heights[k]));
+  l.commands({"set atom * diameter 0.01", "set atom * density 2650",
+              "pair_style granthesis linear coulomb", "pair_coeff * *", "fix move all nve/sphere",
+              "fix frost all frost/heave epsilon 1e-12 factor 1.5 table 0.01", "timestep 1e-6",
+              "run 1"});
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(l.position(k + 1)[2], table + (heights[k] - table) * factor);
+    EXPECT_EQ(l.position(k + 1)[0], 0.1 * k);
+    EXPECT_EQ(l.position(k + 1)[1], 0.03);
+  }
+  EXPECT_EQ(heaves(l), 1.0);
+}
+
+// A column of three spheres on a plate (fix granthesis/wall) comes to rest, is heaved, falls
+// back and comes to rest again: the freeze-thaw cycle of the thesis along gravity in 3d. Each
+// heave lifts the top sphere by (factor - 1) times its height above the floor, and after it
+// the column stands where it stood (the spheres stack straight above each other).
+TEST(FixFrostHeave, SpheresOnAPlateSettleHeaveAndSettleAgainIn3d) {
+  LammpsInstance l;
+  l.commands({"dimension 3",
+              "units si",
+              "atom_style sphere",
+              "atom_modify map array",
+              "boundary f f f",
+              "comm_modify vel yes",
+              "region box block -0.1 0.1 -0.1 0.1 -0.1 0.3",
+              "create_box 1 box",
+              "create_atoms 1 single 0 0 0.0052",
+              "create_atoms 1 single 0 0 0.0154",
+              "create_atoms 1 single 0 0 0.0256",
+              "set atom * diameter 0.01",
+              "set atom * density 2650",
+              "pair_style granthesis linear coulomb",
+              "pair_coeff * * normal_stiffness 1e5 restitution 0.3",
+              "neighbor 0.002 bin",
+              "fix move all nve/sphere",
+              "fix gravity all gravity 9.81 vector 0 0 -1",
+              "fix floor all granthesis/wall plane 0 0 0 0 0 1 type 1",
+              "fix frost all frost/heave epsilon 1e-9 factor 1.2 table 0 interval 0.05",
+              "timestep 2e-6"});
+  // in runs of 1 ms: a heaved sphere falls 5 um in the first
+  double highest = 0.0;
+  for (int k = 0; k < 1000 && heaves(l) < 2.0; ++k) {
+    l.command("run 500");
+    highest = std::max(highest, l.position(3)[2]);
+  }
+  EXPECT_EQ(heaves(l), 2.0);
+  // the top sphere at rest sits near 2.5 diameters less its contacts' overlaps; heaved by a
+  // fifth of that, less what it falls in the first millisecond
+  EXPECT_GT(highest, 1.2 * 0.0249 - 1e-5);
+  l.command("run 20000"); // it falls back onto the column
+  EXPECT_NEAR(l.position(3)[2], 0.025, 2e-4);
+  EXPECT_NEAR(l.position(3)[0], 0.0, 1e-9);
 }
 
 void expect_error(const std::string& fix_line, const std::string& expected) {
