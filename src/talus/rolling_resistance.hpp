@@ -67,7 +67,10 @@ struct ElasticPlasticRolling {
     // angle (theta = -M / k_r, then -k_r theta) comes back a rounding step short of it, and must
     // not then gain the dashpot that the step that held it left out
     const auto mobilised = magnitude(spring) >= (1.0 - 1e-12) * limit;
-    spring = select(mobilised, copy_sign(limit, spring), spring);
+    // a spring of zero stays zero, also at a limit of zero (a contact whose normal force is cut
+    // to zero): in 3D its direction, which copy_sign would take, is not defined
+    spring = select(mobilised, select(magnitude(spring) > 0.0, copy_sign(limit, spring), spring),
+                    spring);
     theta = select(kr > 0.0, -spring / kr, H{});
     const R dashpot = p.rolling_damping * 2.0 * square_root(inertia * kr);
     const H m = spring - select(mobilised, H{}, dashpot * spin);

@@ -258,5 +258,23 @@ TEST(Contact3D, RollingResistanceInAPlaneIsThe2DOne) {
   }
 }
 
+// A contact whose normal force is cut to zero (a dashpot as the spheres part) with no spin and
+// no rolling spring: the moment's limit is zero and the spring's direction undefined; the torque
+// and the spring stay zero, not NaN (as a sphere landing on another without spin meets).
+TEST(Contact3D, RollingResistanceWithoutLoadOrSpinIsZero) {
+  Material mat;
+  mat.rolling_friction = 0.1;
+  const PairParameters p = mix(mat, mat, 1.0);
+  ContactGeometry3 g;
+  g.normal = {1.0, 0.0, 0.0};
+  g.overlap = 1e-6, g.r_eff = 1e-3, g.m_eff = 1e-4;
+  Vec3 theta{};
+  const Vec3 m = RollingLaw::torque<LinearSpringDashpot>(p, g, 0.0, Vec3{}, 1e-11, theta, 1e-6);
+  EXPECT_EQ(m.x, 0.0);
+  EXPECT_EQ(m.y, 0.0);
+  EXPECT_EQ(m.z, 0.0);
+  EXPECT_EQ(magnitude(theta), 0.0);
+}
+
 } // namespace
 } // namespace talus
