@@ -6,6 +6,7 @@
 
 #include "talus/contact_force.hpp"
 #include "talus/contact_geometry_3d.hpp"
+#include "talus/rolling_resistance.hpp"
 
 namespace talus {
 
@@ -48,6 +49,31 @@ void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table, Lever
   }
 }
 
+// A sphere's inertia about a point of its rim, which rolling resistance's dashpot takes.
+double rim_of(const Spheres& s, std::size_t i) {
+  return rim_inertia(s.inertia[i], s.mass[i], s.radius[i]);
+}
+
+// Rolling resistance's torque on i of a contact with rolling spring `theta` (turned into the
+// tangent plane and advanced a step here), against a sphere or plate of spin w_j and rim inertia
+// rim_j (0: a plate, infinitely heavy). None where the pair does not roll with resistance.
+template <class N>
+Vec3 rolling_torque(const PairParameters& p, const ContactGeometry3& g, double normal_force,
+                    const Vec3& w_i, const Vec3& w_j, double rim_i, double rim_j, Vec3& theta,
+                    double dt) {
+  if (p.rolling_friction == 0.0) return {};
+  theta = into_tangent_plane(theta, g.normal);
+  return RollingLaw::torque<N>(p, g, not_below_zero(normal_force), rolling_spin(w_i, w_j, g.normal),
+                               rolling_inertia(rim_i, rim_j), theta, dt);
+}
+
+// The elastic energy of a rolling spring as it stands (turned into the tangent plane).
+template <class N>
+double rolling_energy(const PairParameters& p, const ContactGeometry3& g, const Vec3& theta) {
+  if (p.rolling_friction == 0.0) return 0.0;
+  return RollingLaw::elastic_energy<N>(p, g, into_tangent_plane(theta, g.normal));
+}
+
 } // namespace
 
 std::size_t ForcePass3::bytes() const {
@@ -80,21 +106,33 @@ ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& t
               Vec3& spring) {
             const ContactForce3 c = contact_force<N, T>(p, g, spring, dt);
             force_[e] = c.force, torque_i_[e] = c.torque_i, torque_j_[e] = c.torque_j;
+            if (list.with_rolling) {
+              const Vec3 m = rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i],
+                                               s.angular_velocity[j], rim_of(s, i), rim_of(s, j),
+                                               list.rolling[e], dt);
+              torque_i_[e] += m, torque_j_[e] -= m;
+            }
             ++contacts;
             deepest = std::max(deepest, g.overlap / std::min(s.radius[i], s.radius[j]));
           },
-          [&](std::uint32_t e, std::uint32_t, const ContactGeometry3& g, const PairParameters& p,
+          [&](std::uint32_t e, std::uint32_t w, const ContactGeometry3& g, const PairParameters& p,
               Vec3& spring) {
             const ContactForce3 c = contact_force<N, T>(p, g, spring, dt);
             plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
+            if (list.with_rolling)
+              plate_torque_[e] += rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i],
+                                                    scene.plates[w].angular_velocity, rim_of(s, i),
+                                                    0.0, list.plate_rolling[e], dt);
             ++contacts, ++on_plates;
             deepest = std::max(deepest, g.overlap / s.radius[i]);
           },
           [&](std::uint32_t e, bool plate) {
             if (plate) {
               list.plate_spring[e] = plate_force_[e] = plate_torque_[e] = {};
+              if (list.with_rolling) list.plate_rolling[e] = {};
             } else {
               list.spring[e] = force_[e] = torque_i_[e] = torque_j_[e] = {};
+              if (list.with_rolling) list.rolling[e] = {};
             }
           });
     }
@@ -125,13 +163,16 @@ double contact_elastic_energy(const Scene3& scene, const SphereList& list, const
                               const Settings3& settings) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
     double e = 0.0;
-    const auto add = [&](std::uint32_t, std::uint32_t, const ContactGeometry3& g,
-                         const PairParameters& p, const Vec3& spring) {
-      e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(spring, g.normal));
+    const auto add = [&](const std::vector<Vec3>& rolling) {
+      return [&](std::uint32_t k, std::uint32_t, const ContactGeometry3& g, const PairParameters& p,
+                 const Vec3& spring) {
+        e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(spring, g.normal));
+        if (list.with_rolling) e += rolling_energy<N>(p, g, rolling[k]);
+      };
     };
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-      contacts_of(i, scene, list, table, lever_shares(settings.lever_arm), add, add,
-                  [](std::uint32_t, bool) {});
+      contacts_of(i, scene, list, table, lever_shares(settings.lever_arm), add(list.rolling),
+                  add(list.plate_rolling), [](std::uint32_t, bool) {});
     return e;
   });
 }

@@ -1,5 +1,6 @@
 #include "engine3d/simulation3.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -24,10 +25,6 @@ void validate(const Scene3& scene, const Settings3& settings) {
     const std::string problem = material_error(settings.normal_law, settings.tangential_law,
                                                material, settings.linear_damping);
     require(problem.empty(), "material " + std::to_string(m) + ": " + problem);
-    require(
-        material.rolling_friction == 0.0,
-        "material " + std::to_string(m) +
-            ": rolling_friction is not there yet in 3D; allowed: 0 (spheres in 3D roll freely)");
   }
   const auto known = [&](std::uint16_t m) { return m < scene.materials.size(); };
   for (std::size_t i = 0; i < scene.spheres.size(); ++i)
@@ -55,6 +52,10 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   set_up();
   for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
   drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
+  // rolling springs where some pair of materials rolls with resistance (the mixed mu_r is the
+  // mean of the two: a pair rolls with it if either material does)
+  list_.with_rolling = std::ranges::any_of(
+      scene_.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
   compute_forces();

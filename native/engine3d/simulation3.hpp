@@ -2,10 +2,10 @@
 // The 3D engine's facade: owns a scene of spheres and runs its steps with velocity Verlet.
 //
 // What it has: spheres (free or fixed), plates (fixed or driven: translating, vibrating,
-// turning), gravity, periodic axes,
-// every law pair of the table, the Verlet list with its springs, the stability guard. What it
-// does not have yet is refused where it is set (Simulation3's constructor, Spheres::add):
-// rolling resistance, moved spheres, Gear. Its results are bit-identical for any thread count.
+// turning), gravity, periodic axes, every law pair of the table and rolling resistance, the
+// Verlet list with its springs, the stability guard. What it does not have yet is refused where
+// it is set (Spheres::add, the scenario loader): moved spheres, Gear. Its results are
+// bit-identical for any thread count.
 #include <cstdint>
 
 #include "engine3d/force_pass3.hpp"

@@ -151,6 +151,7 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
   for (std::size_t i = 0; i < s.size(); ++i) s.position[i] = domain.wrap(s.position[i], s.image[i]);
   SphereList next;
   next.skin = skin;
+  next.with_rolling = list.with_rolling;
   next.builds = list.builds + 1;
   next.row_offset.assign(1, 0);
   next.plate_offset.assign(1, 0);
@@ -163,6 +164,9 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
         next.neighbour.push_back(c.j);
         next.shift.push_back(c.shift);
         next.spring.push_back(kept_spring(list.row_offset, list.neighbour, list.spring, i, c.j));
+        if (next.with_rolling)
+          next.rolling.push_back(
+              kept_spring(list.row_offset, list.neighbour, list.rolling, i, c.j));
       }
       next.row_offset.push_back(static_cast<std::uint32_t>(next.neighbour.size()));
       for (std::uint32_t w = 0; s.is_free(i) && w < plates.size(); ++w) {
@@ -172,6 +176,9 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
         next.plate.push_back(w);
         next.plate_spring.push_back(
             kept_spring(list.plate_offset, list.plate, list.plate_spring, i, w));
+        if (next.with_rolling)
+          next.plate_rolling.push_back(
+              kept_spring(list.plate_offset, list.plate, list.plate_rolling, i, w));
       }
       next.plate_offset.push_back(static_cast<std::uint32_t>(next.plate.size()));
     }

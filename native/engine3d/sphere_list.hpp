@@ -1,7 +1,8 @@
 #pragma once
 // The Verlet list of spheres: every pair within reach (touching, or closer than the skin) as a
 // half list (j > i) in CSR form, each entry with the periodic image of j it takes and the
-// tangential spring of the contact, and every sphere-plate pair with its spring.
+// tangential spring of the contact (and its rolling spring, where the materials roll with
+// resistance), and every sphere-plate pair with its springs.
 #include <cstdint>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct SphereList {
   std::vector<std::uint32_t> plate_offset; ///< CSR over spheres: their plates within reach
   std::vector<std::uint32_t> plate;
   std::vector<Vec3> plate_spring;
+  /// Whether the entries keep rolling springs: `rolling` beside `spring` and `plate_rolling`
+  /// beside `plate_spring` (the rolling angle, rad, a vector in the tangent plane), else both
+  /// are empty. Set before the first build; builds keep it.
+  bool with_rolling = false;
+  std::vector<Vec3> rolling;
+  std::vector<Vec3> plate_rolling;
   std::vector<Vec3> reference;            ///< sphere positions at the last build
   std::vector<PlatePose> plate_reference; ///< the plates' poses at the last build
   double skin = 0.0;
@@ -41,9 +48,10 @@ struct SphereList {
 };
 
 /// Rebuilds the list with the given skin (m). Wraps positions into the domain along periodic
-/// axes first. Pairs of two spheres that are not free are left out. The springs of pairs still
-/// within reach are carried over. Throws InvalidArgument if a periodic axis is shorter than
-/// three interaction ranges (2 max radius + skin): a sphere would meet j through two images.
+/// axes first. Pairs of two spheres that are not free are left out. The springs (and rolling
+/// springs) of pairs still within reach are carried over. Throws InvalidArgument if a periodic axis
+/// is shorter than three interaction ranges (2 max radius + skin): a sphere would meet j through
+/// two images.
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin);
 

@@ -35,6 +35,12 @@ template <class C, class F> void settings_fields(C& c, F&& f) {
     c.lever_arm, c.linear_damping, c.max_overlap_fraction, c.threads);
 }
 
+// The rolling springs, which version 2 added (a version 1 file has none: its run could not
+// roll with resistance).
+template <class L, class F> void rolling_fields(L& l, F&& f) {
+  f(l.rolling), f(l.plate_rolling);
+}
+
 void write_state(Writer& w, const SimulationState3& st) {
   const Scene3& sc = st.scene;
   sphere_fields(sc.spheres, [&](const auto& v) { w.vec(v); });
@@ -50,6 +56,8 @@ void write_state(Writer& w, const SimulationState3& st) {
   for (const Material& m : sc.materials) write_material(w, m);
   w.pod(sc.gravity);
   list_fields(st.list, [&](const auto& v) { w.vec(v); });
+  write_fields(w, st.list.with_rolling);
+  rolling_fields(st.list, [&](const auto& v) { w.vec(v); });
   write_fields(w, st.list.skin, st.list.builds);
   w.vec(st.start);
   write_fields(w, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
@@ -78,6 +86,10 @@ void check_state(Reader& r, const SimulationState3& st) {
   if (l.shift.size() != l.neighbour.size() || l.spring.size() != l.neighbour.size() ||
       l.second_entry.size() != l.neighbour.size() || l.plate_spring.size() != l.plate.size())
     r.fail("a list's arrays of different lengths");
+  const std::size_t rolling = l.with_rolling ? l.neighbour.size() : 0,
+                    plate_rolling = l.with_rolling ? l.plate.size() : 0;
+  if (l.rolling.size() != rolling || l.plate_rolling.size() != plate_rolling)
+    r.fail("a list's rolling springs are not one per entry");
   for (const std::uint32_t j : l.neighbour)
     if (j >= n) r.fail("a list entry names a sphere that does not exist");
   for (const std::uint32_t e : l.second_entry)
@@ -89,7 +101,7 @@ void check_state(Reader& r, const SimulationState3& st) {
     r.fail("the list's build positions are not one per sphere and plate");
 }
 
-SimulationState3 read_state(Reader& r) {
+SimulationState3 read_state(Reader& r, std::uint32_t version) {
   SimulationState3 st;
   Scene3& sc = st.scene;
   sphere_fields(sc.spheres, [&](auto& v) { r.vec(v); });
@@ -103,6 +115,10 @@ SimulationState3 read_state(Reader& r) {
   for (Material& m : sc.materials) m = read_material(r, checkpoint_version);
   sc.gravity = r.pod<Vec3>();
   list_fields(st.list, [&](auto& v) { r.vec(v); });
+  if (version >= 2) {
+    read_fields(r, st.list.with_rolling);
+    rolling_fields(st.list, [&](auto& v) { r.vec(v); });
+  }
   read_fields(r, st.list.skin, st.list.builds);
   r.vec(st.start);
   read_fields(r, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
@@ -122,13 +138,14 @@ std::string encode_checkpoint3(const Checkpoint3& c) {
 
 Checkpoint3 decode_checkpoint3(const std::string& bytes, const std::string& source) {
   const Header h = read_header(bytes, magic3, source, "talus 3D checkpoint");
-  if (h.version != checkpoint3_version)
+  if (h.version < 1 || h.version > checkpoint3_version)
     throw CheckpointError(source + ": 3D checkpoint format version " + std::to_string(h.version) +
-                          "; this talus reads version " + std::to_string(checkpoint3_version));
+                          "; this talus reads versions 1 to " +
+                          std::to_string(checkpoint3_version));
   check_payload(bytes, h, source);
   Reader r(bytes, header_bytes, header_bytes + h.size, source);
   Checkpoint3 c;
-  c.state = read_state(r);
+  c.state = read_state(r, h.version);
   settings_fields(c.settings, [&](auto&... v) { read_fields(r, v...); });
   c.run_data = r.str();
   if (!r.done()) r.fail("bytes left after the last field");

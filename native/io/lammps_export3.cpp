@@ -1,5 +1,6 @@
 #include "io/lammps_export3.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -124,8 +125,10 @@ std::string deck(const Scenario3& s, const BuiltScenario3& b, const std::string&
   out += fmt::format("\nunits si\ndimension 3\natom_style sphere\natom_modify map array\n"
                      "boundary {} {} {}\ncomm_modify vel yes\n",
                      side(0), side(1), side(2));
-  // a law with a spring: each rank computes its own atoms' contacts (pair_style granthesis)
-  if (keeps_history(s.simulation.tangential_law)) out += "newton off\n";
+  // a law with a spring, or rolling resistance's: each rank computes its own atoms' contacts
+  const bool rolling =
+      std::ranges::any_of(s.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+  if (keeps_history(s.simulation.tangential_law) || rolling) out += "newton off\n";
   out += fmt::format("read_data data.{0}\ninclude masses.{0}\n\n", s.name);
   out += laws_and_walls(s, b) + "\n";
   // the native skin: half the largest radius unless given

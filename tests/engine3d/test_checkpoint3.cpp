@@ -1,6 +1,6 @@
 // 3D checkpoints (io/checkpoint3.hpp): a run saved, read back and continued is the run that went
-// on without stopping, to the bit (springs, list, plates on their drivers, periodic images); a
-// damaged or foreign file is refused with what is wrong.
+// on without stopping, to the bit (springs and rolling springs, list, plates on their drivers,
+// periodic images); a damaged or foreign file is refused with what is wrong.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -12,11 +12,13 @@
 namespace talus {
 namespace {
 
-// 300 spheres falling in a box periodic along x onto a vibrating floor, with friction.
+// 300 spheres falling in a box periodic along x onto a vibrating floor, with friction and
+// rolling resistance.
 Simulation3 shaken_bed() {
   Material m = testing::elastic_material();
   m.restitution = 0.5;
   m.friction = 0.4;
+  m.rolling_friction = 0.05;
   Scene3 scene;
   scene.materials = {m};
   scene.gravity = {0.0, 0.0, -9.81};
@@ -56,6 +58,9 @@ TEST(Checkpoint3, AResumedRunIsTheWholeRunToTheBit) {
   EXPECT_TRUE(same(a.velocity, b.velocity));
   EXPECT_TRUE(same(a.angular_velocity, b.angular_velocity));
   EXPECT_TRUE(same(whole.list().spring, second.list().spring));
+  EXPECT_TRUE(same(whole.list().rolling, second.list().rolling));
+  EXPECT_TRUE(same(whole.list().plate_rolling, second.list().plate_rolling));
+  EXPECT_FALSE(whole.list().rolling.empty());
   EXPECT_TRUE(a.image == b.image);
   EXPECT_EQ(whole.time(), second.time());
   EXPECT_EQ(whole.scene().plates[0].centre.z, second.scene().plates[0].centre.z);

@@ -55,7 +55,6 @@ TEST(Scenario3, WhatThe3DEngineHasNotIsRefusedByName) {
   };
   says({"simulation.integrator=gear"}, "'simulation.integrator': \"gear\" is not there yet in 3D");
   says({"simulation.sort_every=10"}, "'simulation.sort_every'");
-  says({"materials.0.rolling_friction=0.1"}, "'materials.0.rolling_friction': rolling resistance");
   says({"particles.shape=disk"}, "a 3D scenario's grains are spheres");
   says({"packing.method=lattice"}, "[packing] is not there yet in 3D");
   says({"frost.model=front"}, "[frost] is not there yet in 3D");

@@ -103,19 +103,6 @@ TEST(Threads3, ARunIsBitIdenticalOnOneAndTwoThreads) {
   EXPECT_EQ(a.list().builds, b.list().builds);
 }
 
-TEST(Refusals3, RollingResistanceIsNotThereYetIn3D) {
-  Scene3 scene = poured(4);
-  scene.materials[0].rolling_friction = 0.1;
-  try {
-    Simulation3 s(scene, settings_for(scene));
-    FAIL() << "rolling resistance ran in 3D";
-  } catch (const InvalidArgument& e) {
-    EXPECT_NE(std::string(e.what()).find("rolling_friction is not there yet in 3D"),
-              std::string::npos)
-        << e.what();
-  }
-}
-
 TEST(Refusals3, ASphereMovedByADriverIsNotThereYet) {
   Scene3 scene;
   EXPECT_THROW(scene.add_sphere({.position = {}, .radius = 1e-3, .kind = Kind::moved}),

@@ -121,29 +121,51 @@ std::vector<Sphere> thrown_spheres() {
 // (src/talus/plate.hpp) and share the kernel; they differ in the integrator's and the force sums'
 // order, a few ulp a step, which every collision amplifies: over 20000 steps below 1e-14 m of
 // positions, 1e-12 m/s of speeds and 1e-10 rad/s of spins (speeds about 0.3 m/s, spins 30 rad/s).
-TEST(PlateWalls3D, SpheresAmongDrivenPlatesAgreeWithTheNativeEngineToRounding) {
-  Material m = spheres_material();
-  m.tangential_damping = 2000.0; // the Coulomb law's viscous friction turns the spheres too
+// The largest differences after `steps` of the scene in both engines, with material m.
+Difference among_plates(const std::string& normal, const std::string& tangential, const Material& m,
+                        int steps) {
   const std::vector<Sphere> spheres = thrown_spheres();
   const std::vector<PlateCase> plates = box_of_plates();
   const double dt = 1e-6;
-  const int steps = 20000;
+  LammpsInstance l;
+  set_up_lammps(l, normal + " " + tangential, m, spheres, plates, dt);
+  Simulation3 s = native_run(normal, tangential, m, spheres, plates, dt);
+  std::size_t on_plates = 0;
+  for (int k = 0; k < steps; ++k) {
+    s.step();
+    on_plates += s.last_pass().on_plates;
+  }
+  EXPECT_GT(on_plates, 1000u) << "the spheres hardly touched the plates";
+  l.command("run " + std::to_string(steps));
+  const Difference d = between(l, s);
+  std::printf("%s %s%s: %.2e m, %.2e m/s, %.2e rad/s\n", normal.c_str(), tangential.c_str(),
+              m.rolling_friction > 0.0 ? ", rolling" : "", d.position, d.velocity, d.spin);
+  return d;
+}
+
+TEST(PlateWalls3D, SpheresAmongDrivenPlatesAgreeWithTheNativeEngineToRounding) {
+  Material m = spheres_material();
+  m.tangential_damping = 2000.0; // the Coulomb law's viscous friction turns the spheres too
   for (const std::string normal : {"linear", "hertz"})
     for (const std::string tangential : {"coulomb", "cundall_strack", "mindlin"}) {
       SCOPED_TRACE(normal + " " + tangential);
-      LammpsInstance l;
-      set_up_lammps(l, normal + " " + tangential, m, spheres, plates, dt);
-      Simulation3 s = native_run(normal, tangential, m, spheres, plates, dt);
-      std::size_t on_plates = 0;
-      for (int k = 0; k < steps; ++k) {
-        s.step();
-        on_plates += s.last_pass().on_plates;
-      }
-      ASSERT_GT(on_plates, 1000u) << "the spheres hardly touched the plates";
-      l.command("run " + std::to_string(steps));
-      const Difference d = between(l, s);
-      std::printf("%s %s: %.2e m, %.2e m/s, %.2e rad/s\n", normal.c_str(), tangential.c_str(),
-                  d.position, d.velocity, d.spin);
+      const Difference d = among_plates(normal, tangential, m, 20000);
+      EXPECT_LT(d.position, 1e-14);
+      EXPECT_LT(d.velocity, 1e-12);
+      EXPECT_LT(d.spin, 1e-10);
+    }
+}
+
+// The same with rolling resistance between the spheres and on the plates (the turning square's
+// spin in the relative spin): rounding as above.
+TEST(PlateWalls3D, RollingResistanceAgreesWithTheNativeEngineToRounding) {
+  Material m = spheres_material();
+  m.tangential_damping = 2000.0;
+  m.rolling_friction = 0.1;
+  for (const std::string normal : {"linear", "hertz"})
+    for (const std::string tangential : {"coulomb", "cundall_strack"}) {
+      SCOPED_TRACE(normal + " " + tangential);
+      const Difference d = among_plates(normal, tangential, m, 20000);
       EXPECT_LT(d.position, 1e-14);
       EXPECT_LT(d.velocity, 1e-12);
       EXPECT_LT(d.spin, 1e-10);

@@ -79,10 +79,6 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
   s.description = top.text("description", "");
   section(top, "simulation", file, [&](TableReader& r) { read_simulation(r, s.simulation); });
   s.materials = read_materials(top, file);
-  for (std::size_t m = 0; m < s.materials.size(); ++m)
-    if (s.materials[m].rolling_friction != 0.0)
-      throw ScenarioError(file + ": key 'materials." + std::to_string(m) +
-                          ".rolling_friction': rolling resistance" + not_in_3d + "; allowed: 0");
   section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
   section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry); });
   section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
