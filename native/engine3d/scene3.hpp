@@ -25,7 +25,8 @@ struct Scene3 {
 };
 
 struct Settings3 {
-  double timestep = 0.0; ///< s, required
+  double timestep = 0.0;                      ///< s, required
+  Integrator integrator = Integrator::verlet; ///< velocity Verlet, or the thesis' Gear
   NormalLaw normal_law = law_id<LinearSpringDashpot>;
   TangentialLaw tangential_law = law_id<CundallStrack>;
   VerletVelocity verlet_velocity = VerletVelocity::predicted; ///< as in 2D

@@ -59,15 +59,22 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
   compute_forces();
+  if (settings_.integrator == Integrator::gear) gear_initialise(gear_, scene_.spheres);
   guard();
 }
 
 Simulation3::Simulation3(SimulationState3 state, Settings3 settings, bool)
     : scene_(std::move(state.scene)), settings_(settings), list_(std::move(state.list)),
-      start_(std::move(state.start)), last_(state.last), time_(state.time), steps_(state.steps) {
+      start_(std::move(state.start)), last_(state.last), gear_(std::move(state.gear)),
+      time_(state.time), steps_(state.steps) {
   set_up();
   require(start_.size() == scene_.plates.size(),
           "a saved state's start poses are not one per plate");
+  const std::size_t derivatives =
+      settings_.integrator == Integrator::gear ? scene_.spheres.size() : 0;
+  for (const auto* v : {&gear_.r2, &gear_.r3, &gear_.r4, &gear_.w2, &gear_.w3, &gear_.w4})
+    require(v->size() == derivatives,
+            "a saved state's Gear derivatives are not one per sphere of a Gear run");
 }
 
 Simulation3 Simulation3::restore(SimulationState3 state, Settings3 settings) {
@@ -101,6 +108,7 @@ void Simulation3::compute_forces() {
 // Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
 // see while F(t + dt) is computed is v(t) + (1 + lag) dt/2 a(t).
 void Simulation3::step() {
+  if (settings_.integrator == Integrator::gear) return gear_step();
   Spheres& s = scene_.spheres;
   const double dt = settings_.timestep, half = 0.5 * dt;
   const auto n = static_cast<std::ptrdiff_t>(s.size());
@@ -115,12 +123,7 @@ void Simulation3::step() {
   }
   std::swap(s.force, s.force_previous);
   std::swap(s.torque, s.torque_previous);
-  drive_plates(scene_.plates, scene_.drivers, start_, static_cast<double>(steps_ + 1) * dt);
-  if (list_is_stale(list_, s, scene_.plates)) {
-    guard();
-    build_sphere_list(list_, s, scene_.plates, scene_.domain, resolved_skin(scene_, settings_));
-  }
-  compute_forces();
+  forces_after_the_move();
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
@@ -128,6 +131,28 @@ void Simulation3::step() {
     s.angular_velocity[i] +=
         (half * s.inv_inertia[i]) * (s.torque[i] - lag_ * s.torque_previous[i]);
   }
+  ++steps_;
+  time_ = static_cast<double>(steps_) * dt;
+  guard();
+}
+
+void Simulation3::forces_after_the_move() {
+  const double dt = settings_.timestep;
+  drive_plates(scene_.plates, scene_.drivers, start_, static_cast<double>(steps_ + 1) * dt);
+  if (list_is_stale(list_, scene_.spheres, scene_.plates)) {
+    guard();
+    build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
+                      resolved_skin(scene_, settings_));
+  }
+  compute_forces();
+}
+
+// Gear as the 2D engine's: the contact laws see the predicted positions, velocities and spins.
+void Simulation3::gear_step() {
+  const double dt = settings_.timestep;
+  gear_predict(gear_, scene_.spheres, dt, threads_);
+  forces_after_the_move();
+  gear_correct(gear_, scene_.spheres, dt, threads_);
   ++steps_;
   time_ = static_cast<double>(steps_) * dt;
   guard();

@@ -3,12 +3,13 @@
 //
 // What it has: spheres (free or fixed), plates (fixed or driven: translating, vibrating,
 // turning), gravity, periodic axes, every law pair of the table and rolling resistance, the
-// Verlet list with its springs, the stability guard. What it does not have yet is refused where
-// it is set (Spheres::add, the scenario loader): moved spheres, Gear. Its results are
+// Verlet list with its springs, velocity Verlet and Gear, the stability guard. What it does not
+// have yet is refused where it is set (Spheres::add): moved spheres. Its results are
 // bit-identical for any thread count.
 #include <cstdint>
 
 #include "engine3d/force_pass3.hpp"
+#include "engine3d/gear3.hpp"
 #include "engine3d/scene3.hpp"
 #include "engine3d/sphere_list.hpp"
 #include "materials/pair_table.hpp"
@@ -30,6 +31,7 @@ struct SimulationState3 {
   SphereList list;
   std::vector<PlatePose> start; ///< each plate where it stood at the start, for its driver
   ContactPass3 last;            ///< the last force pass' count and deepest overlap
+  GearState3 gear;              ///< Gear's derivatives (empty for velocity Verlet)
   double time = 0.0;
   std::uint64_t steps = 0;
 };
@@ -44,11 +46,11 @@ public:
   /// `settings.threads` may differ.
   static Simulation3 restore(SimulationState3 state, Settings3 settings);
   /// A copy of the state, for a checkpoint.
-  SimulationState3 state() const { return {scene_, list_, start_, last_, time_, steps_}; }
+  SimulationState3 state() const { return {scene_, list_, start_, last_, gear_, time_, steps_}; }
 
-  /// One step: half kick and drift, plates move, the list is rebuilt if stale, contact forces,
-  /// second half kick, guard (InstabilityError: a non-finite velocity, or an overlap beyond
-  /// the allowed fraction of a radius).
+  /// One step: half kick and drift (Gear: the prediction), plates move, the list is rebuilt if
+  /// stale, contact forces, second half kick (Gear: the correction), guard (InstabilityError: a
+  /// non-finite velocity, or an overlap beyond the allowed fraction of a radius).
   void step();
   void run(std::uint64_t steps);
 
@@ -72,6 +74,8 @@ private:
   Simulation3(SimulationState3 state, Settings3 settings, bool restored);
   void set_up();
   void compute_forces();
+  void forces_after_the_move(); ///< the plates to the step's end, the list if stale, the forces
+  void gear_step();
   void guard() const;
 
   Scene3 scene_;
@@ -81,6 +85,7 @@ private:
   std::vector<PlatePose> start_; ///< each plate where it stood at the start, for its driver
   ForcePass3 force_pass_;
   ContactPass3 last_;
+  GearState3 gear_;
   int threads_ = 1;
   double lag_ = 1.0;
   double time_ = 0.0;

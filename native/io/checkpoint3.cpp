@@ -34,9 +34,13 @@ template <class C, class F> void settings_fields(C& c, F&& f) {
   f(c.timestep, c.normal_law, c.tangential_law, c.verlet_velocity, c.skin, c.impact_speed,
     c.lever_arm, c.linear_damping, c.max_overlap_fraction, c.threads);
 }
+// Version 2's: the integrator and Gear's derivatives (a version 1 run was velocity Verlet).
+template <class G, class F> void gear_fields(G& g, F&& f) {
+  f(g.r2), f(g.r3), f(g.r4), f(g.w2), f(g.w3), f(g.w4);
+}
 
 // The rolling springs, which version 2 added (a version 1 file has none: its run could not
-// roll with resistance).
+// roll with resistance). Version 2 added Gear too (gear_fields).
 template <class L, class F> void rolling_fields(L& l, F&& f) {
   f(l.rolling), f(l.plate_rolling);
 }
@@ -60,6 +64,7 @@ void write_state(Writer& w, const SimulationState3& st) {
   rolling_fields(st.list, [&](const auto& v) { w.vec(v); });
   write_fields(w, st.list.skin, st.list.builds);
   w.vec(st.start);
+  gear_fields(st.gear, [&](const auto& v) { w.vec(v); });
   write_fields(w, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
 }
 
@@ -96,6 +101,9 @@ void check_state(Reader& r, const SimulationState3& st) {
     if (e >= l.neighbour.size()) r.fail("a list entry's index is out of range");
   for (const std::uint32_t w : l.plate)
     if (w >= st.scene.plates.size()) r.fail("a list entry names a plate that does not exist");
+  gear_fields(st.gear, [&](const auto& v) {
+    if (v.size() != 0 && v.size() != n) r.fail("Gear's derivatives are not one per sphere");
+  });
   if (l.reference.size() != n || l.plate_reference.size() != st.scene.plates.size() ||
       st.start.size() != st.scene.plates.size())
     r.fail("the list's build positions are not one per sphere and plate");
@@ -121,6 +129,7 @@ SimulationState3 read_state(Reader& r, std::uint32_t version) {
   }
   read_fields(r, st.list.skin, st.list.builds);
   r.vec(st.start);
+  if (version >= 2) gear_fields(st.gear, [&](auto& v) { r.vec(v); });
   read_fields(r, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
   check_state(r, st);
   return st;
@@ -132,6 +141,7 @@ std::string encode_checkpoint3(const Checkpoint3& c) {
   Writer w;
   write_state(w, c.state);
   settings_fields(c.settings, [&](const auto&... v) { write_fields(w, v...); });
+  write_fields(w, c.settings.integrator);
   w.str(c.run_data);
   return seal(magic3, checkpoint3_version, w.bytes());
 }
@@ -147,6 +157,9 @@ Checkpoint3 decode_checkpoint3(const std::string& bytes, const std::string& sour
   Checkpoint3 c;
   c.state = read_state(r, h.version);
   settings_fields(c.settings, [&](auto&... v) { read_fields(r, v...); });
+  if (h.version >= 2) read_fields(r, c.settings.integrator);
+  if (c.settings.integrator != Integrator::gear && c.settings.integrator != Integrator::verlet)
+    r.fail("an integrator that is neither Gear nor velocity Verlet");
   c.run_data = r.str();
   if (!r.done()) r.fail("bytes left after the last field");
   return c;

@@ -74,6 +74,9 @@ std::string deck_header(const Scenario3& s, const BuiltScenario3& b, const std::
       "# The native scenario's system: its spheres where the builder put them, materials, laws,\n"
       "# timestep, gravity and the box's plates. LAMMPS' atom ids are the native ids + 1.\n",
       s.name, exact(s.simulation.duration));
+  if (b.settings.integrator == Integrator::gear)
+    return out + "# The scenario integrates with Gear; LAMMPS with velocity Verlet: the two agree\n"
+                 "# to the order of the step, not to rounding.\n";
   out += b.settings.verlet_velocity == VerletVelocity::half_step
              ? "# The scenario's Verlet gives the dampers the half-step velocity, as LAMMPS does:\n"
                "# the two engines agree to rounding until chaos parts them.\n"

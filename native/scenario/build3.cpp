@@ -89,6 +89,7 @@ BuiltScenario3 build_scenario3(const Scenario3& s) {
   Settings3& c = out.settings;
   c.normal_law = sim.normal_law;
   c.tangential_law = sim.tangential_law;
+  c.integrator = sim.integrator;
   c.verlet_velocity = sim.verlet_velocity;
   c.skin = sim.skin;
   c.threads = sim.threads;

@@ -18,8 +18,9 @@
 namespace talus {
 
 struct Simulation3Section {
-  double duration = 1.0;                            ///< s
-  std::optional<double> timestep;                   ///< s; empty: "auto"
+  double duration = 1.0;          ///< s
+  std::optional<double> timestep; ///< s; empty: "auto"
+  Integrator integrator = Integrator::verlet;
   double timestep_factor = default_timestep_factor; ///< auto timestep = shortest t_c / factor
   VerletVelocity verlet_velocity = VerletVelocity::predicted;
   LeverArm lever_arm = LeverArm::contact_point;

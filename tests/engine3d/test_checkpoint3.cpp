@@ -1,6 +1,7 @@
 // 3D checkpoints (io/checkpoint3.hpp): a run saved, read back and continued is the run that went
 // on without stopping, to the bit (springs and rolling springs, list, plates on their drivers,
-// periodic images); a damaged or foreign file is refused with what is wrong.
+// periodic images), with velocity Verlet and with Gear (its derivatives); a damaged or foreign
+// file is refused with what is wrong.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -14,7 +15,7 @@ namespace {
 
 // 300 spheres falling in a box periodic along x onto a vibrating floor, with friction and
 // rolling resistance.
-Simulation3 shaken_bed() {
+Simulation3 shaken_bed(Integrator integrator = Integrator::verlet) {
   Material m = testing::elastic_material();
   m.restitution = 0.5;
   m.friction = 0.4;
@@ -35,15 +36,18 @@ Simulation3 shaken_bed() {
                       .velocity = {0.2 * ((k % 7) - 3), 0.0, 0.0}});
   const double mass = 2650.0 * 4.0 / 3.0 * 3.14159 * 1.5e-9;
   return Simulation3(std::move(scene),
-                     {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 30.0});
+                     {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 30.0,
+                      .integrator = integrator});
 }
 
 bool same(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
   return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(Vec3)) == 0;
 }
 
-TEST(Checkpoint3, AResumedRunIsTheWholeRunToTheBit) {
-  Simulation3 whole = shaken_bed(), first = shaken_bed();
+class Checkpoint3Integrators : public ::testing::TestWithParam<Integrator> {};
+
+TEST_P(Checkpoint3Integrators, AResumedRunIsTheWholeRunToTheBit) {
+  Simulation3 whole = shaken_bed(GetParam()), first = shaken_bed(GetParam());
   whole.run(12000);
   first.run(6000);
   const std::string bytes =
@@ -69,6 +73,12 @@ TEST(Checkpoint3, AResumedRunIsTheWholeRunToTheBit) {
   for (const Image3& i : a.image) crossed = crossed || i[0] != 0;
   EXPECT_TRUE(crossed) << "no sphere crossed the periodic side";
 }
+
+INSTANTIATE_TEST_SUITE_P(Checkpoint3, Checkpoint3Integrators,
+                         ::testing::Values(Integrator::verlet, Integrator::gear),
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 TEST(Checkpoint3, ADamagedOrForeignFileIsRefused) {
   Simulation3 s = shaken_bed();

@@ -48,12 +48,19 @@ TEST(Scenario3, ThePour3dBuiltinReloadsFromItsResolvedForm) {
   EXPECT_EQ(scenario_dimension(toml::parse(resolved), "resolved"), 3);
 }
 
+TEST(Scenario3, GearIsTheIntegratorAsked) {
+  const Scenario3 s = pour3d({"simulation.integrator=gear"});
+  EXPECT_EQ(s.simulation.integrator, Integrator::gear);
+  EXPECT_EQ(build_scenario3(s).settings.integrator, Integrator::gear);
+  EXPECT_NE(to_toml(s).find("integrator = 'gear'"), std::string::npos) << to_toml(s);
+  EXPECT_EQ(pour3d().simulation.integrator, Integrator::verlet);
+}
+
 TEST(Scenario3, WhatThe3DEngineHasNotIsRefusedByName) {
   const auto says = [](const std::vector<std::string>& set, const std::string& words) {
     const std::string e = refusal(set);
     EXPECT_NE(e.find(words), std::string::npos) << set[0] << ": " << e;
   };
-  says({"simulation.integrator=gear"}, "'simulation.integrator': \"gear\" is not there yet in 3D");
   says({"simulation.sort_every=10"}, "'simulation.sort_every'");
   says({"particles.shape=disk"}, "a 3D scenario's grains are spheres");
   says({"packing.method=lattice"}, "[packing] is not there yet in 3D");

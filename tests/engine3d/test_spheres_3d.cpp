@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include <Eigen/Geometry>
 
@@ -28,8 +29,9 @@ Vec3 unit_at_random(std::mt19937& rng) {
 
 // The restitution and the duration of the overlap of two spheres meeting head on along a random
 // axis, against the law's closed forms (closed_forms.hpp; for Hertz the duration's is the elastic
-// one). 1%: the touch and the parting fall between steps (200 a collision; found by linear
-// interpolation), and velocity Verlet's velocity lags the damping force by O(dt^2).
+// one), with velocity Verlet and with Gear. 1%: the touch and the parting fall between steps
+// (200 a collision; found by linear interpolation), and velocity Verlet's velocity lags the
+// damping force by O(dt^2).
 struct Impact3 {
   double rebound = 0.0;  ///< relative normal speed after, over that before
   double duration = 0.0; ///< s, of the overlap
@@ -37,7 +39,7 @@ struct Impact3 {
   double across = 0.0; ///< speed across the axis and spin times radius after, m/s
 };
 
-Impact3 head_on(NormalLaw law, double restitution) {
+Impact3 head_on(NormalLaw law, Integrator integrator, double restitution) {
   std::mt19937 rng(5);
   const Vec3 axis = unit_at_random(rng);
   const double r = 1e-3, v = 0.2;
@@ -53,7 +55,10 @@ Impact3 head_on(NormalLaw law, double restitution) {
   Impact3 out;
   out.closed_form =
       with_normal_law(law, [&]<class N>() { return N::collision_time(p, m_eff, 0.5 * r, v); });
-  Settings3 settings{.timestep = out.closed_form / 200.0, .normal_law = law, .impact_speed = v};
+  Settings3 settings{.timestep = out.closed_form / 200.0,
+                     .integrator = integrator,
+                     .normal_law = law,
+                     .impact_speed = v};
   Simulation3 s(std::move(scene), settings);
   const Spheres& sp = s.scene().spheres;
   const auto overlap = [&] { return 2.0 * r - norm(sp.position[0] - sp.position[1]); };
@@ -73,29 +78,34 @@ Impact3 head_on(NormalLaw law, double restitution) {
   return out;
 }
 
-class HeadOn3 : public ::testing::TestWithParam<NormalLaw> {};
+class HeadOn3 : public ::testing::TestWithParam<std::tuple<NormalLaw, Integrator>> {};
 
 TEST_P(HeadOn3, AnElasticImpactLastsTheClosedFormsTime) {
-  const Impact3 c = head_on(GetParam(), 1.0);
+  const auto [law, integrator] = GetParam();
+  const Impact3 c = head_on(law, integrator, 1.0);
   EXPECT_NEAR(c.rebound, 1.0, 0.01);
   EXPECT_NEAR(c.duration, c.closed_form, 0.01 * c.closed_form);
   EXPECT_LT(c.across, 1e-12); // head on: nothing across the axis, no spin
 }
 
 TEST_P(HeadOn3, ReboundsWithTheRestitutionItWasGiven) {
-  const Impact3 c = head_on(GetParam(), 0.8);
+  const auto [law, integrator] = GetParam();
+  const Impact3 c = head_on(law, integrator, 0.8);
   EXPECT_NEAR(c.rebound, 0.8, 0.01 * 0.8);
-  if (GetParam() == law_id<LinearSpringDashpot>) { // the damped closed form is the linear law's
+  if (law == law_id<LinearSpringDashpot>) { // the damped closed form is the linear law's
     EXPECT_NEAR(c.duration, c.closed_form, 0.01 * c.closed_form);
   }
   EXPECT_LT(c.across, 1e-12);
 }
 
-INSTANTIATE_TEST_SUITE_P(Laws, HeadOn3,
-                         ::testing::Values(law_id<LinearSpringDashpot>, law_id<HertzViscoelastic>),
-                         [](const auto& param_info) {
-                           return std::string(name_of(param_info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Laws, HeadOn3,
+    ::testing::Combine(::testing::Values(law_id<LinearSpringDashpot>, law_id<HertzViscoelastic>),
+                       ::testing::Values(Integrator::verlet, Integrator::gear)),
+    [](const auto& param_info) {
+      return std::string(name_of(std::get<0>(param_info.param))) + "_" +
+             std::string(to_string(std::get<1>(param_info.param)));
+    });
 
 // ---- a sphere sliding on a floor ------------------------------------------------------------
 

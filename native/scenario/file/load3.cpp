@@ -28,8 +28,7 @@ Vec3 vec3(TableReader& r, std::string_view key, Vec3 fallback) {
 void read_simulation(TableReader& r, Simulation3Section& s) {
   r.integer("dimension", 3, 3, 3);
   read_clock_and_laws(r, s);
-  if (r.choice("integrator", "verlet", {"gear", "verlet"}) == "gear")
-    r.fail("integrator", std::string("\"gear\"") + not_in_3d + "; allowed: verlet");
+  s.integrator = parse_integrator(r.choice("integrator", "verlet", {"gear", "verlet"}));
   s.gravity = vec3(r, "gravity", s.gravity);
   s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
   if (r.has("sort_every")) r.fail("sort_every", std::string("renumbering the spheres") + not_in_3d);
@@ -110,8 +109,9 @@ Scenario3 load_scenario3(std::string_view text, const std::string& file,
 }
 
 std::string to_toml(const Scenario3& s) {
-  toml::table sim{
-      {"dimension", 3}, {"integrator", "verlet"}, {"gravity", vec(s.simulation.gravity)}};
+  toml::table sim{{"dimension", 3},
+                  {"integrator", to_string(s.simulation.integrator)},
+                  {"gravity", vec(s.simulation.gravity)}};
   write_clock_and_laws(sim, s.simulation);
   std::string periodic;
   for (std::size_t k = 0; k < 3; ++k)
