@@ -29,6 +29,8 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+from run_folder import data_array, dump_blocks
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CASE = os.path.join(ROOT, "inputs", "validation", "settling3d")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -48,12 +50,11 @@ def run(command, cwd=None):
 
 def vtp_state(path):
     """{id: (x, y, z, vx, vy, vz)} of a native snapshot (ids as LAMMPS', from 1)."""
-    arrays = {}
-    for array in ET.parse(path).getroot().iter("DataArray"):
-        arrays[array.get("Name")] = np.array(array.text.split(), dtype=float)
-    ids = arrays["id"].astype(int) + 1
-    x = arrays["position"].reshape(-1, 3)
-    v = arrays["velocity"].reshape(-1, 3)
+    with open(path) as f:
+        xml = f.read()
+    ids = data_array(xml, "id", path).astype(int) + 1
+    x = data_array(xml, "position", path).reshape(-1, 3)
+    v = data_array(xml, "velocity", path).reshape(-1, 3)
     return {i: np.concatenate([x[k], v[k]]) for k, i in enumerate(ids)}
 
 
@@ -66,17 +67,11 @@ def native_snapshots(folder):
 
 def dump_frames(path, dt):
     """[(time, state)] of a LAMMPS dump of id, type, radius, mass, x y z, vx vy vz, spins."""
-    frames, lines, k = [], open(path).read().splitlines(), 0
-    while k < len(lines):
-        step = int(lines[k + 1])
-        count = int(lines[k + 3])
-        columns = lines[k + 8].split()[2:]
-        rows = [l.split() for l in lines[k + 9:k + 9 + count]]
-        at = {name: c for c, name in enumerate(columns)}
-        state = {int(r[at["id"]]): np.array([float(r[at[n]]) for n in
-                                             ("x", "y", "z", "vx", "vy", "vz")]) for r in rows}
-        frames.append((step * dt, state))
-        k += 9 + count
+    frames = []
+    for step, columns, rows in dump_blocks(path):
+        at = [columns.index(c) for c in ("x", "y", "z", "vx", "vy", "vz")]
+        ids = rows[:, columns.index("id")].astype(int)
+        frames.append((step * dt, {i: rows[k, at] for k, i in enumerate(ids)}))
     return frames
 
 
@@ -109,8 +104,10 @@ def lammps(build, deck_dir, work, ranks, mutate=False):
     deck = next(f for f in os.listdir(work) if f.startswith("in."))
     if mutate:  # the friction in its fourth digit: a wrong law that rounding cannot hide
         path = os.path.join(work, deck)
-        text = open(path).read().replace("friction 0.40000000000000002", "friction 0.4001")
-        open(path, "w").write(text)
+        text = open(path).read()
+        if "friction 0.40000000000000002" not in text:
+            sys.exit(f"{path}: no friction 0.4 to change: the case's material changed?")
+        open(path, "w").write(text.replace("friction 0.40000000000000002", "friction 0.4001"))
     launcher = os.path.join(build, "lammps-package", "talus-lmp")
     command = [launcher, "-in", deck, "-log", "log.lammps"]
     if ranks > 1:
@@ -150,9 +147,9 @@ def main():
     run([talus, "run", scenario, "--out", native_dir, "--quiet"] + sets)
     run([talus, "export", "lammps", scenario, deck_dir, "--quiet", "--replace"] + sets)
     native = native_snapshots(native_dir)
-    first = ET.parse(os.path.join(native_dir, "snapshots", "spheres_000000.vtp")).getroot()
-    radius_array = next(a for a in first.iter("DataArray") if a.get("Name") == "radius")
-    radii = np.array(radius_array.text.split(), dtype=float)
+    first = os.path.join(native_dir, "snapshots", "spheres_000000.vtp")
+    with open(first) as f:
+        radii = data_array(f.read(), "radius", first)
     radius = float(np.mean(radii))
     dt, one = lammps(args.build, deck_dir, os.path.join(args.out, "lammps-1"), 1)
     _, two = lammps(args.build, deck_dir, os.path.join(args.out, "lammps-2"), 2)
