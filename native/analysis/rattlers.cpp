@@ -6,12 +6,6 @@
 
 namespace talus {
 
-namespace {
-bool inside(Vec2 p, Vec2 lo, Vec2 hi) {
-  return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
-}
-} // namespace
-
 int contacts_needed(const Simulation& sim) {
   if (sim.config().tangential_law == law_id<Frictionless>) return 3;
   const auto& m = sim.world().materials;
@@ -54,7 +48,7 @@ LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
   double contacts = 0.0;
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     // a periodic box's grain where it is: wrapped (it may have crossed since the list's build)
-    if (!p.is_free(i) || !inside(sim.world().domain.wrap(p.position[i]), lo, hi)) continue;
+    if (!p.is_free(i) || !inside_box(sim.world().domain.wrap(p.position[i]), lo, hi)) continue;
     ++out.grains;
     if (out.rattler[i]) {
       ++out.rattlers;

@@ -15,10 +15,6 @@ Tensor2 outer(Vec2 a, Vec2 b) {
   return t;
 }
 
-bool inside(Vec2 p, Vec2 lo, Vec2 hi) {
-  return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
-}
-
 // Calls f(particle, the force on it, the branch from its centre to the contact point) for both
 // members of every contact of `contacts` that are free grains (a periodic partner's branch from
 // its image's centre).
@@ -52,7 +48,7 @@ RegionStress region_stress(const Simulation& sim, Vec2 lo, Vec2 hi) {
   // where a grain is: in a periodic box, its wrapped position (between two list builds a grain
   // may have crossed the box's side unwrapped)
   const Domain& box = sim.world().domain;
-  const auto inside = [&](Vec2 r, Vec2 a, Vec2 b) { return talus::inside(box.wrap(r), a, b); };
+  const auto inside = [&](Vec2 r, Vec2 a, Vec2 b) { return inside_box(box.wrap(r), a, b); };
   const std::vector<ContactRecord> contacts = contact_forces(sim);
   // the contact part: each grain in the region with each of its contacts
   for_each_grain_side(p, contacts, [&](std::size_t i, Vec2 force, Vec2 branch) {

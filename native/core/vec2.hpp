@@ -53,5 +53,9 @@ constexpr double norm2(Vec2 a) {
 inline double norm(Vec2 a) {
   return std::sqrt(norm2(a));
 }
+/// Whether p lies in the half-open box [lo, hi) (a point on a shared edge counts once).
+constexpr bool inside_box(Vec2 p, Vec2 lo, Vec2 hi) {
+  return p.x >= lo.x && p.x < hi.x && p.y >= lo.y && p.y < hi.y;
+}
 
 } // namespace talus

@@ -21,7 +21,7 @@ double along(Vec2 v, int axis) {
 }
 
 // The points of the profile each term reaches: phi is summed over the periodic images.
-struct Spreader {
+struct ProfileSpreader {
   const CgOptions& o;
   std::vector<double> at;
   // f(k, weight) at every point k, for phi(y_k - y) (a point) or its mean along [y, y + e]
@@ -83,7 +83,7 @@ Vec2 FieldProfile::velocity(std::size_t k) const {
 
 FieldProfile coarse_grain(const std::vector<Frame>& frames, const CgOptions& o) {
   check(o);
-  Spreader s{o, {}};
+  ProfileSpreader s{o, {}};
   for (std::size_t k = 0; k < o.points; ++k)
     s.at.push_back(o.lo +
                    (o.hi - o.lo) * static_cast<double>(k) / static_cast<double>(o.points - 1));

@@ -20,7 +20,7 @@ constexpr std::array<double, 5> gl_weight{0.11846344252809454, 0.239314335249683
                                           0.11846344252809454};
 
 // Calls f(cell, phi(x) phi(y)) for the cells a point's kernel reaches, over periodic images.
-struct Spreader {
+struct MapSpreader {
   const CgMapOptions& o;
   const FieldMap& map;
   double reach;
@@ -76,7 +76,7 @@ FieldMap coarse_grain_map(const std::vector<Frame>& frames, const CgMapOptions& 
   map.nx = o.nx, map.ny = o.ny, map.lo = o.lo;
   map.cell_x = (o.hi.x - o.lo.x) / static_cast<double>(o.nx);
   map.cell_y = (o.hi.y - o.lo.y) / static_cast<double>(o.ny);
-  const Spreader s{o, map, (o.kernel == CgKernel::gaussian ? 5.0 : 1.0) * o.width};
+  const MapSpreader s{o, map, (o.kernel == CgKernel::gaussian ? 5.0 : 1.0) * o.width};
   CgSums sums = cg_sums(
       frames, o.nx * o.ny, [&](Vec2 at, auto&& f) { s.spread(at, f); },
       [&](Vec2 centre, Vec2 point, auto&& f) {

@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "core/capacity_bytes.hpp"
+
 namespace talus {
 
 // The build makes one translation unit per law pair (force_stage_laws.cpp.in) from these counts.
@@ -34,18 +36,13 @@ PassReport ForceStage::compute(World& world, NeighbourList& list, const PairTabl
   });
 }
 
-namespace {
-template <class V> std::size_t bytes(const std::vector<V>& v) {
-  return v.capacity() * sizeof(V);
-}
-} // namespace
-
 std::size_t ForceStage::candidate_bytes() const {
-  return bytes(candidates_.entry) + bytes(candidates_.slot) + bytes(candidates_.count);
+  return capacity_bytes(candidates_.entry) + capacity_bytes(candidates_.slot) +
+         capacity_bytes(candidates_.count);
 }
 
 std::size_t ForceStage::footprint_bytes() const {
-  return bytes(deferred_) + bytes(wall_force_) + schedule_.footprint_bytes();
+  return capacity_bytes(deferred_) + capacity_bytes(wall_force_) + schedule_.footprint_bytes();
 }
 
 } // namespace talus

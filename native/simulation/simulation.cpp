@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include "core/capacity_bytes.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/list_check.hpp"
 #include "neighbours/skin.hpp"
@@ -382,25 +383,21 @@ void ParticleEdits::displace_held(std::uint32_t i, Vec2 d) {
   p.position[i] += d;
 }
 
-namespace {
-template <class T> std::size_t bytes(const std::vector<T>& v) {
-  return v.capacity() * sizeof(T);
-}
-} // namespace
-
 Footprint Simulation::footprint() const {
   const Particles& p = world_.particles;
   const NeighbourList& l = list_;
   Footprint f;
-  p.for_each_state_field([&](const auto& v) { f.particles += bytes(v); });
-  p.for_each_integrator_field([&](const auto& v) { f.integrator += bytes(v); });
-  f.list = bytes(l.row_offset) + bytes(l.neighbour) + bytes(l.image) + bytes(l.block_first_slot) +
-           bytes(l.deferred_offset) + bytes(l.deferred_slot) + bytes(l.late) + bytes(l.entry_row) +
-           bytes(l.wall_offset) + bytes(l.wall_segment) + bytes(l.reference) +
-           bytes(l.segment_reference);
-  f.history = bytes(l.history) + bytes(l.wall_history) + bytes(l.rolling) + bytes(l.wall_rolling);
+  p.for_each_state_field([&](const auto& v) { f.particles += capacity_bytes(v); });
+  p.for_each_integrator_field([&](const auto& v) { f.integrator += capacity_bytes(v); });
+  f.list = capacity_bytes(l.row_offset) + capacity_bytes(l.neighbour) + capacity_bytes(l.image) +
+           capacity_bytes(l.block_first_slot) + capacity_bytes(l.deferred_offset) +
+           capacity_bytes(l.deferred_slot) + capacity_bytes(l.late) + capacity_bytes(l.entry_row) +
+           capacity_bytes(l.wall_offset) + capacity_bytes(l.wall_segment) +
+           capacity_bytes(l.reference) + capacity_bytes(l.segment_reference);
+  f.history = capacity_bytes(l.history) + capacity_bytes(l.wall_history) +
+              capacity_bytes(l.rolling) + capacity_bytes(l.wall_rolling);
   f.candidates = forces_.candidate_bytes();
-  f.other = bytes(world_.walls) + bytes(driven_) + forces_.footprint_bytes();
+  f.other = capacity_bytes(world_.walls) + capacity_bytes(driven_) + forces_.footprint_bytes();
   return f;
 }
 

@@ -18,9 +18,9 @@ namespace talus::cli {
 
 namespace {
 
-using Rows = std::vector<CsvRow>;
+using CsvRows = std::vector<CsvRow>;
 
-Rows read_rows(const fs::path& file) {
+CsvRows read_rows(const fs::path& file) {
   return read_csv_rows(file, "jamming");
 }
 
@@ -31,7 +31,7 @@ double number(const CsvRow& row, const std::string& key) {
 }
 
 // Each stage's means over its last quarter, and how near rest its last row came.
-JammingStep step_of(const Rows& thermo, const std::string& name, double start, double end) {
+JammingStep step_of(const CsvRows& thermo, const std::string& name, double start, double end) {
   JammingStep s;
   s.name = name;
   const double from = end - 0.25 * (end - start);
@@ -56,7 +56,7 @@ JammingStep step_of(const Rows& thermo, const std::string& name, double start, d
 } // namespace
 
 Section analyze_jamming(RunData& run, const AnalysisOptions&) {
-  const Rows thermo = read_rows(run.dir() / "thermo.csv");
+  const CsvRows thermo = read_rows(run.dir() / "thermo.csv");
   std::vector<JammingStep> steps;
   for (const auto& st : read_rows(run.dir() / "stages.csv"))
     steps.push_back(step_of(thermo, st.at("name"), std::stod(st.at("start_time")),

@@ -9,7 +9,7 @@ namespace talus {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using keys::inf;
 
 // A servo's keys (docs/scenarios.md): one target, force or stress, and a direction given.
 void read_servo(TableReader& r, DriverSection& d, double impact_speed) {

@@ -11,7 +11,7 @@ namespace talus {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using keys::inf;
 
 // What 2D scenarios have and the 3D engine does not, with where the engine stands.
 constexpr const char* not_in_3d =

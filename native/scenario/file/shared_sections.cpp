@@ -11,7 +11,7 @@
 namespace talus {
 
 namespace {
-constexpr double inf = std::numeric_limits<double>::infinity();
+using keys::inf;
 } // namespace
 
 namespace {

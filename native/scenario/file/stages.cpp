@@ -14,7 +14,7 @@ namespace talus {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+using keys::inf;
 
 // The changes of a stage's `set` table as "key=value": its tables give dotted keys
 // ([stages.set.simulation] gravity = ...: simulation.gravity), and a quoted dotted key names its

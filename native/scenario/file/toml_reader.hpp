@@ -3,6 +3,7 @@
 // (with a suggestion). Every error names the file, the line, the key and the allowed values.
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <set>
 #include <span>
@@ -16,6 +17,11 @@
 #include "talus/error.hpp"
 
 namespace talus {
+
+namespace keys {
+/// A number key's bound where there is none.
+inline constexpr double inf = std::numeric_limits<double>::infinity();
+} // namespace keys
 
 /// A scenario that cannot be used; what() reads "FILE:LINE: key 'K': problem; allowed: ...".
 class ScenarioError : public InvalidArgument {
