@@ -14,7 +14,7 @@
 namespace talus {
 namespace {
 
-const Vec3 axis = (1.0 / std::sqrt(14.0)) * Vec3{1.0, 2.0, 3.0};
+const Vec3 gear_axis = (1.0 / std::sqrt(14.0)) * Vec3{1.0, 2.0, 3.0};
 
 // A sphere pressed between two parallel plates facing each other across `axis`, each
 // overlapping it by 2 um, released 1 um off centre at rest: both contacts hold throughout, so
@@ -25,9 +25,9 @@ double oscillator_error(Integrator integrator, int steps) {
   Material m = testing::elastic_material(1.0e4);
   Scene3 scene;
   scene.materials = {m};
-  scene.plates.push_back(make_plane((-(r - press)) * axis, axis));
-  scene.plates.push_back(make_plane((r - press) * axis, -1.0 * axis));
-  scene.add_sphere({.position = offset * axis, .radius = r});
+  scene.plates.push_back(make_plane((-(r - press)) * gear_axis, gear_axis));
+  scene.plates.push_back(make_plane((r - press) * gear_axis, -1.0 * gear_axis));
+  scene.add_sphere({.position = offset * gear_axis, .radius = r});
   const double mass = scene.spheres.mass[0];
   const double omega = std::sqrt(2.0 * m.normal_stiffness / mass);
   const double period = 2.0 * std::numbers::pi / omega;
@@ -37,7 +37,7 @@ double oscillator_error(Integrator integrator, int steps) {
   for (int k = 0; k < steps; ++k) {
     s.step();
     const double exact = offset * std::cos(omega * s.time());
-    worst = std::max(worst, std::abs(dot(s.scene().spheres.position[0], axis) - exact));
+    worst = std::max(worst, std::abs(dot(s.scene().spheres.position[0], gear_axis) - exact));
   }
   return worst;
 }

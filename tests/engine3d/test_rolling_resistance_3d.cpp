@@ -16,9 +16,10 @@ namespace {
 
 namespace ref = reference;
 
-const double radius = 5.0e-3, g = 9.81, mu_r = 0.1;
-const double heading = 0.7; // rad: the direction of rolling in the floor's plane, off any axis
-const Vec3 along{std::cos(heading), std::sin(heading), 0.0};
+const double rolling_radius = 5.0e-3, rolling_g = 9.81, rolling_mu_r = 0.1;
+const double rolling_heading =
+    0.7; // rad: the direction of rolling in the floor's plane, off any axis
+const Vec3 rolling_along{std::cos(rolling_heading), std::sin(rolling_heading), 0.0};
 const Vec3 up{0.0, 0.0, 1.0};
 
 // A sphere rolling without slip at `speed` along `along` on a floor (z = 0), gravity tilted by
@@ -27,17 +28,17 @@ Simulation3 roll_on_floor(double speed, double slope) {
   Material m = testing::elastic_material(1.0e6);
   m.restitution = 0.3;
   m.friction = 0.8;
-  m.rolling_friction = mu_r;
+  m.rolling_friction = rolling_mu_r;
   Scene3 scene;
   scene.materials = {m};
-  scene.gravity = g * std::sin(slope) * along - g * std::cos(slope) * up;
+  scene.gravity = rolling_g * std::sin(slope) * rolling_along - rolling_g * std::cos(slope) * up;
   scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, up));
-  const double mass = shape_mass(Shape::sphere, radius, m.density);
-  const double sag = mass * g * std::cos(slope) / m.normal_stiffness;
-  scene.add_sphere({.position = {0.0, 0.0, radius - sag},
-                    .radius = radius,
-                    .velocity = speed * along,
-                    .angular_velocity = (speed / radius) * cross(up, along)});
+  const double mass = shape_mass(Shape::sphere, rolling_radius, m.density);
+  const double sag = mass * rolling_g * std::cos(slope) / m.normal_stiffness;
+  scene.add_sphere({.position = {0.0, 0.0, rolling_radius - sag},
+                    .radius = rolling_radius,
+                    .velocity = speed * rolling_along,
+                    .angular_velocity = (speed / rolling_radius) * cross(up, rolling_along)});
   return Simulation3(std::move(scene),
                      {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 50.0,
                       .tangential_law = law_id<CundallStrack>});
@@ -50,37 +51,38 @@ void run_until(Simulation3& s, double t) {
 TEST(RollingResistance3, ASphereRollingOnAPlateSlowsAsTheTorqueBalanceSays) {
   const double speed = 0.2;
   Simulation3 s = roll_on_floor(speed, 0.0);
-  const double a = mu_r * g / (1.0 + ref::sphere_inertia_factor);
+  const double a = rolling_mu_r * rolling_g / (1.0 + ref::sphere_inertia_factor);
   const double t_stop = speed / a;
   const Spheres& p = s.scene().spheres;
   run_until(s, 0.25 * t_stop);
-  const double t1 = s.time(), v1 = dot(p.velocity[0], along);
+  const double t1 = s.time(), v1 = dot(p.velocity[0], rolling_along);
   run_until(s, 0.75 * t_stop);
-  const double measured = (v1 - dot(p.velocity[0], along)) / (s.time() - t1);
+  const double measured = (v1 - dot(p.velocity[0], rolling_along)) / (s.time() - t1);
   EXPECT_NEAR(measured, a, ref::rolling_resistance_tolerance * a);
-  EXPECT_LT(std::abs(dot(p.velocity[0], cross(up, along))), 1e-9 * speed); // straight on
+  EXPECT_LT(std::abs(dot(p.velocity[0], cross(up, rolling_along))), 1e-9 * speed); // straight on
   // it stops and stays
   run_until(s, 1.5 * t_stop);
   EXPECT_LT(norm(p.velocity[0]), 1e-3 * speed);
-  EXPECT_LT(norm(p.angular_velocity[0]) * radius, 1e-3 * speed);
+  EXPECT_LT(norm(p.angular_velocity[0]) * rolling_radius, 1e-3 * speed);
 }
 
 TEST(RollingResistance3, RestsOnASlopeBelowItsAngleAndRollsDownAbove) {
   const double k = ref::sphere_inertia_factor;
   for (const double ratio : {0.8, 1.25}) { // tan alpha / mu_r
-    const double slope = std::atan(ratio * mu_r);
+    const double slope = std::atan(ratio * rolling_mu_r);
     SCOPED_TRACE("tan(slope) / mu_r = " + std::to_string(ratio));
     Simulation3 s = roll_on_floor(0.0, slope);
     const Spheres& p = s.scene().spheres;
     const double t = 0.2;
     run_until(s, 0.5 * t);
-    const double t1 = s.time(), v1 = dot(p.velocity[0], along);
+    const double t1 = s.time(), v1 = dot(p.velocity[0], rolling_along);
     run_until(s, t);
-    const double measured = (dot(p.velocity[0], along) - v1) / (s.time() - t1);
+    const double measured = (dot(p.velocity[0], rolling_along) - v1) / (s.time() - t1);
     const double expected =
-        ratio < 1.0 ? 0.0 : g * (std::sin(slope) - mu_r * std::cos(slope)) / (1.0 + k);
+        ratio < 1.0 ? 0.0
+                    : rolling_g * (std::sin(slope) - rolling_mu_r * std::cos(slope)) / (1.0 + k);
     // at rest: what is left of the springs' ringing as the sphere settles (as in 2D)
-    const double scale = g * std::sin(slope) / (1.0 + k);
+    const double scale = rolling_g * std::sin(slope) / (1.0 + k);
     EXPECT_NEAR(measured, expected,
                 ratio < 1.0 ? 1e-4 * scale : ref::rolling_resistance_tolerance * expected);
   }
@@ -91,16 +93,16 @@ TEST(RollingResistance3, RestsOnASlopeBelowItsAngleAndRollsDownAbove) {
 // and the relative spin in the tangent plane is what they resist.
 TEST(RollingResistance3, TheTorquesOnTwoSpheresAreOpposite) {
   Material m = testing::elastic_material(1.0e6);
-  m.rolling_friction = mu_r;
+  m.rolling_friction = rolling_mu_r;
   Scene3 scene;
   scene.materials = {m};
   const Vec3 axis = (1.0 / std::sqrt(3.0)) * Vec3{1.0, 1.0, 1.0};
   scene.add_sphere(
-      {.position = {0.0, 0.0, 0.0}, .radius = radius, .angular_velocity = 20.0 * axis});
-  scene.add_sphere({.position = {2.0 * radius - 1e-5, 0.0, 0.0},
-                    .radius = radius,
+      {.position = {0.0, 0.0, 0.0}, .radius = rolling_radius, .angular_velocity = 20.0 * axis});
+  scene.add_sphere({.position = {2.0 * rolling_radius - 1e-5, 0.0, 0.0},
+                    .radius = rolling_radius,
                     .angular_velocity = -20.0 * axis});
-  const double mass = shape_mass(Shape::sphere, radius, m.density);
+  const double mass = shape_mass(Shape::sphere, rolling_radius, m.density);
   Simulation3 s(std::move(scene),
                 {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 50.0,
                  .tangential_law = law_id<CundallStrack>});

@@ -15,7 +15,7 @@
 namespace talus {
 namespace {
 
-constexpr double g = 9.81;
+constexpr double g_settle = 9.81;
 
 // n spheres of radius 2 mm +- 10% on a loose lattice above the floor of a 24 mm box.
 Scene3 poured(std::size_t n) {
@@ -24,7 +24,7 @@ Scene3 poured(std::size_t n) {
   m.friction = 0.5;
   Scene3 scene;
   scene.materials = {m};
-  scene.gravity = {0.0, 0.0, -g};
+  scene.gravity = {0.0, 0.0, -g_settle};
   const double r = 2e-3, side = 24e-3;
   scene.plates = box_planes({0.0, 0.0, 0.0}, {side, side, 10.0 * side}, 0, true);
   std::mt19937 rng(41);
@@ -50,7 +50,7 @@ TEST(Settling3, ABedPouredIntoABoxComesToRestOnItsFloor) {
   const Scene3 scene = poured(96);
   Simulation3 s(scene, settings_for(scene));
   double weight = 0.0;
-  for (std::size_t i = 0; i < scene.spheres.size(); ++i) weight += scene.spheres.mass[i] * g;
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) weight += scene.spheres.mass[i] * g_settle;
   const double e0 = s.energies().total();
   double lowest = e0, worst_rise = 0.0;
   for (int k = 0; k < 400; ++k) {

@@ -14,7 +14,7 @@
 namespace talus::lammps_test {
 namespace {
 
-constexpr double g = 9.81;
+constexpr double g_plate = 9.81;
 
 // A plate of the scene, as the native engine and the fix's words give it.
 struct PlateCase {
@@ -52,7 +52,7 @@ Simulation3 native_run(const std::string& normal, const std::string& tangential,
                        const std::vector<Sphere>& spheres, const std::vector<PlateCase>& plates,
                        double dt) {
   Scene3 scene = native_scene(m, spheres);
-  scene.gravity = {0.0, 0.0, -g};
+  scene.gravity = {0.0, 0.0, -g_plate};
   for (std::size_t k = 0; k < plates.size(); ++k) {
     const PlateCase& p = plates[k];
     scene.plates.push_back(make_plane(p.point, p.normal, p.half_u, p.half_v));
@@ -69,7 +69,7 @@ void set_up_lammps(LammpsInstance& l, const std::string& laws, const Material& m
                    double dt) {
   set_up_3d(l, laws, m, spheres, dt);
   l.commands({fix_words(plates), "fix_modify walls energy yes", "fix move all nve/sphere",
-              "fix gravity all gravity " + exact(g) + " vector 0 0 -1"});
+              "fix gravity all gravity " + exact(g_plate) + " vector 0 0 -1"});
 }
 
 // A 2.4 cm box of plates: a floor vibrating along a tilted direction, a whole side wall and a
@@ -180,20 +180,20 @@ TEST(PlateWalls3D, ASphereRollingOnAPlateSlowsAtTheRollingResistancesRate) {
   m.rolling_friction = 0.05;
   m.friction = 0.5;
   const double r = 0.005, mass = 1e-3;
-  const double rest = mass * g / m.normal_stiffness; // linear law: the overlap at rest
+  const double rest = mass * g_plate / m.normal_stiffness; // linear law: the overlap at rest
   const double v0 = 0.2;
   LammpsInstance l;
   set_up_3d(l, "linear cundall_strack", m,
             {{{0.0, 0.0, r - rest}, {v0, 0.0, 0.0}, {0.0, v0 / r, 0.0}, r, mass}}, 1e-6, "f f f",
             "-0.5 0.5 -0.1 0.1 -0.1 0.1");
   l.commands({"fix walls all granthesis/wall plane 0 0 0 0 0 1 type 1", "fix move all nve/sphere",
-              "fix gravity all gravity " + exact(g) + " vector 0 0 -1",
+              "fix gravity all gravity " + exact(g_plate) + " vector 0 0 -1",
               "run 20000"}); // the spring builds up and the contact settles
   const double t = 0.1;
   const double v1 = l.velocity(1)[0];
   l.command("run " + std::to_string(static_cast<int>(std::lround(t / 1e-6))));
   const double v2 = l.velocity(1)[0];
-  const double expected = 5.0 / 7.0 * m.rolling_friction * g;
+  const double expected = 5.0 / 7.0 * m.rolling_friction * g_plate;
   std::printf("rolling on a plate: %.6g m/s^2, expected %.6g\n", (v1 - v2) / t, expected);
   EXPECT_NEAR((v1 - v2) / t, expected, 0.01 * expected);
   EXPECT_NEAR(l.lmp()->atom->omega[l.index(1)][1] * r, v2, 1e-3 * v2); // rolling, not slipping
@@ -209,12 +209,13 @@ TEST(PlateWalls3D, ARestingSpherePutsItsWeightOnThePlateAndARectangleHasEdges) {
   set_up_3d(l, "linear coulomb", m,
             {{{0.0, 0.0, r}, {}, {}, r, mass}, {{0.0, 0.02 + 1.01 * r, r}, {}, {}, r, mass}}, 1e-6);
   l.commands({"fix walls all granthesis/wall plane 0 0 0 0 0 1 type 1 extent 0.02 0.02",
-              "fix move all nve/sphere", "fix gravity all gravity " + exact(g) + " vector 0 0 -1",
+              "fix move all nve/sphere",
+              "fix gravity all gravity " + exact(g_plate) + " vector 0 0 -1",
               "thermo_style custom step f_walls[4]", "run 50000"});
-  EXPECT_NEAR(l.lmp()->atom->x[l.index(1)][2], r - mass * g / m.normal_stiffness, 1e-9);
+  EXPECT_NEAR(l.lmp()->atom->x[l.index(1)][2], r - mass * g_plate / m.normal_stiffness, 1e-9);
   LAMMPS_NS::Modify* modify = l.lmp()->modify;
-  EXPECT_NEAR(modify->fix[modify->find_fix("walls")]->compute_vector(3), -mass * g,
-              1e-6 * mass * g);
+  EXPECT_NEAR(modify->fix[modify->find_fix("walls")]->compute_vector(3), -mass * g_plate,
+              1e-6 * mass * g_plate);
   EXPECT_LT(l.lmp()->atom->x[l.index(2)][2], -r); // fell past the edge, below the plate
 }
 

@@ -19,7 +19,7 @@
 namespace talus {
 namespace {
 
-constexpr double g = 9.81;
+constexpr double g_cg = 9.81;
 
 // Simpson's rule on n (even) intervals.
 template <class F> double integral(F f, double a, double b, int n = 20000) {
@@ -189,7 +189,7 @@ TEST(CoarseGrain, ASettledBedsStressIsTheWeightAbove) {
     const FieldProfile p = coarse_grain({f}, o);
     double top = 0.0, bottom_weight = 0.0;
     for (std::size_t i = 0; i < f.position.size(); ++i)
-      if (f.kind[i] == 0) top = std::max(top, f.position[i].y), bottom_weight += f.mass[i] * g;
+      if (f.kind[i] == 0) top = std::max(top, f.position[i].y), bottom_weight += f.mass[i] * g_cg;
     bottom_weight /= o.across;
     double worst_physical = 0.0, worst_wrong_g = 0.0;
     for (std::size_t j = 0; j < p.at.size(); ++j) {
@@ -200,9 +200,9 @@ TEST(CoarseGrain, ASettledBedsStressIsTheWeightAbove) {
         if (!c.to_free && c.from_free) exact += c.force_on_from.y * Phi(y - c.point.y);
       for (std::size_t i = 0; i < f.position.size(); ++i) {
         if (f.kind[i] != 0) continue;
-        exact -= (f.force[i].y + f.mass[i] * g) * Phi(y - f.position[i].y);
-        weight_above += f.mass[i] * g * (1.0 - Phi(y - f.position[i].y));
-        heavier += 2.0 * f.mass[i] * g * (1.0 - Phi(y - f.position[i].y));
+        exact -= (f.force[i].y + f.mass[i] * g_cg) * Phi(y - f.position[i].y);
+        weight_above += f.mass[i] * g_cg * (1.0 - Phi(y - f.position[i].y));
+        heavier += 2.0 * f.mass[i] * g_cg * (1.0 - Phi(y - f.position[i].y));
       }
       EXPECT_NEAR(p.contact[j](1, 1), exact / o.across, 1e-9 * bottom_weight) << y;
       if (y > 4.0 * o.width && y < top) { // clear of the floor's contacts

@@ -14,7 +14,7 @@ using testing::collide;
 using testing::elastic_material;
 using testing::two_grains;
 
-constexpr double r = 1.0e-3; // m
+constexpr double collision_r = 1.0e-3; // m
 
 SimulationConfig
 config_for(const World& w, Integrator integrator, TangentialLaw t,
@@ -32,7 +32,7 @@ class ElasticCollision : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(ElasticCollision, HeadOnConservesEnergyAndReversesVelocities) {
   const double v = reference::thesis_disk_speed;
-  World w = two_grains(elastic_material(), r, 2.0 * v);
+  World w = two_grains(elastic_material(), collision_r, 2.0 * v);
   const SimulationConfig c = config_for(w, GetParam(), law_id<ViscousCoulomb>);
   Simulation s(std::move(w), c);
   const double e0 = energies(s).total();
@@ -53,7 +53,7 @@ TEST_P(ElasticCollision, HeadOnConservesEnergyAndReversesVelocities) {
 
 TEST_P(ElasticCollision, ObliqueConservesEnergy) {
   const double v = reference::thesis_disk_speed;
-  World w = two_grains(elastic_material(), r, 2.0 * v, /*b=*/1.2 * r);
+  World w = two_grains(elastic_material(), collision_r, 2.0 * v, /*b=*/1.2 * collision_r);
   const SimulationConfig c = config_for(w, GetParam(), law_id<ViscousCoulomb>);
   Simulation s(std::move(w), c);
   const double e0 = energies(s).total();
@@ -83,7 +83,7 @@ TEST_P(DissipativeFrictionalCollision, ConservesLinearAndAngularMomentum) {
   m.restitution = 0.3; // the thesis' gamma = 1 case (sec. 3.2.2)
   m.friction = 0.5;
   m.tangential_damping = 500.0;
-  World w = two_grains(m, r, 2.0 * v, /*b=*/1.0 * r);
+  World w = two_grains(m, collision_r, 2.0 * v, /*b=*/1.0 * collision_r);
   w.particles.angular_velocity[0] = 3.0; // spin so friction acts from the start
   w.particles.mass[1] *= 2.0;            // unequal grains: nothing cancels by symmetry
   w.particles.inv_mass[1] /= 2.0;
@@ -118,7 +118,7 @@ TEST(DissipativeFrictionalCollisionGear, AngularMomentumErrorConvergesAtSecondOr
     m.restitution = 0.3;
     m.friction = 0.5;
     m.tangential_damping = 500.0;
-    World w = two_grains(m, r, 2.0 * reference::thesis_disk_speed, r);
+    World w = two_grains(m, collision_r, 2.0 * reference::thesis_disk_speed, collision_r);
     w.particles.angular_velocity[0] = 3.0;
     const SimulationConfig c =
         config_for(w, Integrator::gear, law_id<CundallStrack>, steps_per_collision);

@@ -11,8 +11,8 @@
 namespace talus {
 namespace {
 
-constexpr double r = 0.01;
-constexpr double touching = 2.0 * r * 0.999; // centres a little closer than 2r: a contact
+constexpr double jam_r = 0.01;
+constexpr double jam_touching = 2.0 * jam_r * 0.999; // centres a little closer than 2r: a contact
 
 // Frictionless disks at rest at the given centres, no gravity, no walls.
 Simulation disks(const std::vector<Vec2>& centres) {
@@ -21,7 +21,8 @@ Simulation disks(const std::vector<Vec2>& centres) {
   m.friction = 0.0;
   w.materials = {m};
   w.gravity = {0.0, 0.0};
-  for (const Vec2 c : centres) w.add_particle({.position = c, .radius = r, .shape = Shape::disk});
+  for (const Vec2 c : centres)
+    w.add_particle({.position = c, .radius = jam_r, .shape = Shape::disk});
   SimulationConfig c;
   c.timestep = 1e-6;
   c.tangential_law = law_id<Frictionless>;
@@ -38,7 +39,7 @@ TEST(LoadBearing, TakesOutRattlersOneAfterTheOther) {
   std::vector<Vec2> c{{0.0, 0.0}};
   for (int k = 0; k < 6; ++k) {
     const double a = k * std::numbers::pi / 3.0;
-    c.push_back({touching * std::cos(a), touching * std::sin(a)});
+    c.push_back({jam_touching * std::cos(a), jam_touching * std::sin(a)});
   }
   const Simulation cluster = disks(c);
   const LoadBearing all = load_bearing(cluster, {-1.0, -1.0}, {1.0, 1.0}, 3);
@@ -46,9 +47,9 @@ TEST(LoadBearing, TakesOutRattlersOneAfterTheOther) {
   EXPECT_EQ(all.rattlers, 0u);
   EXPECT_NEAR(all.coordination, 24.0 / 7.0, 1e-12);
 
-  c.push_back(c[1] + Vec2{touching, 0.0});        // on disk 1 alone
-  c.push_back(c[4] + Vec2{-touching, 0.0});       // a pair: hangs on disk 4
-  c.push_back(c[4] + Vec2{-2.0 * touching, 0.0}); // its outer disk
+  c.push_back(c[1] + Vec2{jam_touching, 0.0});        // on disk 1 alone
+  c.push_back(c[4] + Vec2{-jam_touching, 0.0});       // a pair: hangs on disk 4
+  c.push_back(c[4] + Vec2{-2.0 * jam_touching, 0.0}); // its outer disk
   const Simulation hung = disks(c);
   const LoadBearing net = load_bearing(hung, {-1.0, -1.0}, {1.0, 1.0}, 3);
   EXPECT_EQ(net.grains, 10u);
@@ -63,7 +64,8 @@ TEST(LoadBearing, TakesOutRattlersOneAfterTheOther) {
   EXPECT_FALSE(frictional.rattler[10]);
   EXPECT_EQ(frictional.rattlers, 2u); // the pair; the disk on disk 1 touches the groove's too
   // the region counts the grains with their centres in it
-  EXPECT_EQ(load_bearing(hung, {-0.5 * r, -0.5 * r}, {0.5 * r, 0.5 * r}, 3).grains, 1u);
+  EXPECT_EQ(load_bearing(hung, {-0.5 * jam_r, -0.5 * jam_r}, {0.5 * jam_r, 0.5 * jam_r}, 3).grains,
+            1u);
 }
 
 // A fixed grain counts as a wall for the grains it touches, whatever its index: with it first
@@ -75,11 +77,12 @@ TEST(LoadBearing, AFixedGrainIsAWallToTheGrainsItHolds) {
   m.friction = 0.0;
   w.materials = {m};
   w.gravity = {0.0, 0.0};
-  w.add_particle({.position = {0.0, 0.0}, .radius = r, .kind = Kind::fixed, .shape = Shape::disk});
+  w.add_particle(
+      {.position = {0.0, 0.0}, .radius = jam_r, .kind = Kind::fixed, .shape = Shape::disk});
   for (int k = 0; k < 6; ++k) {
     const double a = k * std::numbers::pi / 3.0;
-    w.add_particle({.position = {touching * std::cos(a), touching * std::sin(a)},
-                    .radius = r,
+    w.add_particle({.position = {jam_touching * std::cos(a), jam_touching * std::sin(a)},
+                    .radius = jam_r,
                     .shape = Shape::disk});
   }
   SimulationConfig c;

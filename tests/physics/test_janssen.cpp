@@ -12,23 +12,24 @@
 namespace talus {
 namespace {
 
-constexpr double W = 0.1, H = 0.6, r = 0.0025, m = 1.0e-4, g = 9.81;
+constexpr double janssen_W = 0.1, janssen_H = 0.6, janssen_r = 0.0025, janssen_m = 1.0e-4,
+                 janssen_g = 9.81;
 
 // Free grains filling the silo [0, W] x [0, H] on a square lattice, and on each wall a contact
 // every `pitch` of depth whose normal force is sigma(z) pitch and whose friction is mu times
 // that: the wall stress of the closed form.
 Frame silo(double saturation, double length, double mu, double pitch) {
   Frame f;
-  for (double y = r; y < H; y += 2.0 * r)
-    for (double x = r; x < W; x += 2.0 * r) {
+  for (double y = janssen_r; y < janssen_H; y += 2.0 * janssen_r)
+    for (double x = janssen_r; x < janssen_W; x += 2.0 * janssen_r) {
       f.position.push_back({x, y});
-      f.radius.push_back(r);
-      f.mass.push_back(m);
+      f.radius.push_back(janssen_r);
+      f.mass.push_back(janssen_m);
       f.kind.push_back(0);
     }
-  const double top = f.position.back().y + r; // the lattice's highest grain top
+  const double top = f.position.back().y + janssen_r; // the lattice's highest grain top
   for (double z = 0.5 * pitch; z < top; z += pitch)
-    for (const double wall : {0.0, W}) {
+    for (const double wall : {0.0, janssen_W}) {
       Frame::Chain c;
       c.point = {wall, top - z};
       const double normal = janssen_stress(saturation, length, z) * pitch;
@@ -43,8 +44,8 @@ Frame silo(double saturation, double length, double mu, double pitch) {
 
 JanssenOptions options() {
   JanssenOptions o;
-  o.right = W;
-  o.gravity = g;
+  o.right = janssen_W;
+  o.gravity = janssen_g;
   return o;
 }
 
@@ -59,12 +60,15 @@ TEST(Janssen, TheFitGivesBackTheClosedForm) {
   EXPECT_NEAR(p.saturation, saturation, 0.01 * saturation);
   EXPECT_NEAR(p.length, length, 0.01 * length);
   EXPECT_NEAR(p.mobilised_friction, mu, 1e-12);
-  EXPECT_NEAR(p.surface, H, 1e-12);
+  EXPECT_NEAR(p.surface, janssen_H, 1e-12);
   EXPECT_NEAR(p.base, 0.0, 1e-12);
   // the bed's weight per area: the lattice's mass over W H
-  EXPECT_NEAR(p.weight_density, static_cast<double>(f.position.size()) * m * g / (W * H), 1e-9);
-  EXPECT_NEAR(p.predicted_saturation, p.weight_density * W / (2.0 * mu), 1e-9);
-  EXPECT_NEAR(p.stress_ratio, W / (2.0 * mu * p.length), 1e-12);
+  EXPECT_NEAR(p.weight_density,
+              static_cast<double>(f.position.size()) * janssen_m * janssen_g /
+                  (janssen_W * janssen_H),
+              1e-9);
+  EXPECT_NEAR(p.predicted_saturation, p.weight_density * janssen_W / (2.0 * mu), 1e-9);
+  EXPECT_NEAR(p.stress_ratio, janssen_W / (2.0 * mu * p.length), 1e-12);
   EXPECT_LT(p.saturation_error, 0.01 * saturation);
 }
 

@@ -17,50 +17,51 @@ namespace {
 
 namespace ref = reference;
 
-struct Impact {
+struct HeadOnImpact {
   double restitution = 0.0;
   double peak_overlap = 0.0; ///< m
   double m_eff = 0.0;        ///< kg
 };
 
-const double stiffness = 1.0e4, radius = 0.005, speed = 0.5;
+const double damping_stiffness = 1.0e4, damping_radius = 0.005, damping_speed = 0.5;
 
 // Two equal disks head-on at `speed` with restitution e under convention d.
-Impact impact(double e, LinearDamping d) {
-  Material m = testing::elastic_material(stiffness);
+HeadOnImpact impact(double e, LinearDamping d) {
+  Material m = testing::elastic_material(damping_stiffness);
   m.restitution = e;
-  World w = testing::two_grains(m, radius, speed);
+  World w = testing::two_grains(m, damping_radius, damping_speed);
   const double m_eff = 0.5 * w.particles.mass[0];
   SimulationConfig c;
   c.normal_law = law_id<LinearSpringDashpot>;
   c.tangential_law = law_id<Frictionless>;
   c.integrator = Integrator::gear;
   c.linear_damping = d;
-  c.timestep = std::numbers::pi * std::sqrt(m_eff / stiffness) / ref::linear_damping_steps;
+  c.timestep = std::numbers::pi * std::sqrt(m_eff / damping_stiffness) / ref::linear_damping_steps;
   Simulation s(std::move(w), c);
   const testing::CollisionRecord r = testing::collide(s, 1'000'000);
   EXPECT_TRUE(r.separated);
   const auto& v = s.world().particles.velocity;
-  return {(v[1].x - v[0].x) / speed, r.max_overlap, m_eff};
+  return {(v[1].x - v[0].x) / damping_speed, r.max_overlap, m_eff};
 }
 
 // The peak overlap of an impact at `speed` on a linear oscillator of reduced mass m_eff with
 // damping ratio zeta: (v / omega_0) exp(-zeta / sqrt(1 - zeta^2) atan(sqrt(1 - zeta^2) / zeta)).
 double peak(double zeta, double m_eff) {
   const double root = std::sqrt(1.0 - zeta * zeta);
-  return speed * std::sqrt(m_eff / stiffness) * std::exp(-zeta / root * std::atan(root / zeta));
+  return damping_speed * std::sqrt(m_eff / damping_stiffness) *
+         std::exp(-zeta / root * std::atan(root / zeta));
 }
 
 TEST(LinearDamping, EachConventionGivesItsRestitutionAndPeakOverlap) {
   for (const double e : {0.3, 0.5, 0.8}) {
     SCOPED_TRACE("e = " + std::to_string(e));
     const double never = linear_damping_ratio(e), classic = classic_damping_ratio(e);
-    const Impact a = impact(e, LinearDamping::never_attractive);
-    const Impact b = impact(e, LinearDamping::classic);
-    const Impact c = impact(e, LinearDamping::classic_cut);
+    const HeadOnImpact a = impact(e, LinearDamping::never_attractive);
+    const HeadOnImpact b = impact(e, LinearDamping::classic);
+    const HeadOnImpact c = impact(e, LinearDamping::classic_cut);
     const double m_eff = a.m_eff;
-    const double eta_classic = 2.0 * classic * std::sqrt(stiffness * m_eff);
-    const double e_cut = linear_restitution(stiffness, eta_classic, m_eff);
+    const double eta_classic = 2.0 * classic * std::sqrt(damping_stiffness * m_eff);
+    const double e_cut = linear_restitution(damping_stiffness, eta_classic, m_eff);
     std::printf("e = %.2f: never_attractive %.5f (peak %.4e m), classic %.5f (%.4e m), "
                 "classic_cut %.5f (%.4e m)\n",
                 e, a.restitution, a.peak_overlap, b.restitution, b.peak_overlap, c.restitution,
@@ -77,7 +78,7 @@ TEST(LinearDamping, EachConventionGivesItsRestitutionAndPeakOverlap) {
 }
 
 TEST(LinearDamping, OnlyTheClassicConventionReachesARestitutionBelowTheFloor) {
-  Material m = testing::elastic_material(stiffness);
+  Material m = testing::elastic_material(damping_stiffness);
   m.restitution = 0.1;
   EXPECT_NE(LinearSpringDashpot::material_error(m, LinearDamping::never_attractive), "");
   EXPECT_EQ(LinearSpringDashpot::material_error(m, LinearDamping::classic), "");

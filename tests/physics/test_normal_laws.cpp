@@ -13,7 +13,7 @@ namespace {
 using testing::collide;
 using testing::two_grains;
 
-constexpr double r = 1.0e-3;
+constexpr double law_r = 1.0e-3;
 
 struct Outcome {
   double restitution;
@@ -24,7 +24,7 @@ struct Outcome {
 
 Outcome head_on(const Material& m, NormalLaw law, Integrator integrator, double v, double dt,
                 Shape shape = Shape::disk) {
-  World w = two_grains(m, r, v, 0.0, shape, 0.01);
+  World w = two_grains(m, law_r, v, 0.0, shape, 0.01);
   SimulationConfig c;
   c.timestep = dt;
   c.normal_law = law;
@@ -46,7 +46,7 @@ class LinearLaw : public ::testing::TestWithParam<Integrator> {};
 TEST_P(LinearLaw, MatchesTextbookRestitutionAndDurationAtWeakDamping) {
   Material m = testing::elastic_material(1.0e4);
   m.restitution = 0.9;
-  const double mass = shape_mass(Shape::disk, r, m.density), m_eff = 0.5 * mass;
+  const double mass = shape_mass(Shape::disk, law_r, m.density), m_eff = 0.5 * mass;
   const double eta = mix(m, m, 1.0).normal_dashpot(m_eff);
   const double tc = linear_collision_time_textbook(m.normal_stiffness, eta, m_eff);
   const Outcome o = head_on(m, law_id<LinearSpringDashpot>, GetParam(), 0.02,
@@ -63,7 +63,7 @@ TEST_P(LinearLaw, MatchesExactRestitutionAndDurationAtAnyDamping) {
   for (const double target : {0.95, 0.7, 0.5, 0.3}) {
     Material m = testing::elastic_material(1.0e4);
     m.restitution = target;
-    const double mass = shape_mass(Shape::disk, r, m.density), m_eff = 0.5 * mass;
+    const double mass = shape_mass(Shape::disk, law_r, m.density), m_eff = 0.5 * mass;
     const double eta = mix(m, m, 1.0).normal_dashpot(m_eff);
     EXPECT_NEAR(linear_restitution(m.normal_stiffness, eta, m_eff), target, 1e-12);
     const double tc = linear_collision_time(m.normal_stiffness, eta, m_eff);
@@ -90,8 +90,8 @@ Material hertz_material(double damping_A = 0.0) {
 TEST(HertzLaw, ElasticCollisionMatchesClosedForms) {
   const Material m = hertz_material();
   for (const double v : {0.01, 0.1, 1.0}) {
-    const double mass = shape_mass(Shape::sphere, r, m.density), m_eff = 0.5 * mass;
-    const double e_star = effective_young(m, m), r_eff = 0.5 * r;
+    const double mass = shape_mass(Shape::sphere, law_r, m.density), m_eff = 0.5 * mass;
+    const double e_star = effective_young(m, m), r_eff = 0.5 * law_r;
     const double rho = hertz_rho(e_star, r_eff);
     const double tc_ref = reference::hertz_time_constant *
                           std::pow(m_eff * m_eff / (r_eff * e_star * e_star * v), 0.2);
@@ -111,9 +111,9 @@ TEST(HertzLaw, ElasticCollisionMatchesClosedForms) {
 
 // Ramirez et al. 1999: e(v) = 1 - C1 (3A/2) alpha^(2/5) v^(1/5) + C2 ((3A/2) alpha^(2/5) v^(1/5))^2
 TEST(HertzLaw, ViscoelasticRestitutionFollowsRamirez) {
-  const double mass = shape_mass(Shape::sphere, r, 2650.0), m_eff = 0.5 * mass;
+  const double mass = shape_mass(Shape::sphere, law_r, 2650.0), m_eff = 0.5 * mass;
   Material m = hertz_material();
-  const double rho = hertz_rho(effective_young(m, m), 0.5 * r);
+  const double rho = hertz_rho(effective_young(m, m), 0.5 * law_r);
   const double alpha = rho / m_eff;
   // A such that the first-order term is 0.1 at v = 1 m/s (e about 0.89 there)
   m.hertz_damping = 0.1 / reference::ramirez_c1 / 1.5 / std::pow(alpha, 0.4);
@@ -134,14 +134,14 @@ TEST(HertzLaw, ViscoelasticRestitutionFollowsRamirez) {
 // collision at the impact speed rebounds with it. Tolerance 1e-3 (absolute): strong damping
 // makes the grains part mid-step, resolved here with t_c / 1000.
 TEST(HertzLaw, AnyRestitutionIsReachedBelowTheLinearFloor) {
-  const double v = 0.5, mass = shape_mass(Shape::sphere, r, 2650.0);
+  const double v = 0.5, mass = shape_mass(Shape::sphere, law_r, 2650.0);
   for (const double e : {0.1, 0.05}) {
     Material m = hertz_material();
     m.restitution = e, m.hertz_damping = -1.0;
     EXPECT_EQ(HertzViscoelastic::material_error(m), "");
     EXPECT_NE(LinearSpringDashpot::material_error(m), "") << "the linear law cannot reach it";
     const PairParameters p = mix(m, m, v); // no longer refused with the linear law's message
-    const double tc = HertzViscoelastic::collision_time(p, 0.5 * mass, 0.5 * r, v);
+    const double tc = HertzViscoelastic::collision_time(p, 0.5 * mass, 0.5 * law_r, v);
     const Outcome o =
         head_on(m, law_id<HertzViscoelastic>, Integrator::gear, v, tc / 1000.0, Shape::sphere);
     EXPECT_NEAR(o.restitution, e, 1e-3) << "e = " << e;

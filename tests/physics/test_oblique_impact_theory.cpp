@@ -33,15 +33,15 @@ namespace ref = reference;
 using namespace single_impact;
 
 constexpr double poisson = 0.3;
-constexpr double kappa = 2.0 * (1.0 - poisson) / (2.0 - poisson); // G* / E*, k_t / k_n
+constexpr double theory_kappa = 2.0 * (1.0 - poisson) / (2.0 - poisson); // G* / E*, k_t / k_n
 
 struct Body {
   Shape shape;
   double gyration; ///< 1 + m R^2 / I
-  double chi() const { return kappa / 2.0 * gyration; }
+  double chi() const { return theory_kappa / 2.0 * gyration; }
 };
 
-const Body sphere{Shape::sphere, 3.5}, disk{Shape::disk, 3.0};
+const Body sphere_body{Shape::sphere, 3.5}, disk_body{Shape::disk, 3.0};
 
 // The theory's psi2 for psi1: a body of unit mass, radius and E* on a rigid half-space, the
 // contact as a row of springs along x (method of dimensionality reduction): normal stiffness E* dx
@@ -49,14 +49,14 @@ const Body sphere{Shape::sphere, 3.5}, disk{Shape::disk, 3.0};
 // times its own normal force, a spring that enters the contact starting unstretched. The
 // springs' sums are Hertz' force and Mindlin-Deresiewicz' tangential force. Leapfrog in time.
 double theory_psi2(double psi1, double gyration) {
-  const double radius = 1.0, mass = 1.0, e_star = 1.0, g_star = kappa * e_star, mu = 0.3;
+  const double radius = 1.0, mass = 1.0, e_star = 1.0, g_star = theory_kappa * e_star, mu = 0.3;
   const double v0 = 1e-3;
   const double d_max = std::pow(15.0 * mass * v0 * v0 / (16.0 * e_star * std::sqrt(radius)), 0.4);
   const double dt = 2.94 * d_max / v0 / ref::mbf_reference_steps;
   const int n = ref::mbf_reference_springs;
   const double half = 1.05 * std::sqrt(radius * d_max), dx = 2.0 * half / n;
   std::vector<double> stretch(n, 0.0);
-  double d = 0.0, v_n = v0, u = psi1 * mu * v0 / kappa, f_n = 0.0, f_t = 0.0;
+  double d = 0.0, v_n = v0, u = psi1 * mu * v0 / theory_kappa, f_n = 0.0, f_t = 0.0;
   bool touched = false;
   for (int step = 0; step < 4 * ref::mbf_reference_steps; ++step) {
     v_n -= f_n / mass * dt / 2.0;
@@ -76,7 +76,7 @@ double theory_psi2(double psi1, double gyration) {
     touched = touched || d > 0.0;
     if (touched && d < 0.0) break;
   }
-  return kappa * u / (mu * v0);
+  return theory_kappa * u / (mu * v0);
 }
 
 // talus' psi2 for psi1: an aluminium-like grain (E = 1e8 Pa, nu = 0.3) of R = 1 mm at 0.1 m/s onto
@@ -97,7 +97,7 @@ double talus_psi2(double psi1, const Body& body) {
            .tangential = law_id<MindlinNoSlip>,
            .shape = body.shape,
            .radius = 1e-3,
-           .velocity = {psi1 * m.friction * v_n / kappa, -v_n},
+           .velocity = {psi1 * m.friction * v_n / theory_kappa, -v_n},
            .steps_per_collision = ref::mbf_steps_per_collision,
            .arm = LeverArm::radius};
   Simulation s = impact(c);
@@ -105,7 +105,7 @@ double talus_psi2(double psi1, const Body& body) {
   for (int k = 0; k < 100'000; ++k) {
     s.step();
     touched = touched || gap(s) < 0.0;
-    if (touched && gap(s) > 0.0) return kappa * slip(s, c.arm) / (m.friction * v_n);
+    if (touched && gap(s) > 0.0) return theory_kappa * slip(s, c.arm) / (m.friction * v_n);
   }
   ADD_FAILURE() << "the grain never left the floor";
   return 0.0;
@@ -118,7 +118,7 @@ std::string name_of(const Body& body) {
 // The reference meets the theory's closed forms: gross slip from psi1 = 4 chi - 1 on, with
 // psi2 = psi1 - 4 chi, and not below it. The bound is the springs' and the steps' resolution.
 TEST(ObliqueImpactTheory, TheReferenceMeetsMawBarberAndFawcettsGrossSlip) {
-  for (const Body& body : {sphere, disk}) {
+  for (const Body& body : {sphere_body, disk_body}) {
     SCOPED_TRACE(name_of(body));
     const double chi = body.chi();
     for (double psi1 : {4.0 * chi - 1.0, 4.0 * chi, 4.0 * chi + 1.0})
@@ -133,7 +133,7 @@ TEST(ObliqueImpactTheory, TheReferenceMeetsMawBarberAndFawcettsGrossSlip) {
 // slip keeps the spring at the cap while kappa u >= 2/3 mu v_n (the theory's springs: while
 // kappa u >= mu v_n), so talus leaves the cap once psi < -2/3, the theory once psi < -1.
 TEST(ObliqueImpactTheory, TalusSlidesThroughoutFromItsOwnBoundaryOn) {
-  for (const Body& body : {sphere, disk}) {
+  for (const Body& body : {sphere_body, disk_body}) {
     SCOPED_TRACE(name_of(body));
     const double chi = body.chi();
     for (double psi1 : {4.0 * chi - 2.0 / 3.0 + 0.02, 4.0 * chi, 4.0 * chi + 1.0})
@@ -147,7 +147,7 @@ TEST(ObliqueImpactTheory, TalusSlidesThroughoutFromItsOwnBoundaryOn) {
 // rebound lies above the theory's (the contact point's velocity is turned less), by no more than
 // the single spring's miss measured over the range (reference_values.hpp).
 TEST(ObliqueImpactTheory, TheIntermediateRegimeStaysWithinTheSingleSpringsMiss) {
-  for (const Body& body : {sphere, disk}) {
+  for (const Body& body : {sphere_body, disk_body}) {
     SCOPED_TRACE(name_of(body));
     const double bound = body.shape == Shape::sphere ? ref::mbf_intermediate_bound_sphere
                                                      : ref::mbf_intermediate_bound_disk;

@@ -14,7 +14,7 @@
 namespace talus {
 namespace {
 
-constexpr double v = 0.4; // m/s: the impact speed, and the config's reference speed
+constexpr double impact_v = 0.4; // m/s: the impact speed, and the config's reference speed
 
 Material grain(double young, double restitution) {
   Material m;
@@ -31,7 +31,7 @@ SimulationConfig config(NormalLaw law, double dt) {
   c.normal_law = law;
   c.tangential_law = law_id<Frictionless>;
   c.integrator = Integrator::gear;
-  c.impact_speed = v;
+  c.impact_speed = impact_v;
   return c;
 }
 
@@ -47,7 +47,7 @@ double rebound(World w, NormalLaw law, double dt, bool floor) {
     const double gap = floor ? p.position[0].y - p.radius[0]
                              : p.position[1].x - p.position[0].x - p.radius[0] - p.radius[1];
     if (gap < 0.0) touched = true;
-    if (touched && gap > 0.0) return relative() / v;
+    if (touched && gap > 0.0) return relative() / impact_v;
   }
   ADD_FAILURE() << "no rebound";
   return 0.0;
@@ -56,8 +56,9 @@ double rebound(World w, NormalLaw law, double dt, bool floor) {
 // The shortest contact of the pair, for the timestep: Hertz at v, or the linear law's.
 double contact_time(const Material& a, const Material& b, NormalLaw law, double m_eff,
                     double r_eff) {
-  const PairParameters p = mix(a, b, v);
-  return with_normal_law(law, [&]<class N>() { return N::collision_time(p, m_eff, r_eff, v); });
+  const PairParameters p = mix(a, b, impact_v);
+  return with_normal_law(law,
+                         [&]<class N>() { return N::collision_time(p, m_eff, r_eff, impact_v); });
 }
 
 class RestitutionAsAsked : public ::testing::TestWithParam<NormalLaw> {};
@@ -73,11 +74,11 @@ TEST_P(RestitutionAsAsked, TwoGrainsOfDifferentSizesAndMaterials) {
                         Case{grain(1e8, 0.3), grain(5e8, 0.7), 2e-3, 1e-3, 0.5}}) {
     World w;
     w.materials = {c.a, c.b};
-    w.add_particle({.position = {0.0, 0.0}, .radius = c.ra, .velocity = {0.5 * v, 0.0}});
+    w.add_particle({.position = {0.0, 0.0}, .radius = c.ra, .velocity = {0.5 * impact_v, 0.0}});
     w.add_particle({.position = {c.ra + c.rb + 1e-6, 0.0},
                     .radius = c.rb,
                     .material = 1,
-                    .velocity = {-0.5 * v, 0.0}});
+                    .velocity = {-0.5 * impact_v, 0.0}});
     const double ma = w.particles.mass[0], mb = w.particles.mass[1];
     const double tc = contact_time(c.a, c.b, law, ma * mb / (ma + mb), c.ra * c.rb / (c.ra + c.rb));
     EXPECT_NEAR(rebound(std::move(w), law, tc / 2000.0, false), c.asked, 1e-3)
@@ -99,7 +100,7 @@ TEST_P(RestitutionAsAsked, AGrainOnAWallRigidOrNot) {
       w.materials = {g, wall};
       w.add_wall({-0.05, 0.0}, {0.05, 0.0}, 1);
       const double r = 1.5e-3;
-      w.add_particle({.position = {0.0, r + 1e-6}, .radius = r, .velocity = {0.0, -v}});
+      w.add_particle({.position = {0.0, r + 1e-6}, .radius = r, .velocity = {0.0, -impact_v}});
       const double tc = contact_time(g, wall, law, w.particles.mass[0], r);
       EXPECT_NEAR(rebound(std::move(w), law, tc / 2000.0, true), asked, 1e-3)
           << name_of(law) << (rigid ? ", rigid" : ", soft") << " wall; asked " << asked;
@@ -115,9 +116,9 @@ INSTANTIATE_TEST_SUITE_P(BothNormalLaws, RestitutionAsAsked,
 TEST(HertzDamping, PerContactDampingIsTheInverseOfTheRestitution) {
   for (const double e : {0.05, 0.3, 0.8, 0.99}) {
     const double m_eff = 2e-3, rho = 4e6;
-    const double A = hertz_damping_scale(e, v) * std::pow(m_eff / rho, 0.4);
-    EXPECT_NEAR(hertz_restitution(A, m_eff, rho, v), e, 1e-9) << "e = " << e;
-    EXPECT_NEAR(hertz_damping_for_restitution(e, m_eff, rho, v), A, 1e-12 * A);
+    const double A = hertz_damping_scale(e, impact_v) * std::pow(m_eff / rho, 0.4);
+    EXPECT_NEAR(hertz_restitution(A, m_eff, rho, impact_v), e, 1e-9) << "e = " << e;
+    EXPECT_NEAR(hertz_damping_for_restitution(e, m_eff, rho, impact_v), A, 1e-12 * A);
   }
 }
 

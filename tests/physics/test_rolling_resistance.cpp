@@ -23,7 +23,7 @@ struct Floor {
   double speed = 0.2; ///< m/s, rolling without slip from the start
 };
 
-const double radius = 5.0e-3, g = 9.81;
+const double roll_radius = 5.0e-3, g_roll = 9.81;
 
 Simulation roll_on_floor(const Floor& f) {
   Material m = testing::elastic_material(1.0e6);
@@ -33,15 +33,15 @@ Simulation roll_on_floor(const Floor& f) {
   m.rolling_friction = f.rolling_friction;
   World w;
   w.materials = {m};
-  w.gravity = {g * std::sin(f.slope), -g * std::cos(f.slope)};
+  w.gravity = {g_roll * std::sin(f.slope), -g_roll * std::cos(f.slope)};
   w.add_wall({-10.0, 0.0}, {10.0, 0.0});
-  const double mass = shape_mass(f.shape, radius, m.density);
-  const double sag = mass * g * std::cos(f.slope) / m.normal_stiffness; // resting overlap
-  w.add_particle({.position = {0.0, radius - sag},
-                  .radius = radius,
+  const double mass = shape_mass(f.shape, roll_radius, m.density);
+  const double sag = mass * g_roll * std::cos(f.slope) / m.normal_stiffness; // resting overlap
+  w.add_particle({.position = {0.0, roll_radius - sag},
+                  .radius = roll_radius,
                   .shape = f.shape,
                   .velocity = {f.speed, 0.0},
-                  .angular_velocity = -f.speed / radius});
+                  .angular_velocity = -f.speed / roll_radius});
   SimulationConfig c;
   c.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 50.0;
   c.normal_law = law_id<LinearSpringDashpot>;
@@ -64,7 +64,7 @@ class RollingOnAFloor : public ::testing::TestWithParam<Floor> {};
 TEST_P(RollingOnAFloor, DeceleratesAsTheTorqueBalanceSays) {
   const Floor f = GetParam();
   Simulation s = roll_on_floor(f);
-  const double a = f.rolling_friction * g / (1.0 + inertia_factor(f.shape));
+  const double a = f.rolling_friction * g_roll / (1.0 + inertia_factor(f.shape));
   const double t_stop = f.speed / a;
   const auto& p = s.world().particles;
   run_until(s, 0.25 * t_stop);
@@ -75,7 +75,7 @@ TEST_P(RollingOnAFloor, DeceleratesAsTheTorqueBalanceSays) {
   // it stops and stays: the spring holds it where friction alone would let it roll on
   run_until(s, 1.5 * t_stop);
   EXPECT_LT(std::abs(p.velocity[0].x), 1e-3 * f.speed);
-  EXPECT_LT(std::abs(p.angular_velocity[0]) * radius, 1e-3 * f.speed);
+  EXPECT_LT(std::abs(p.angular_velocity[0]) * roll_radius, 1e-3 * f.speed);
 }
 
 TEST_P(RollingOnAFloor, RestsOnASlopeBelowItsAngleAndRollsDownAbove) {
@@ -93,11 +93,12 @@ TEST_P(RollingOnAFloor, RestsOnASlopeBelowItsAngleAndRollsDownAbove) {
     run_until(s, t);
     const double measured = (p.velocity[0].x - v1) / (s.time() - t1);
     const double expected =
-        ratio < 1.0 ? 0.0
-                    : g * (std::sin(f.slope) - f.rolling_friction * std::cos(f.slope)) / (1.0 + k);
+        ratio < 1.0
+            ? 0.0
+            : g_roll * (std::sin(f.slope) - f.rolling_friction * std::cos(f.slope)) / (1.0 + k);
     // at rest: what is left of the springs' ringing as the grain settles on the slope, far
     // below what rolling down it freely would give
-    const double scale = g * std::sin(f.slope) / (1.0 + k);
+    const double scale = g_roll * std::sin(f.slope) / (1.0 + k);
     EXPECT_NEAR(measured, expected,
                 ratio < 1.0 ? 1e-4 * scale : ref::rolling_resistance_tolerance * expected);
   }
@@ -106,7 +107,7 @@ TEST_P(RollingOnAFloor, RestsOnASlopeBelowItsAngleAndRollsDownAbove) {
 TEST_P(RollingOnAFloor, TheLedgerBalancesAndFrictionNeverGivesEnergyBack) {
   const Floor f = GetParam();
   Simulation s = roll_on_floor(f);
-  const double t_stop = f.speed * (1.0 + inertia_factor(f.shape)) / (f.rolling_friction * g);
+  const double t_stop = f.speed * (1.0 + inertia_factor(f.shape)) / (f.rolling_friction * g_roll);
   EnergyLedger ledger;
   ledger.start(s);
   const Energies start = energies(s);

@@ -21,7 +21,7 @@
 namespace talus {
 namespace {
 
-constexpr double g = 9.81;
+constexpr double g_bed = 9.81;
 
 // A frictionless bed settled in a box of frictionless walls, floor at y = 0, with its stress.
 const std::string bed = std::string(testing::smooth_bed) + "[output]\nstress = true\n";
@@ -52,8 +52,8 @@ height = 0.1
   const Particles& p = sim.world().particles;
   const double m1 = p.mass[0], r1 = p.radius[0], m2 = p.mass[1], r2 = p.radius[1];
   const std::vector<Tensor2> each = particle_stresses(sim);
-  const double lower = (m1 + 2.0 * m2) * g / (std::numbers::pi * r1);
-  const double upper = m2 * g / (std::numbers::pi * r2);
+  const double lower = (m1 + 2.0 * m2) * g_bed / (std::numbers::pi * r1);
+  const double upper = m2 * g_bed / (std::numbers::pi * r2);
   EXPECT_NEAR(each[0](1, 1), lower, 1e-4 * lower);
   EXPECT_NEAR(each[1](1, 1), upper, 1e-4 * upper);
   for (const Tensor2& t : each) {
@@ -82,7 +82,7 @@ TEST(Stress, ASettledBedsStressIsItsWeightTimesItsHeight) {
   const Particles& p = sim.world().particles;
   double moment = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.is_free(i)) moment += p.mass[i] * g * p.position[i].y;
+    if (p.is_free(i)) moment += p.mass[i] * g_bed * p.position[i].y;
   // the floor's pushes act at the middle of their overlaps, a little above y = 0
   for (const ContactRecord& c : contact_forces(sim))
     if (c.j < 0) moment -= c.point.y * c.force.y;

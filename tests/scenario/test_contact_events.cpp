@@ -62,7 +62,7 @@ Impact wall_impact(const Scenario& s) {
 // good to (pi dt / t_c)^2 ~ 4e-5 at dt = t_c / 500, and the integrator's own error at that step
 // is of the same order; 5e-4 leaves room for that and still fails a duration rounded to whole
 // steps (an error up to dt / t_c = 2e-3).
-constexpr double tolerance = 5e-4;
+constexpr double duration_tolerance = 5e-4;
 
 TEST(ContactEvents, HertzImpactsLastAndPeakAsTheClosedFormsSay) {
   const double v = 0.1; // each disk's speed: the pair meets at 2 v, the falling disk hits at 2 v
@@ -81,13 +81,13 @@ TEST(ContactEvents, HertzImpactsLastAndPeakAsTheClosedFormsSay) {
     const double speed = 2.0 * v;
     const double t_c = hertz_collision_time(i.m_eff, rho, speed);
     const double xi_max = hertz_max_overlap(i.m_eff, rho, speed);
-    EXPECT_NEAR(e.duration() / t_c, 1.0, tolerance);
-    EXPECT_NEAR(e.peak_overlap / xi_max, 1.0, tolerance);
-    EXPECT_NEAR(e.peak_normal_force / (rho * std::pow(xi_max, 1.5)), 1.0, tolerance);
-    EXPECT_NEAR(e.impact_speed / speed, 1.0, tolerance);
-    EXPECT_NEAR(e.rebound_speed / speed, 1.0, tolerance);
+    EXPECT_NEAR(e.duration() / t_c, 1.0, duration_tolerance);
+    EXPECT_NEAR(e.peak_overlap / xi_max, 1.0, duration_tolerance);
+    EXPECT_NEAR(e.peak_normal_force / (rho * std::pow(xi_max, 1.5)), 1.0, duration_tolerance);
+    EXPECT_NEAR(e.impact_speed / speed, 1.0, duration_tolerance);
+    EXPECT_NEAR(e.rebound_speed / speed, 1.0, duration_tolerance);
     // each touches when its gap of 1 mm has closed at 2 v
-    EXPECT_NEAR(e.start / (0.001 / speed), 1.0, tolerance);
+    EXPECT_NEAR(e.start / (0.001 / speed), 1.0, duration_tolerance);
   }
 }
 
@@ -102,7 +102,7 @@ TEST(ContactEvents, DampedLinearImpactsLastAndReboundAsTheClosedFormsSay) {
     const Impact i = wall ? wall_impact(s) : pair_impact(s);
     const double k = i.p.normal_stiffness;
     const double eta = 2.0 * linear_damping_ratio(e_asked) * std::sqrt(k * i.m_eff);
-    EXPECT_NEAR(e.duration() / linear_collision_time(k, eta, i.m_eff), 1.0, tolerance);
+    EXPECT_NEAR(e.duration() / linear_collision_time(k, eta, i.m_eff), 1.0, duration_tolerance);
     // The dashpot's force starts at the touch, between two steps, at eta u: the integrator's
     // velocity after that step is off by up to half a step of it, (eta u / m_eff) (dt / 2),
     // or zeta omega dt = zeta pi / 500 = 1.6e-3 of u at e = 0.5 (zeta = 0.255, the

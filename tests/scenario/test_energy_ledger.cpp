@@ -60,7 +60,7 @@ double kinetic(const std::map<std::string, double>& r) {
 }
 
 // The two impacts of support/impacts_scenario.hpp, at t_c / 500, with Gear.
-Scenario impacts(const std::string& law, double restitution, double v) {
+Scenario ledger_impacts(const std::string& law, double restitution, double v) {
   return testing::two_impacts(law, restitution, v, "gear",
                               "energy_ledger = true\nthermo_interval = 0.001\n"
                               "snapshot_interval = 0");
@@ -71,7 +71,7 @@ Scenario impacts(const std::string& law, double restitution, double v) {
 // 1e-6 (docs/accuracy.md), so the energy by about 2e-6: 1e-5 leaves room and still fails a
 // ledger that missed a contact for a single step.
 TEST(EnergyLedger, ElasticHertzImpactsDissipateNothingAndBalance) {
-  const auto rows = run_rows(impacts("hertz", 1.0, 0.1), "ledger_elastic");
+  const auto rows = run_rows(ledger_impacts("hertz", 1.0, 0.1), "ledger_elastic");
   const auto &first = rows.front(), &last = rows.back();
   const double k0 = kinetic(first);
   EXPECT_EQ(first.at("energy_imbalance"), 0.0);
@@ -88,7 +88,7 @@ TEST(EnergyLedger, ElasticHertzImpactsDissipateNothingAndBalance) {
 // 2 zeta pi dt / t_c = 3.2e-3 of the impact's energy (zeta = 0.255 at e = 0.5): 7e-3 for both.
 TEST(EnergyLedger, DampedLinearImpactsDissipateWhatTheRestitutionSays) {
   const double e = 0.5;
-  const auto rows = run_rows(impacts("linear", e, 0.1), "ledger_damped");
+  const auto rows = run_rows(ledger_impacts("linear", e, 0.1), "ledger_damped");
   const auto &first = rows.front(), &last = rows.back();
   const double k0 = kinetic(first);
   EXPECT_NEAR(last.at("dissipated_damper") / k0, 1.0 - e * e, 7e-3);

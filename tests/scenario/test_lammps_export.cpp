@@ -17,9 +17,9 @@ namespace {
 using testing::builtin;
 
 // A small silo of the shaken-silo experiment: particle walls vibrated, grains on a lattice.
-const std::vector<std::string> small_silo{"simulation.tangential_law=coulomb",
-                                          "materials[0].tangential_damping=5000",
-                                          "packing.method=lattice", "particles.count=60"};
+const std::vector<std::string> small_shaken_silo{"simulation.tangential_law=coulomb",
+                                                 "materials[0].tangential_damping=5000",
+                                                 "packing.method=lattice", "particles.count=60"};
 
 LammpsCase exported(const std::string& name, std::vector<std::string> set) {
   const Scenario s = builtin(name, set);
@@ -43,7 +43,7 @@ std::string refusal(const std::string& name, const std::vector<std::string>& set
 }
 
 TEST(LammpsExport, DeckHasTheLawsMaterialsGroupsAndDriver) {
-  const LammpsCase c = exported("silo_shake", small_silo);
+  const LammpsCase c = exported("silo_shake", small_shaken_silo);
   EXPECT_EQ(c.name, "silo_shake");
   EXPECT_TRUE(has_line(c.deck, "pair_style granthesis linear coulomb")) << c.deck;
   EXPECT_TRUE(has_line(c.deck, "group grains type 1")) << c.deck;
@@ -57,7 +57,7 @@ TEST(LammpsExport, DeckHasTheLawsMaterialsGroupsAndDriver) {
 }
 
 TEST(LammpsExport, DataFileHoldsTheBuiltParticlesExactly) {
-  const Scenario s = builtin("silo_shake", small_silo);
+  const Scenario s = builtin("silo_shake", small_shaken_silo);
   const BuiltScenario b = build_scenario(s);
   const LammpsCase c = export_lammps(s, b, "test");
   const Particles& p = b.world.particles;
@@ -83,7 +83,7 @@ TEST(LammpsExport, DataFileHoldsTheBuiltParticlesExactly) {
 }
 
 TEST(LammpsExport, PhaseRotationAndTranslationBecomeFixMove) {
-  std::vector<std::string> phased = small_silo;
+  std::vector<std::string> phased = small_shaken_silo;
   phased.push_back("drivers[0].phase=0.5");
   const LammpsCase v = exported("silo_shake", phased);
   EXPECT_NE(v.deck.find("fix drive1 drive1 move variable v_drive1_dx v_drive1_dy NULL"),

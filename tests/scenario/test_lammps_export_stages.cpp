@@ -17,7 +17,7 @@ namespace {
 
 // 64 frictional disks on a lattice in a box periodic in x and y, no gravity: a cell that
 // shrinks along y, then shears at a constant volume.
-const char* head = R"(
+const char* stages_head = R"(
 name = "cell_stages"
 [simulation]
 duration = 1.0
@@ -46,7 +46,7 @@ box = [0.0, 0.0, 0.1, 0.12]
 type = "cell"
 )";
 
-const std::string compress_then_shear = std::string(head) + R"(strain_rate = [0.0, -0.5]
+const std::string compress_then_shear = std::string(stages_head) + R"(strain_rate = [0.0, -0.5]
 [[stages]]
 name = "compress"
 duration = 0.25
@@ -91,19 +91,19 @@ TEST(LammpsExportStages, ACellInStagesIsOneRunPerStage) {
 
 // A cell sheared from the start: the tilt grows at the shear rate with the images' velocity.
 TEST(LammpsExportStages, AShearedCellIsATiltedBox) {
-  const LammpsCase c = exported(std::string(head) + "shear_rate = 1.5\n");
+  const LammpsCase c = exported(std::string(stages_head) + "shear_rate = 1.5\n");
   EXPECT_NE(c.deck.find("fix cell all deform 1 xy erate 1.5 remap v\nrun ${steps}\n"),
             std::string::npos)
       << c.deck;
   EXPECT_NE(c.data.find("0 0 0 xy xz yz\n"), std::string::npos);
   // without a shear in any stage the box stays orthogonal, as LAMMPS' own examples write it
-  const LammpsCase plain = exported(std::string(head) + "strain_rate = [0.0, -0.5]\n");
+  const LammpsCase plain = exported(std::string(stages_head) + "strain_rate = [0.0, -0.5]\n");
   EXPECT_EQ(plain.data.find("xy xz yz"), std::string::npos);
 }
 
 TEST(LammpsExportStages, RefusesWhatOneFixDeformPerStageCannotSay) {
   // a cell that strains and shears at once, from the start or in a stage
-  EXPECT_NE(refusal(std::string(head) + "strain_rate = [0.0, -0.5]\nshear_rate = 1.0\n")
+  EXPECT_NE(refusal(std::string(stages_head) + "strain_rate = [0.0, -0.5]\nshear_rate = 1.0\n")
                 .find("key 'drivers': a cell that strains and shears at once"),
             std::string::npos);
   std::string both = compress_then_shear;
@@ -123,7 +123,7 @@ TEST(LammpsExportStages, RefusesWhatOneFixDeformPerStageCannotSay) {
   until.insert(until.find("duration = 0.25"), "until = \"kinetic_below\"\nkinetic = 1.0\n");
   EXPECT_NE(refusal(until).find("key 'stages.0.until'"), std::string::npos) << refusal(until);
   // a cell held at a pressure has no counterpart with the same controller
-  EXPECT_NE(refusal(std::string(head) + "pressure = 100.0\nshear_rate = 1.0\n")
+  EXPECT_NE(refusal(std::string(stages_head) + "pressure = 100.0\nshear_rate = 1.0\n")
                 .find("a cell held at a pressure"),
             std::string::npos);
   EXPECT_EQ(refusal(compress_then_shear), "(not refused)");
