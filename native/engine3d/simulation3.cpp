@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include "core/capacity_bytes.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -211,6 +212,20 @@ Energies3 Simulation3::energies() const {
   }
   e.elastic = contact_elastic_energy(scene_, list_, table_, settings_);
   return e;
+}
+
+std::size_t Simulation3::footprint_bytes() const {
+  const Spheres& s = scene_.spheres;
+  const SphereList& l = list_;
+  std::size_t b = 0;
+  const auto add = [&b](const auto&... v) { ((b += capacity_bytes(v)), ...); };
+  add(s.position, s.velocity, s.force, s.angular_velocity, s.torque, s.radius, s.mass, s.inertia,
+      s.inv_mass, s.inv_inertia, s.material, s.kind, s.id, s.image, s.force_previous,
+      s.torque_previous);
+  add(l.row_offset, l.neighbour, l.shift, l.spring, l.second_offset, l.second_entry, l.plate_offset,
+      l.plate, l.plate_spring, l.rolling, l.plate_rolling, l.reference, l.plate_reference);
+  add(gear_.r2, gear_.r3, gear_.r4, gear_.w2, gear_.w3, gear_.w4);
+  return b + force_pass_.bytes();
 }
 
 } // namespace talus

@@ -69,6 +69,9 @@ public:
   /// The threads it runs on: those asked (all cores for 0), but at most one per 500 spheres.
   int threads() const { return threads_; }
   Energies3 energies() const;
+  /// Bytes the engine holds for the run: the spheres' fields, the list with its springs, the
+  /// force pass' buffers and Gear's derivatives (capacities, not sizes).
+  std::size_t footprint_bytes() const;
 
 private:
   Simulation3(SimulationState3 state, Settings3 settings, bool restored);
