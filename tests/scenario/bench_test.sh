@@ -75,4 +75,25 @@ for case in "pressure" "strain rate 0" "no cell"; do
   grep -q "^| $case | " "$dir/cell.txt" || { echo "no row for $case"; exit 1; }
 done
 [ "$(grep -c ',cell_\(pressure\|rate\|none\),' "$csv")" -eq 3 ] || { echo "expected three cell rows"; exit 1; }
+# bench chute: the 3D system flows and is cached, is timed, and LAMMPS (where lmp is installed)
+# reads the same state from the data file and times it; too few spheres are refused
+chute() { "$talus" bench chute --cache "$dir/cache" --results "$dir/results" "$@"; }
+lammps=()
+command -v lmp > /dev/null && lammps=(--lammps)
+chute --n 1000 --flow-steps 50 --steps 10 "${lammps[@]}" > "$dir/chute.txt" ||
+  { cat "$dir/chute.txt"; exit 1; }
+cat "$dir/chute.txt"
+grep -q "letting the layer flow for 50 steps" "$dir/chute.txt" || exit 1
+grep -q "1280 spheres (8 x 4 frozen base, 39 layers above)" "$dir/chute.txt" || exit 1
+[ -s "$dir/cache/chute/chute_1000_50steps.ckpt3" ] || { echo "no cached flowing layer"; exit 1; }
+grep -q ',chute,1280,10,' "$csv" || { echo "no chute row"; cat "$csv"; exit 1; }
+if [ ${#lammps[@]} -gt 0 ]; then
+  grep -q "LAMMPS gran/hooke/history: .* ns per particle-step on 1 rank" "$dir/chute.txt" ||
+    { cat "$dir/cache/chute/bench.out"; exit 1; }
+  grep -q "Loop time of .* for 10 steps with 1280 atoms" "$dir/cache/chute/bench.log" || exit 1
+fi
+chute --n 1000 --flow-steps 50 --steps 10 > "$dir/chute2.txt" || { cat "$dir/chute2.txt"; exit 1; }
+grep -q "flowing layer from" "$dir/chute2.txt" || { echo "the layer flowed again"; exit 1; }
+chute --n 500 2> "$dir/err.txt" && { echo "500 spheres were accepted"; exit 1; }
+grep -q "1000" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 exit 0

@@ -139,11 +139,7 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const L
   std::replace(name.begin(), name.end(), '/', '-');
   std::string law;
   if (!how.pair.empty()) law = fmt::format("-var pair '{}' -var coeff '{}'", how.pair, how.coeff);
-  const std::string mpi =
-      how.ranks > 1 ? fmt::format("env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-                                  "mpirun --oversubscribe -np {} ",
-                                  how.ranks)
-                    : std::string();
+  const std::string mpi = mpirun_prefix(how.ranks);
   if (std::system(fmt::format("cd '{}' && OMP_NUM_THREADS=1 {}{} -in lammps-bench.in {} {} -var "
                               "nsteps {} -log bench-{}.log > bench-{}.out 2>&1",
                               dir.string(), mpi, how.program, vars, law, o.steps, name, name)
@@ -151,19 +147,7 @@ double run_lammps(const BenchOptions& o, std::size_t nx, std::size_t ny, const L
     fmt::print("lammps ({}): the run failed; see {}/bench-{}.out\n", how.label, dir.string(), name);
     return 0.0;
   }
-  // "Loop time of 12.3 on 1 procs for 2000 steps with 10000 atoms"
-  const std::string log = read_file((dir / fmt::format("bench-{}.log", name)).string());
-  const auto at = log.find("Loop time of ");
-  double seconds = 0.0, steps = 0.0, atoms = 0.0;
-  int procs = 0;
-  if (at == std::string::npos ||
-      std::sscanf(log.c_str() + at, "Loop time of %lf on %d procs for %lf steps with %lf atoms",
-                  &seconds, &procs, &steps, &atoms) != 4 ||
-      steps <= 0 || atoms <= 0) {
-    fmt::print("lammps: no 'Loop time' in {}/bench-{}.log\n", dir.string(), name);
-    return 0.0;
-  }
-  return seconds / (steps * atoms);
+  return lammps_seconds_per_particle_step((dir / fmt::format("bench-{}.log", name)).string());
 }
 
 // talus and LAMMPS in turns, round after round: a slow minute of the host falls on both. The
@@ -393,6 +377,7 @@ void add_bench_command(CLI::App& app) {
   add_bench_threads_command(*bench);
   add_bench_laws_command(*bench);
   add_bench_cell_command(*bench);
+  add_bench_chute_command(*bench);
 
   auto threads = std::make_shared<int>(1);
   CLI::App* thesis = bench->add_subcommand(

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -152,6 +153,28 @@ void time_in_turns(std::vector<TimedRun>& runs, int rounds) {
     fmt::print(" ns per particle-step\n");
     std::fflush(stdout);
   }
+}
+
+std::string mpirun_prefix(int ranks) {
+  if (ranks <= 1) return {};
+  return fmt::format("env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun "
+                     "--oversubscribe -np {} ",
+                     ranks);
+}
+
+double lammps_seconds_per_particle_step(const std::string& log_file) {
+  const std::string log = read_file(log_file);
+  const auto at = log.find("Loop time of ");
+  double seconds = 0.0, steps = 0.0, atoms = 0.0;
+  int procs = 0;
+  if (at == std::string::npos ||
+      std::sscanf(log.c_str() + at, "Loop time of %lf on %d procs for %lf steps with %lf atoms",
+                  &seconds, &procs, &steps, &atoms) != 4 ||
+      steps <= 0 || atoms <= 0) {
+    fmt::print("lammps: no 'Loop time' in {}\n", log_file);
+    return 0.0;
+  }
+  return seconds / (steps * atoms);
 }
 
 double median(std::vector<double> v) {

@@ -73,6 +73,14 @@ struct TimedRun {
 /// minute to minute this slows every run alike, where separate invocations would not.
 void time_in_turns(std::vector<TimedRun>& runs, int rounds);
 
+/// The command prefix that runs a program on `ranks` MPI ranks as root (Open MPI's consent
+/// variables, --oversubscribe); empty for one rank.
+std::string mpirun_prefix(int ranks);
+
+/// Seconds per particle-step from the "Loop time of T on P procs for S steps with N atoms" line
+/// of a LAMMPS log; 0 (and a line saying so) where the file has none.
+double lammps_seconds_per_particle_step(const std::string& log_file);
+
 /// The median of v (not empty).
 double median(std::vector<double> v);
 
@@ -82,6 +90,8 @@ void add_shared_bench_options(
     CLI::App& cmd, BenchSystem& s, std::string& results,
     const std::string& skin_help = "neighbour-list skin, m (0: automatic)");
 
+/// `talus bench chute` (cli/bench/bench_chute.cpp): LAMMPS' chute benchmark system in 3D.
+void add_bench_chute_command(CLI::App& bench);
 /// `talus bench linear` (cli/bench_linear.cpp) and `talus bench threads` (cli/bench_threads.cpp),
 /// under the `bench` command.
 void add_bench_linear_command(CLI::App& bench);
