@@ -16,8 +16,9 @@ namespace {
 // then on_plate(e, plate, geometry, parameters, spring) for its touching plates; the spring of
 // an entry no longer touching is cleared (and `apart(e, is_plate)` told).
 template <class S, class L, class Pair, class OnPlate, class Apart>
-void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table, LeverShares shares,
-                 Pair&& on_pair, OnPlate&& on_plate, Apart&& apart) {
+[[gnu::flatten]] void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table,
+                                  LeverShares shares, Pair&& on_pair, OnPlate&& on_plate,
+                                  Apart&& apart) {
   const Spheres& s = scene.spheres;
   for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
     const std::uint32_t j = list.neighbour[e];
