@@ -88,9 +88,19 @@ std::string csv_cell(const std::string& text) {
   return out + "\"";
 }
 
+namespace {
+// Whether Debian's python3 has matplotlib, asked once per process: each asking starts Python,
+// which costs a good part of what drawing a chart does.
+bool matplotlib_available() {
+  static const bool available =
+      std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0;
+  return available;
+}
+} // namespace
+
 bool plot(const fs::path& out, const std::string& kind, const fs::path& csv, const fs::path& png,
           const fs::path& json) {
-  if (std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") != 0) {
+  if (!matplotlib_available()) {
     fmt::print("  (no chart: python3-matplotlib is not installed)\n");
     return false;
   }
