@@ -42,20 +42,7 @@ std::string data_file(const Scenario3& s, const Scene3& scene) {
   out += fmt::format("{} atoms\n2 atom types\n\n", p.size());
   out += box_lines(s) + "\n";
   // read_data makes the mass 4/3 pi r^3 rho; masses.NAME then sets the native masses exactly
-  out += "Atoms # sphere\n\n";
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = p.radius[i];
-    const double density = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * r * r * r);
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, sphere_type, exact(2.0 * r), exact(density),
-                       exact(p.position[i].x), exact(p.position[i].y), exact(p.position[i].z));
-  }
-  out += "\nVelocities\n\n";
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3 v = p.velocity[i], w = p.angular_velocity[i];
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, exact(v.x), exact(v.y), exact(v.z),
-                       exact(w.x), exact(w.y), exact(w.z));
-  }
-  return out;
+  return out + sphere_data_sections(p, [](std::size_t) { return sphere_type; });
 }
 
 std::string masses_file(const Scene3& scene) {
@@ -161,6 +148,23 @@ std::string deck(const Scenario3& s, const BuiltScenario3& b, const std::string&
 }
 
 } // namespace
+
+std::string sphere_data_sections(const Spheres& p, const std::function<int(std::size_t)>& type_of) {
+  std::string out = "Atoms # sphere\n\n";
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = p.radius[i];
+    const double density = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * r * r * r);
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, type_of(i), exact(2.0 * r), exact(density),
+                       exact(p.position[i].x), exact(p.position[i].y), exact(p.position[i].z));
+  }
+  out += "\nVelocities\n\n";
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 v = p.velocity[i], w = p.angular_velocity[i];
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, exact(v.x), exact(v.y), exact(v.z),
+                       exact(w.x), exact(w.y), exact(w.z));
+  }
+  return out;
+}
 
 void check_lammps_export(const Scenario3& s) {
   const std::string why = [&]() -> std::string {

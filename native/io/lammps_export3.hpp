@@ -3,6 +3,7 @@
 // spheres where the builder puts them in a data file, their exact masses, and a deck with
 // pair_style granthesis in 3D, the box's plates as fix granthesis/wall planes, gravity and
 // fix nve/sphere. What LAMMPS and the package do not express exactly is refused with the reason.
+#include <functional>
 #include <string>
 
 #include "io/lammps_export.hpp"
@@ -10,6 +11,11 @@
 #include "scenario/scenario3.hpp"
 
 namespace talus {
+
+/// The Atoms (atom_style sphere: id type diameter density x y z, ids from 1) and Velocities
+/// sections of a LAMMPS data file for the spheres, each of type type_of(i), its density the one
+/// that makes read_data's 4/3 pi r^3 rho its mass.
+std::string sphere_data_sections(const Spheres& p, const std::function<int(std::size_t)>& type_of);
 
 /// Throws InvalidArgument, naming the key and what LAMMPS lacks (lever arms other than at the
 /// contact point, a linear dashpot other than never_attractive, rigid materials).

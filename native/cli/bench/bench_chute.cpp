@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include "engine3d/simulation3.hpp"
 #include "io/checkpoint.hpp"
 #include "io/checkpoint3.hpp"
+#include "io/lammps_export3.hpp"
 #include "io/lammps_words.hpp"
 #include "scenario/chute_bench.hpp"
 
@@ -43,22 +43,9 @@ std::string chute_data(const ChuteBench& c, const Scene3& scene) {
   std::string out = fmt::format("LAMMPS data file: talus bench chute, {} spheres on a {} x {} "
                                 "base\n\n{} atoms\n2 atom types\n\n",
                                 p.size(), c.nx, c.ny, p.size());
-  out += fmt::format("0 {} xlo xhi\n0 {} ylo yhi\n{} {} zlo zhi\n\nAtoms # sphere\n\n",
-                     exact(d.hi.x), exact(d.hi.y), exact(d.lo.z), exact(d.hi.z));
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = p.radius[i];
-    const double density = p.mass[i] / (4.0 / 3.0 * std::numbers::pi * r * r * r);
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, p.is_free(i) ? 1 : 2, exact(2.0 * r),
-                       exact(density), exact(p.position[i].x), exact(p.position[i].y),
-                       exact(p.position[i].z));
-  }
-  out += "\nVelocities\n\n";
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3 v = p.velocity[i], w = p.angular_velocity[i];
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, exact(v.x), exact(v.y), exact(v.z),
-                       exact(w.x), exact(w.y), exact(w.z));
-  }
-  return out;
+  out += fmt::format("0 {} xlo xhi\n0 {} ylo yhi\n{} {} zlo zhi\n\n", exact(d.hi.x), exact(d.hi.y),
+                     exact(d.lo.z), exact(d.hi.z));
+  return out + sphere_data_sections(p, [&p](std::size_t i) { return p.is_free(i) ? 1 : 2; });
 }
 
 // LAMMPS on the data file, o.steps steps on `ranks` MPI ranks: seconds per particle-step, 0 if it
