@@ -279,28 +279,31 @@ Checkpoint decode_checkpoint(const std::string& bytes, const std::string& source
 void write_file_atomically(const std::string& path, const std::string& bytes) {
   const std::string tmp = path + ".tmp";
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) throw WriteError("cannot write " + path + ": " + std::strerror(errno));
+  if (fd < 0) {
+    const int error = errno;
+    throw WriteError("cannot write " + path + ": " + std::strerror(error), error);
+  }
   std::size_t done = 0;
   while (done < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const std::string why = std::strerror(errno);
+      const int error = errno;
       ::close(fd);
       ::unlink(tmp.c_str());
-      throw WriteError("cannot write " + path + ": " + why);
+      throw WriteError("cannot write " + path + ": " + std::strerror(error), error);
     }
     done += static_cast<std::size_t>(n);
   }
   if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string why = std::strerror(errno);
+    const int error = errno;
     ::unlink(tmp.c_str());
-    throw WriteError("cannot write " + path + ": " + why);
+    throw WriteError("cannot write " + path + ": " + std::strerror(error), error);
   }
   if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
+    const int error = errno;
     ::unlink(tmp.c_str());
-    throw WriteError("cannot write " + path + ": " + why);
+    throw WriteError("cannot write " + path + ": " + std::strerror(error), error);
   }
 }
 

@@ -9,10 +9,16 @@
 
 namespace talus {
 
-/// A file could not be written (a full disk, a file size limit, no permission).
+/// A file could not be written (a full disk, a file size limit, no permission). `error` is the
+/// system's errno for it where one is known, 0 otherwise.
 class WriteError : public std::runtime_error {
 public:
-  using std::runtime_error::runtime_error;
+  explicit WriteError(const std::string& what, int error = 0)
+      : std::runtime_error(what), error_(error) {}
+  [[nodiscard]] int error() const { return error_; }
+
+private:
+  int error_;
 };
 
 /// A checkpoint that cannot be used: missing, truncated, corrupted or of another version.

@@ -1,7 +1,9 @@
 #include "run/run.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <thread>
 
 #include <fmt/core.h>
 
@@ -295,6 +297,7 @@ void Run::checkpoint_at(double wall) {
 // checkpoint holds, so the folder reads as the run stopped there and resume continues it.
 void Run::stop_on_write_failure(const WriteError& e) {
   files_.close();
+  if (e.error() == ENOENT) stop_on_deleted_file(e);
   check_folder(); // a folder deleted under the run is the true cause, and nothing is cut back
   const fs::path& dir = files_.dir();
   if (!checkpointed_) // nothing to continue from: the command that starts it again
@@ -314,6 +317,20 @@ void Run::stop_on_write_failure(const WriteError& e) {
                            "; the outputs are cut back to the last checkpoint, which is kept; "
                            "make room, then: talus resume " +
                            dir.string());
+}
+
+// A file the run had just written, or the folder it goes in, vanished: something is deleting
+// the run folder, and may not yet have reached the lock by which the folder is known. Room is not
+// the cause and cutting back would write into the folder, so the run waits a moment for the
+// deletion to show, then stops, writing nothing more.
+void Run::stop_on_deleted_file(const WriteError& e) {
+  for (int tries = 0; tries < 200; ++tries) {
+    check_folder();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  throw FolderGone(fmt::format("files of the run folder '{}' were deleted under the running run "
+                               "({}) at t = {:.6g} s; the run stops and writes nothing more",
+                               files_.dir().string(), e.what(), sim_.time()));
 }
 
 void Run::write_run_json(double wall, std::uint64_t steps_done, const std::string& ended) {

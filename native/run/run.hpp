@@ -114,6 +114,7 @@ private:
   [[noreturn]] void out_of_memory() const;
   void check_folder() const; ///< throws FolderGone when RunControl::folder_gone says why
   [[noreturn]] void stop_on_write_failure(const WriteError& e);
+  [[noreturn]] void stop_on_deleted_file(const WriteError& e);
   void write_run_json(double wall, std::uint64_t steps_done, const std::string& ended);
   double wall_now() const;
 

@@ -35,7 +35,7 @@ std::string failure_reason(const fs::path& file, int error) {
 
 [[noreturn]] void cannot_write(const fs::path& file) {
   const int error = errno;
-  throw WriteError("cannot write " + file.string() + ": " + failure_reason(file, error));
+  throw WriteError("cannot write " + file.string() + ": " + failure_reason(file, error), error);
 }
 
 } // namespace

@@ -124,6 +124,7 @@ status=$?
 [ "$status" -eq 1 ] || fail "a run whose folder was replaced exited $status: $(cat "$dir/del.txt")"
 grep -q "'$dir/del' was replaced under the running run.*writes nothing more" "$dir/del.txt" ||
   grep -q "'$dir/del' was deleted under the running run.*writes nothing more" "$dir/del.txt" ||
+  grep -q "'$dir/del' were deleted under the running run.*writes nothing more" "$dir/del.txt" ||
   fail "a run whose folder was replaced said: $(cat "$dir/del.txt")"
 [ -z "$(ls "$dir/del/snapshots")" ] || fail "the replaced run wrote into the new run's folder"
 kill -KILL "$other"
@@ -138,6 +139,18 @@ status=$?
 grep -q "'$dir/gone' was deleted under the running run" "$dir/gone.txt" ||
   fail "a run whose folder was deleted said: $(cat "$dir/gone.txt")"
 [ -e "$dir/gone" ] && fail "a run whose folder was deleted made it again"
+# a folder whose files are deleted (rm -rf caught halfway, before it reaches the lock) gives the
+# same diagnosis, not a full disk's
+"$talus" run "${long[@]}" --out "$dir/half" 2> "$dir/half.txt" &
+pid=$!
+wait_for "$dir/half/snapshots/particles_000002.vtp"
+until rm -rf "$dir/half/snapshots" 2> /dev/null; do :; done
+wait "$pid"
+status=$?
+[ "$status" -eq 1 ] || fail "a run whose snapshots were deleted exited $status: $(cat "$dir/half.txt")"
+grep -q "files of the run folder '$dir/half' were deleted under the running run.*No such file" \
+  "$dir/half.txt" || fail "a run whose snapshots were deleted said: $(cat "$dir/half.txt")"
+[ -e "$dir/half/snapshots" ] && fail "a run whose snapshots were deleted wrote them again"
 echo "ok: a run whose folder is deleted or replaced stops, writing nothing there"
 
 # a failed checkpoint write can leave only checkpoint.prev.bin: talus checkpoint reads what
