@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Cross-check in 3D: the same spheres in the native 3D engine and in LAMMPS, sphere by sphere.
 
-    /usr/bin/python3 validation/crosscheck3d.py [--quick] [--mutation] [--build build] [--out DIR]
+    /usr/bin/python3 validation/crosscheck3d.py [--case settling3d] [--quick] [--mutation]
+        [--build build] [--out DIR]
 
-The case is inputs/validation/settling3d: spheres on a lattice in a box of plates fall and settle
-(scenario.toml), with its bounds and their reasons in tolerances.toml. It runs in
+The case is a folder of inputs/validation: settling3d (the default), spheres on a lattice in a
+box of plates fall and settle, or shaken3d, spheres fall onto a vibrating floor while one side
+closes in and another turns (scenario.toml), with its bounds and their reasons in
+tolerances.toml. It runs in
 
 - the native 3D engine (`talus run`, velocity Verlet with LAMMPS' damper velocity), whose
   snapshots hold every sphere's state as the shortest text that reads back to the same double;
@@ -15,7 +18,8 @@ The case is inputs/validation/settling3d: spheres on a lattice in a box of plate
 At every common time the largest difference of a position, in mean radii, between native and
 LAMMPS on 1 rank and between 1 and 2 ranks must stay within the case's rounding bound up to its
 time; the last snapshot's kinetic energy, coordination and bed height are printed side by side.
---quick runs the first part of the fall with fewer spheres (the default test suite's);
+--quick runs the case with the changes its tolerances.toml lists under [quick] (settling3d: the
+first part of the fall with fewer spheres), the default test suite's;
 --mutation also runs LAMMPS from a deck with the friction changed in the fourth digit, which
 must fail the comparison (a rule that can fail). Exit status 1 if a comparison fails.
 """
@@ -32,12 +36,8 @@ import numpy as np
 from run_folder import data_array, dump_blocks
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CASE = os.path.join(ROOT, "inputs", "validation", "settling3d")
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMP_NUM_THREADS="1")
-# --quick: a quarter of the spheres, the fall and the first impacts of the lowest layers
-QUICK = ["particles.count=500", "simulation.duration=0.045",
-         "geometry.box=[0, 0, 0, 0.02, 0.02, 0.1]"]
 
 
 def run(command, cwd=None):
@@ -128,19 +128,22 @@ def summary_line(name, state, radii):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--case", default="settling3d", choices=["settling3d", "shaken3d"])
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--mutation", action="store_true")
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
-    parser.add_argument("--out", default=os.path.join(ROOT, "validation", "results", "crosscheck3d"))
+    parser.add_argument("--out", help="default: validation/results/crosscheck3d/CASE")
     args = parser.parse_args()
+    case = os.path.join(ROOT, "inputs", "validation", args.case)
+    args.out = args.out or os.path.join(ROOT, "validation", "results", "crosscheck3d", args.case)
     if shutil.which("mpirun") is None:
         print("mpirun is not installed: skipping")
         sys.exit(77)
-    with open(os.path.join(CASE, "tolerances.toml"), "rb") as f:
+    with open(os.path.join(case, "tolerances.toml"), "rb") as f:
         bounds = tomllib.load(f)["quick" if args.quick else "full"]
     talus = os.path.join(args.build, "native", "talus")
-    scenario = os.path.join(CASE, "scenario.toml")
-    sets = sum([["--set", s] for s in QUICK], []) if args.quick else []
+    scenario = os.path.join(case, "scenario.toml")
+    sets = sum([["--set", s] for s in bounds.get("set", [])], [])
     os.makedirs(args.out, exist_ok=True)
     native_dir, deck_dir = os.path.join(args.out, "native"), os.path.join(args.out, "deck")
     shutil.rmtree(native_dir, ignore_errors=True)
@@ -153,7 +156,7 @@ def main():
     radius = float(np.mean(radii))
     dt, one = lammps(args.build, deck_dir, os.path.join(args.out, "lammps-1"), 1)
     _, two = lammps(args.build, deck_dir, os.path.join(args.out, "lammps-2"), 2)
-    print(f"settling3d{' (quick)' if args.quick else ''}: {len(radii)} spheres, dt = {dt:.6g} s, "
+    print(f"{args.case}{' (quick)' if args.quick else ''}: {len(radii)} spheres, dt = {dt:.6g} s, "
           f"{len(native)} snapshots")
     results = [
         compare("native (half step) against LAMMPS granthesis, 1 rank", native, one, dt, radius,

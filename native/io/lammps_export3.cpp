@@ -72,6 +72,24 @@ std::string deck_header(const Scenario3& s, const BuiltScenario3& b, const std::
   return out;
 }
 
+// A driven plate's motion as fix granthesis/wall takes it in 3d, which moves the plate by the
+// native lines (talus/plate.hpp) with the time from the fix's definition, the run's start.
+std::string motion_words(const PlateDriver& d) {
+  const auto v = [](const Vec3& a) {
+    return fmt::format("{} {} {}", exact(a.x), exact(a.y), exact(a.z));
+  };
+  switch (d.motion) {
+  case PlateDriver::Motion::vibrate:
+    return fmt::format(" vibrate {} {} {} {}", v(d.direction), exact(d.amplitude),
+                       exact(d.frequency), exact(d.phase));
+  case PlateDriver::Motion::rotate:
+    return fmt::format(" rotate {} {}", v(d.pivot), v(d.angular_velocity));
+  case PlateDriver::Motion::translate:
+    break;
+  }
+  return " velocity " + v(d.velocity);
+}
+
 std::string laws_and_walls(const Scenario3& s, const BuiltScenario3& b) {
   const Simulation3Section& sim = s.simulation;
   const bool impact =
@@ -92,10 +110,14 @@ std::string laws_and_walls(const Scenario3& s, const BuiltScenario3& b) {
                        exact(g.x / size), exact(g.y / size), exact(g.z / size));
   if (b.scene.plates.empty()) return out;
   out += "fix walls grains granthesis/wall";
-  for (const Plane& p : b.scene.plates)
+  for (std::uint32_t w = 0; w < b.scene.plates.size(); ++w) {
+    const Plane& p = b.scene.plates[w];
     out += fmt::format(" &\n  plane {} {} {} {} {} {} type {}", exact(p.centre.x),
                        exact(p.centre.y), exact(p.centre.z), exact(p.normal.x), exact(p.normal.y),
                        exact(p.normal.z), plate_type);
+    for (const PlateDriver& d : b.scene.drivers)
+      if (d.plate == w) out += motion_words(d);
+  }
   return out + "\nfix_modify walls energy yes\n";
 }
 

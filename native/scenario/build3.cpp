@@ -6,6 +6,7 @@
 
 #include "core/random.hpp"
 #include "materials/pair_table.hpp"
+#include "scenario/box3.hpp"
 #include "scenario/file/load3.hpp"
 #include "scenario/size_distribution.hpp"
 
@@ -39,16 +40,28 @@ std::vector<Vec3> lattice_sites(const Scenario3& s, double a, RandomStream& rng)
   return sites;
 }
 
-std::vector<Plane> box_sides(const Box3Section& g, std::uint16_t material) {
+std::vector<Plane> box_plates(const Box3Section& g, std::uint16_t material) {
   std::vector<Plane> out;
-  for (int k = 0; k < 3; ++k) {
-    if (g.periodic[static_cast<std::size_t>(k)]) continue;
-    Vec3 normal{};
-    component(normal, k) = 1.0;
-    out.push_back(make_plane(g.lo, normal, unbounded, unbounded, material));
-    if (k == 2 && g.open_top) continue;
-    out.push_back(make_plane(g.hi, -normal, unbounded, unbounded, material));
-  }
+  for (const BoxSide& side : box3_sides(g))
+    out.push_back(make_plane(side.point, side.normal, unbounded, unbounded, material));
+  return out;
+}
+
+// One engine driver a plate of each [[drivers]] target; the loader has checked that the
+// targets exist and share no plate.
+std::vector<PlateDriver> plate_drivers(const Scenario3& s) {
+  std::vector<PlateDriver> out;
+  for (const Driver3Section& d : s.drivers)
+    for (const std::uint32_t plate : box3_target(s.geometry, d.target))
+      out.push_back({.plate = plate,
+                     .motion = d.motion,
+                     .velocity = d.velocity,
+                     .direction = d.direction,
+                     .amplitude = d.amplitude,
+                     .frequency = d.frequency,
+                     .phase = d.phase,
+                     .pivot = d.centre,
+                     .angular_velocity = d.angular_velocity});
   return out;
 }
 
@@ -78,7 +91,8 @@ BuiltScenario3 build_scenario3(const Scenario3& s) {
   scene.domain = {.lo = s.geometry.lo, .hi = s.geometry.hi, .periodic = s.geometry.periodic};
   const std::uint16_t grain = material_index(s, s.particles.material, "particles.material");
   const std::uint16_t wall = material_index(s, s.geometry.wall_material, "geometry.wall_material");
-  scene.plates = box_sides(s.geometry, wall);
+  scene.plates = box_plates(s.geometry, wall);
+  scene.drivers = plate_drivers(s);
   RandomStream sizes(s.simulation.seed, 1), places(s.simulation.seed, 2);
   const auto [r_min, r_max] = radius_range(s.particles.size);
   const std::vector<Vec3> sites = lattice_sites(s, 2.2 * r_max, places);

@@ -13,6 +13,7 @@
 #include "materials/material.hpp"
 #include "scenario/scenario.hpp"
 #include "talus/law_table.hpp"
+#include "talus/plate.hpp"
 #include "talus/timestep_advice.hpp"
 
 namespace talus {
@@ -50,6 +51,20 @@ struct Box3Section {
   std::string wall_material;
 };
 
+/// A [[drivers]] entry: a prescribed motion of a group of the box's plates, each plate from
+/// where it stands at the run's start (talus/plate.hpp moves it).
+struct Driver3Section {
+  PlateDriver::Motion motion = PlateDriver::Motion::translate;
+  std::string target = "walls";  ///< "walls" (every plate) or one side: box3_sides() names them
+  double amplitude = 0.0;        ///< vibrate: m
+  double frequency = 0.0;        ///< vibrate: Hz
+  double phase = 0.0;            ///< vibrate: rad
+  Vec3 direction{0.0, 0.0, 1.0}; ///< vibrate: along it
+  Vec3 velocity{};               ///< translate: m/s
+  Vec3 centre{};                 ///< rotate: a point of the axis, m
+  Vec3 angular_velocity{};       ///< rotate: rad/s, along the axis
+};
+
 struct Output3Section {
   double thermo_interval = 0.01;    ///< s
   double snapshot_interval = 0.1;   ///< s; 0: none
@@ -63,6 +78,7 @@ struct Scenario3 {
   std::vector<Material> materials;
   Particles3Section particles;
   Box3Section geometry;
+  std::vector<Driver3Section> drivers;
   Output3Section output;
 };
 

@@ -69,7 +69,8 @@ INSTANTIATE_TEST_SUITE_P(All, BuiltinScenario,
                          ::testing::Values("collisions", "hourglass", "silo_shake", "force_network",
                                            "frost_heave", "drum", "frost_front"));
 
-std::string final_state(const fs::path& dir) {
+// The grains' positions, velocities, spins and springs at the folder's last checkpoint.
+std::string motion_state(const fs::path& dir) {
   const Checkpoint c = decode_checkpoint(read_file((dir / "checkpoint.bin").string()), "x");
   const Particles& p = c.state.world.particles;
   std::string bytes(reinterpret_cast<const char*>(p.position.data()),
@@ -95,7 +96,7 @@ TEST(Resume, IsBitIdenticalToAnUninterruptedRun) {
     o.quiet = true;
     o.threads = 2; // a different thread count on resume changes nothing
     ASSERT_EQ(cli::resume_run(parts.string(), o), cli::exit_completed);
-    EXPECT_EQ(final_state(whole), final_state(parts)) << integrator;
+    EXPECT_EQ(motion_state(whole), motion_state(parts)) << integrator;
     EXPECT_EQ(read_file((whole / "thermo.csv").string()),
               read_file((parts / "thermo.csv").string()));
     EXPECT_EQ(read_file((whole / "particles.pvd").string()),
@@ -126,7 +127,7 @@ TEST(Resume, FrostFrontMidFreezeOrThawIsBitIdentical) {
     cli::RunOptions o;
     o.quiet = true;
     ASSERT_EQ(cli::resume_run(parts.string(), o), cli::exit_completed);
-    EXPECT_EQ(final_state(whole), final_state(parts)) << "stopped at " << stop << " s";
+    EXPECT_EQ(motion_state(whole), motion_state(parts)) << "stopped at " << stop << " s";
     EXPECT_EQ(events, read_file((parts / "frost.csv").string()));
     fs::remove_all(parts);
   }

@@ -3,6 +3,7 @@
 #include <limits>
 #include <sstream>
 
+#include "scenario/box3.hpp"
 #include "scenario/file/load.hpp"
 #include "scenario/file/shared_sections.hpp"
 #include "scenario/file/simulation_keys.hpp"
@@ -67,6 +68,57 @@ void read_geometry(TableReader& r, Box3Section& g) {
   g.wall_material = r.text("wall_material", "");
 }
 
+// A [[drivers]] entry's keys: its motion's own, the others refused naming the motion that has
+// them. Its target is checked against the box by check_targets.
+Driver3Section read_driver(TableReader& r) {
+  Driver3Section d;
+  const std::string type =
+      r.choice("type", "", {"vibrate", "translate", "rotate", "servo", "cell"});
+  if (type == "servo" || type == "cell")
+    r.fail("type", "a " + type + " driver" + not_in_3d + "; allowed: vibrate, translate, rotate");
+  using Motion = PlateDriver::Motion;
+  d.motion =
+      type == "vibrate" ? Motion::vibrate : (type == "rotate" ? Motion::rotate : Motion::translate);
+  d.target = r.text("target", d.target);
+  const auto only = [&](std::initializer_list<const char*> names, const char* owner) {
+    for (const char* key : names)
+      if (type != owner && r.has(key))
+        r.fail(key, std::string("only a ") + owner + " driver has it (this one is " + type + ")");
+  };
+  only({"amplitude", "frequency", "phase", "direction"}, "vibrate");
+  only({"velocity"}, "translate");
+  only({"centre", "angular_velocity"}, "rotate");
+  d.amplitude = r.number("amplitude", d.amplitude, 0.0, inf, ">= 0 m");
+  d.frequency = r.number("frequency", d.frequency, 0.0, inf, ">= 0 Hz");
+  d.phase = r.number("phase", d.phase, -inf, inf, "rad");
+  d.direction = vec3(r, "direction", d.direction);
+  if (norm(d.direction) == 0.0) r.fail("direction", "a vibration's direction must not be zero");
+  d.velocity = vec3(r, "velocity", d.velocity);
+  d.centre = vec3(r, "centre", d.centre);
+  d.angular_velocity = vec3(r, "angular_velocity", d.angular_velocity);
+  return d;
+}
+
+// Every target a side of this box (or "walls"), and no plate moved by two drivers.
+void check_targets(TableReader& top, const Scenario3& s) {
+  std::vector<int> driver_of(box3_sides(s.geometry).size(), -1);
+  const std::vector<const toml::table*> tables = top.tables("drivers");
+  for (std::size_t k = 0; k < s.drivers.size(); ++k) {
+    TableReader r(*tables[k], top.file(), "drivers." + std::to_string(k));
+    const std::vector<std::uint32_t> plates = box3_target(s.geometry, s.drivers[k].target);
+    if (plates.empty())
+      r.fail("target", "'" + s.drivers[k].target +
+                           "' is not a plate of this box; allowed: " + box3_targets(s.geometry));
+    for (const std::uint32_t w : plates) {
+      if (driver_of[w] >= 0)
+        r.fail("target", "the " + box3_sides(s.geometry)[w].name + " is moved by drivers." +
+                             std::to_string(driver_of[w]) +
+                             " already; a plate is moved by one driver at most");
+      driver_of[w] = static_cast<int>(k);
+    }
+  }
+}
+
 void read_output(TableReader& r, Output3Section& o) {
   read_output_intervals(r, o);
 }
@@ -80,8 +132,15 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
   s.materials = read_materials(top, file);
   section(top, "particles", file, [&](TableReader& r) { read_particles(r, s.particles, file); });
   section(top, "geometry", file, [&](TableReader& r) { read_geometry(r, s.geometry); });
+  std::size_t k = 0;
+  for (const toml::table* t : top.tables("drivers")) {
+    TableReader r(*t, file, "drivers." + std::to_string(k++));
+    s.drivers.push_back(read_driver(r));
+    r.finish();
+  }
+  check_targets(top, s);
   section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
-  for (const char* name : {"packing", "drivers", "track", "frost", "stages"})
+  for (const char* name : {"packing", "track", "frost", "stages"})
     if (top.has(name)) top.fail(name, std::string("[") + name + "]" + not_in_3d);
   top.finish();
   try {
@@ -95,6 +154,25 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
 
 toml::array vec(const Vec3& v) {
   return toml::array{v.x, v.y, v.z};
+}
+
+// A driver with its motion's keys alone, as read_driver takes them.
+toml::table driver_table(const Driver3Section& d) {
+  using Motion = PlateDriver::Motion;
+  switch (d.motion) {
+  case Motion::vibrate:
+    return toml::table{{"type", "vibrate"},        {"target", d.target},
+                       {"amplitude", d.amplitude}, {"frequency", d.frequency},
+                       {"phase", d.phase},         {"direction", vec(d.direction)}};
+  case Motion::rotate:
+    return toml::table{{"type", "rotate"},
+                       {"target", d.target},
+                       {"centre", vec(d.centre)},
+                       {"angular_velocity", vec(d.angular_velocity)}};
+  case Motion::translate:
+    break;
+  }
+  return toml::table{{"type", "translate"}, {"target", d.target}, {"velocity", vec(d.velocity)}};
 }
 
 } // namespace
@@ -135,6 +213,11 @@ std::string to_toml(const Scenario3& s) {
       {"output", toml::table{{"thermo_interval", s.output.thermo_interval},
                              {"snapshot_interval", s.output.snapshot_interval},
                              {"checkpoint_interval", s.output.checkpoint_interval}}}};
+  if (!s.drivers.empty()) {
+    toml::array drivers;
+    for (const Driver3Section& d : s.drivers) drivers.push_back(driver_table(d));
+    root.insert("drivers", drivers);
+  }
   std::ostringstream out;
   out << "# resolved by talus: every key with its value; `talus run` on this file reruns the run\n"
       << root << "\n";
