@@ -37,6 +37,10 @@ struct Settings3 {
   LinearDamping linear_damping = LinearDamping::never_attractive;
   /// Stability guard: the run stops when an overlap exceeds this fraction of the smaller radius.
   double max_overlap_fraction = 0.5;
+  /// Every this many steps (at the start of a step whose count is a multiple) the spheres are
+  /// renumbered in the order of the cells they lie in (renumber3.hpp); 0: never. Sphere indices
+  /// change then (ids do not).
+  std::uint64_t sort_interval = 0;
   /// 0: all cores. Results are bit-identical for any count; fewer are taken for a small scene
   /// (Simulation3::threads).
   int threads = 0;

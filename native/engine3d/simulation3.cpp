@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "core/capacity_bytes.hpp"
+#include "engine3d/renumber3.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -109,6 +110,8 @@ void Simulation3::compute_forces() {
 // Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
 // see while F(t + dt) is computed is v(t) + (1 + lag) dt/2 a(t).
 void Simulation3::step() {
+  if (settings_.sort_interval > 0 && steps_ > 0 && steps_ % settings_.sort_interval == 0)
+    sort_spheres();
   if (settings_.integrator == Integrator::gear) return gear_step();
   Spheres& s = scene_.spheres;
   const double dt = settings_.timestep, half = 0.5 * dt;
@@ -135,6 +138,12 @@ void Simulation3::step() {
   ++steps_;
   time_ = static_cast<double>(steps_) * dt;
   guard();
+}
+
+void Simulation3::sort_spheres() {
+  Spheres& s = scene_.spheres;
+  const double range = 2.0 * s.max_radius() + list_.skin;
+  renumber_spheres(s, list_, gear_, spheres_by_cell(s, scene_.domain, range));
 }
 
 void Simulation3::forces_after_the_move() {
@@ -219,9 +228,7 @@ std::size_t Simulation3::footprint_bytes() const {
   const SphereList& l = list_;
   std::size_t b = 0;
   const auto add = [&b](const auto&... v) { ((b += capacity_bytes(v)), ...); };
-  add(s.position, s.velocity, s.force, s.angular_velocity, s.torque, s.radius, s.mass, s.inertia,
-      s.inv_mass, s.inv_inertia, s.material, s.kind, s.id, s.image, s.force_previous,
-      s.torque_previous);
+  sphere_fields(s, [&](const auto& v) { add(v); });
   add(l.row_offset, l.neighbour, l.shift, l.spring, l.second_offset, l.second_entry, l.plate_offset,
       l.plate, l.plate_spring, l.rolling, l.plate_rolling, l.reference, l.plate_reference);
   add(gear_.r2, gear_.r3, gear_.r4, gear_.w2, gear_.w3, gear_.w4);

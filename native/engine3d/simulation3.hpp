@@ -79,6 +79,7 @@ private:
   void compute_forces();
   void forces_after_the_move(); ///< the plates to the step's end, the list if stale, the forces
   void gear_step();
+  void sort_spheres(); ///< renumbers the spheres in the order of their cells (renumber3.hpp)
   void guard() const;
 
   Scene3 scene_;

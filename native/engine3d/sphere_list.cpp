@@ -145,6 +145,21 @@ Vec3 kept_spring(const std::vector<std::uint32_t>& offset, const std::vector<std
 
 } // namespace
 
+void index_second_entries(SphereList& list, std::size_t spheres) {
+  list.second_offset.assign(spheres + 1, 0);
+  for (const std::uint32_t j : list.neighbour) ++list.second_offset[j + 1];
+  for (std::size_t k = 0; k < spheres; ++k) list.second_offset[k + 1] += list.second_offset[k];
+  list.second_entry.resize(list.neighbour.size());
+  std::vector<std::uint32_t> fill(list.second_offset.begin(), list.second_offset.end() - 1);
+  for (std::uint32_t e = 0; e < list.neighbour.size(); ++e)
+    list.second_entry[fill[list.neighbour[e]]++] = e;
+}
+
+std::vector<std::uint32_t> spheres_by_cell(const Spheres& s, const Domain3& domain, double range) {
+  if (s.empty()) return {};
+  return make_grid(s, domain, range).items;
+}
+
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin) {
   require(skin >= 0.0 && std::isfinite(skin), "the skin must be finite and >= 0 m");
@@ -183,13 +198,7 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
       next.plate_offset.push_back(static_cast<std::uint32_t>(next.plate.size()));
     }
   }
-  next.second_offset.assign(s.size() + 1, 0);
-  for (const std::uint32_t j : next.neighbour) ++next.second_offset[j + 1];
-  for (std::size_t k = 0; k < s.size(); ++k) next.second_offset[k + 1] += next.second_offset[k];
-  next.second_entry.resize(next.neighbour.size());
-  std::vector<std::uint32_t> fill(next.second_offset.begin(), next.second_offset.end() - 1);
-  for (std::uint32_t e = 0; e < next.neighbour.size(); ++e)
-    next.second_entry[fill[next.neighbour[e]]++] = e;
+  index_second_entries(next, s.size());
   next.reference = s.position;
   for (const Plane& p : plates) next.plate_reference.push_back({p.centre, p.normal, p.axis_u});
   list = std::move(next);

@@ -55,6 +55,13 @@ struct SphereList {
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin);
 
+/// The spheres in the order of the cells (at least `range` wide) they lie in, the cells taken
+/// x fastest, then y, then z: a sphere's neighbours lie near it in this order.
+std::vector<std::uint32_t> spheres_by_cell(const Spheres& s, const Domain3& domain, double range);
+
+/// Fills second_offset and second_entry from the rows' neighbours (`spheres` rows).
+void index_second_entries(SphereList& list, std::size_t spheres);
+
 /// True when some sphere or some point of a plate near the spheres moved more than half the skin
 /// since the last build (a turned plate's points move by the turn times their distance from its
 /// centre, bounded by the farthest sphere's), or the spheres or plates are not those of the build.

@@ -48,4 +48,11 @@ struct Spheres {
   std::size_t add(const SphereSpec& spec);
 };
 
+/// Calls f with every per-sphere field of s in turn (a checkpoint's order).
+template <class S, class F> void sphere_fields(S& s, F&& f) {
+  f(s.position), f(s.velocity), f(s.force), f(s.angular_velocity), f(s.torque), f(s.radius);
+  f(s.mass), f(s.inertia), f(s.inv_mass), f(s.inv_inertia), f(s.material), f(s.kind), f(s.id);
+  f(s.image), f(s.force_previous), f(s.torque_previous);
+}
+
 } // namespace talus

@@ -12,11 +12,6 @@ namespace {
 
 constexpr char magic3[8] = {'T', 'A', 'L', 'U', 'S', '3', 'C', 'K'};
 
-template <class S, class F> void sphere_fields(S& s, F&& f) {
-  f(s.position), f(s.velocity), f(s.force), f(s.angular_velocity), f(s.torque), f(s.radius);
-  f(s.mass), f(s.inertia), f(s.inv_mass), f(s.inv_inertia), f(s.material), f(s.kind), f(s.id);
-  f(s.image), f(s.force_previous), f(s.torque_previous);
-}
 template <class L, class F> void list_fields(L& l, F&& f) {
   f(l.row_offset), f(l.neighbour), f(l.shift), f(l.spring), f(l.second_offset);
   f(l.second_entry), f(l.plate_offset), f(l.plate), f(l.plate_spring), f(l.reference);
@@ -141,7 +136,7 @@ std::string encode_checkpoint3(const Checkpoint3& c) {
   Writer w;
   write_state(w, c.state);
   settings_fields(c.settings, [&](const auto&... v) { write_fields(w, v...); });
-  write_fields(w, c.settings.integrator);
+  write_fields(w, c.settings.integrator, c.settings.sort_interval);
   w.str(c.run_data);
   return seal(magic3, checkpoint3_version, w.bytes());
 }
@@ -158,6 +153,8 @@ Checkpoint3 decode_checkpoint3(const std::string& bytes, const std::string& sour
   c.state = read_state(r, h.version);
   settings_fields(c.settings, [&](auto&... v) { read_fields(r, v...); });
   if (h.version >= 2) read_fields(r, c.settings.integrator);
+  // a version 2 run never renumbered its spheres: it goes on without
+  if (h.version >= 3) read_fields(r, c.settings.sort_interval);
   if (c.settings.integrator != Integrator::gear && c.settings.integrator != Integrator::verlet)
     r.fail("an integrator that is neither Gear nor velocity Verlet");
   c.run_data = r.str();

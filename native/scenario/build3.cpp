@@ -107,6 +107,7 @@ BuiltScenario3 build_scenario3(const Scenario3& s) {
   c.verlet_velocity = sim.verlet_velocity;
   c.skin = sim.skin;
   c.threads = sim.threads;
+  c.sort_interval = sim.sort_every;
   c.impact_speed = sim.impact_speed;
   c.lever_arm = sim.lever_arm;
   c.linear_damping = sim.linear_damping;

@@ -59,6 +59,8 @@ ChuteBench build_chute_bench(std::size_t n, std::uint64_t seed) {
   c.settings.normal_law = law_id<LinearSpringDashpot>;
   c.settings.tangential_law = law_id<CundallStrack>;
   c.settings.skin = 0.1;
+  // renumbered every 1000 steps, as LAMMPS sorts its atoms by default (atom_modify sort)
+  c.settings.sort_interval = 1000;
   return c;
 }
 

@@ -29,7 +29,8 @@ inline constexpr std::size_t chute_bench_layers = 39;
 /// their diameters uniform in [0.9, 1), their velocities uniform in [-0.1, 0.1) per component.
 /// Periodic in x (down the slope) and y; gravity 1 tilted by 26 degrees down x, as LAMMPS'
 /// `fix gravity 1.0 chute 26.0`; linear spring-dashpot and Cundall-Strack; velocity Verlet,
-/// dt = 1e-4, skin 0.1 (in.chute's `neighbor 0.1 bin`). n = 32,000, in.chute's count, gives a
+/// dt = 1e-4, skin 0.1 (in.chute's `neighbor 0.1 bin`), the spheres renumbered every 1000 steps
+/// (LAMMPS' default atom sort). n = 32,000, in.chute's count, gives a
 /// 40 x 20 base.
 ChuteBench build_chute_bench(std::size_t n, std::uint64_t seed = 12345);
 

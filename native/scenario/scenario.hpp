@@ -21,6 +21,10 @@ struct Rect {
   friend bool operator==(const Rect&, const Rect&) = default;
 };
 
+/// Steps between renumberings of the grains in the order of their cells, unless a scenario
+/// says (simulation.sort_every).
+inline constexpr std::uint64_t default_sort_every = 1000;
+
 struct SimulationSection {
   double duration = 1.0;                            ///< s
   std::optional<double> timestep;                   ///< s; empty: "auto"
@@ -34,10 +38,10 @@ struct SimulationSection {
   TangentialLaw tangential_law = law_id<CundallStrack>;
   Vec2 gravity{0.0, -9.81}; ///< m/s^2
   std::uint64_t seed = 1;
-  int threads = 0;                 ///< 0: all cores
-  double skin = 0.0;               ///< m; 0: automatic
-  std::uint64_t sort_every = 1000; ///< steps between renumberings of the particles; 0: never
-  double impact_speed = 1.0;       ///< m/s: reference speed for Hertz collision times
+  int threads = 0;                               ///< 0: all cores
+  double skin = 0.0;                             ///< m; 0: automatic
+  std::uint64_t sort_every = default_sort_every; ///< steps between renumberings; 0: never
+  double impact_speed = 1.0;                     ///< m/s: reference speed for Hertz collision times
 };
 
 struct SizeSpec {

@@ -30,9 +30,10 @@ struct Simulation3Section {
   TangentialLaw tangential_law = law_id<CundallStrack>;
   Vec3 gravity{0.0, 0.0, -9.81}; ///< m/s^2
   std::uint64_t seed = 1;
-  int threads = 0;           ///< 0: all cores (results identical for any count)
-  double skin = 0.0;         ///< m; 0: half the largest radius
-  double impact_speed = 1.0; ///< m/s: reference speed for Hertz collision times
+  int threads = 0;                               ///< 0: all cores (results identical for any count)
+  double skin = 0.0;                             ///< m; 0: half the largest radius
+  std::uint64_t sort_every = default_sort_every; ///< steps between renumberings; 0: never
+  double impact_speed = 1.0;                     ///< m/s: reference speed for Hertz collision times
 };
 
 struct Particles3Section {

@@ -61,7 +61,6 @@ TEST(Scenario3, WhatThe3DEngineHasNotIsRefusedByName) {
     const std::string e = refusal(set);
     EXPECT_NE(e.find(words), std::string::npos) << set[0] << ": " << e;
   };
-  says({"simulation.sort_every=10"}, "'simulation.sort_every'");
   says({"particles.shape=disk"}, "a 3D scenario's grains are spheres");
   says({"packing.method=lattice"}, "[packing] is not there yet in 3D");
   says({"frost.model=front"}, "[frost] is not there yet in 3D");

@@ -48,7 +48,7 @@ inline Difference between(LammpsInstance& l, const Simulation3& s) {
   const Domain3& d = s.scene().domain;
   Difference out;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const int id = static_cast<int>(i) + 1;
+    const int id = static_cast<int>(p.id[i]) + 1; // LAMMPS' ids: the native ids + 1
     const double* w = l.lmp()->atom->omega[l.index(id)];
     for (int k = 0; k < 3; ++k) {
       const auto axis = static_cast<std::size_t>(k);

@@ -24,14 +24,14 @@ using testing::spring_forces;
 using testing::state_hash;
 using testing::touching_pairs;
 
-constexpr double side = 0.3; // m, the box at the start
+constexpr double cell_side = 0.3; // m, the box at the start
 
 // per_row^2 disks of radius 4 to 6 mm on a jittered lattice in a box periodic in x and y, moving
 // at up to `speed` m/s, with the linear law's damping rate (1/s), and a cell driver with `cell`'s
 // keys.
 World gas(int per_row, double speed, double friction, Cell cell, double damping_rate = 50.0) {
   return testing::cell_gas({.per_row = per_row,
-                            .side = side,
+                            .side = cell_side,
                             .speed = speed,
                             .friction = friction,
                             .damping_rate = damping_rate},
@@ -54,15 +54,15 @@ TEST(DeformingCell, ARateScalesTheBoxAndTheGrainsAffinely) {
   const double t = s.time();
   const Vec2 f{std::exp(rate.x * t), std::exp(rate.y * t)};
   const Domain& d = s.world().domain;
-  EXPECT_NEAR(d.size().x, side * f.x, 1e-12 * side);
-  EXPECT_NEAR(d.size().y, side * f.y, 1e-12 * side);
+  EXPECT_NEAR(d.size().x, cell_side * f.x, 1e-12 * cell_side);
+  EXPECT_NEAR(d.size().y, cell_side * f.y, 1e-12 * cell_side);
   const Particles& p = s.world().particles;
   double worst = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec2 want = d.lo + Vec2{start[p.id[i]].x * f.x, start[p.id[i]].y * f.y};
     worst = std::max(worst, norm(d.minimum_image(p.position[i], want)));
   }
-  EXPECT_LT(worst, 1e-12 * side);
+  EXPECT_LT(worst, 1e-12 * cell_side);
   EXPECT_NEAR(s.cell_driver()->strain.x, rate.x * t, 1e-12);
 }
 
@@ -110,8 +110,8 @@ TEST(DeformingCell, APressureIsHeldAsTheStressMeasureSeesIt) {
   EXPECT_NEAR(pressure, target, 5e-3 * target);
   EXPECT_NEAR(s.cell_reading().pressure, pressure, 1e-9 * target);
   EXPECT_GT(s.cell_reading().stiffness, 0.0);
-  EXPECT_LT(d.size().x, 0.9 * side); // it shrank to get there
-  EXPECT_EQ(d.size().x, d.size().y); // isotropically
+  EXPECT_LT(d.size().x, 0.9 * cell_side); // it shrank to get there
+  EXPECT_EQ(d.size().x, d.size().y);      // isotropically
 }
 
 // A cell held at a pressure with friction: 1 and 2 threads, and a run saved to a checkpoint's
@@ -152,7 +152,7 @@ TEST(DeformingCell, ABoxShrunkTooFarStopsTheRunNamingTheCell) {
 // What the remap would leave behind is refused, as are keys that do not fit the box.
 TEST(DeformingCell, WhatCannotFollowTheCellIsRefused) {
   World walls = gas(4, 0.0, 0.0, Cell{.strain_rate = {-1.0, -1.0}});
-  walls.add_wall({0.0, 0.0}, {side, 0.0});
+  walls.add_wall({0.0, 0.0}, {cell_side, 0.0});
   EXPECT_THROW(Simulation(std::move(walls), config(0.0)), InvalidArgument);
   World open = gas(4, 0.0, 0.0, Cell{.strain_rate = {-1.0, -1.0}});
   open.domain.periodic_y = false;

@@ -23,7 +23,8 @@ World rolling_box() {
   return w;
 }
 
-SimulationConfig config(Integrator integrator, int threads, std::uint64_t sort_interval = 50) {
+SimulationConfig rolling_config(Integrator integrator, int threads,
+                                std::uint64_t sort_interval = 50) {
   SimulationConfig c;
   c.timestep = 5.0e-6;
   c.integrator = integrator;
@@ -37,7 +38,8 @@ SimulationConfig config(Integrator integrator, int threads, std::uint64_t sort_i
 class RollingPass : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(RollingPass, OneAndTwoThreadsGiveTheSameBits) {
-  Simulation one(rolling_box(), config(GetParam(), 1)), two(rolling_box(), config(GetParam(), 2));
+  Simulation one(rolling_box(), rolling_config(GetParam(), 1)),
+      two(rolling_box(), rolling_config(GetParam(), 2));
   one.run(300);
   two.run(300);
   std::size_t held = 0;
@@ -48,9 +50,9 @@ TEST_P(RollingPass, OneAndTwoThreadsGiveTheSameBits) {
 }
 
 TEST_P(RollingPass, AResumedRunIsTheUninterruptedOne) {
-  Simulation whole(rolling_box(), config(GetParam(), 1));
+  Simulation whole(rolling_box(), rolling_config(GetParam(), 1));
   whole.run(300);
-  Simulation first(rolling_box(), config(GetParam(), 1));
+  Simulation first(rolling_box(), rolling_config(GetParam(), 1));
   first.run(130);
   // through a checkpoint's bytes
   const Checkpoint saved =
@@ -70,8 +72,8 @@ TEST_P(RollingPass, AResumedRunIsTheUninterruptedOne) {
 }
 
 TEST_P(RollingPass, SingleStepsAreTheRunsSteps) {
-  Simulation run(rolling_box(), config(GetParam(), 2)),
-      single(rolling_box(), config(GetParam(), 2));
+  Simulation run(rolling_box(), rolling_config(GetParam(), 2)),
+      single(rolling_box(), rolling_config(GetParam(), 2));
   run.run(200);
   for (int k = 0; k < 200; ++k) single.step();
   expect_same_state(run, single);
@@ -96,7 +98,7 @@ std::map<PairKey, double> angles_by_id(const Simulation& s) {
 }
 
 TEST(RollingPass, ARenumberingTurnsTheAngleWithItsPair) {
-  Simulation s(rolling_box(), config(Integrator::verlet, 1, 0));
+  Simulation s(rolling_box(), rolling_config(Integrator::verlet, 1, 0));
   s.run(200);
   const auto before = angles_by_id(s);
   s.sort_particles();

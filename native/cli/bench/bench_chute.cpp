@@ -29,6 +29,7 @@ struct ChuteOptions {
   std::uint64_t steps = 1000;
   int rounds = 1;
   int threads = 1;
+  std::uint64_t sort_every = 1000;
   bool lammps = false;
   std::string cache = "bench/cache";
   std::string results = "bench/results";
@@ -113,6 +114,7 @@ SimulationState3 flowed_state(const ChuteOptions& o, const ChuteBench& c) {
 void run_chute(const ChuteOptions& o) {
   ChuteBench c = build_chute_bench(o.n);
   c.settings.threads = o.threads;
+  c.settings.sort_interval = o.sort_every;
   const SimulationState3 state = flowed_state(o, c);
   const Simulation3 sim = Simulation3::restore(state, c.settings);
   print_system(o, c, sim);
@@ -190,6 +192,11 @@ void add_bench_chute_command(CLI::App& bench) {
   cmd->add_option("--threads", o->threads, "threads (0: all cores); LAMMPS' MPI ranks")
       ->capture_default_str()
       ->check(CLI::Range(0, 1024));
+  cmd->add_option("--sort-every", o->sort_every,
+                  "steps between renumberings of the spheres in the order of their cells (0: "
+                  "never); LAMMPS sorts its atoms every 1000 steps")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000000));
   cmd->add_flag("--lammps", o->lammps,
                 "also time LAMMPS (lmp, gran/hooke/history) on the same state, in turns");
   cmd->add_option("--cache", o->cache,

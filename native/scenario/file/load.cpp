@@ -36,9 +36,6 @@ void read_simulation(TableReader& r, SimulationSection& s) {
   s.integrator = parse_integrator(r.choice("integrator", "gear", {"gear", "verlet"}));
   s.gravity = r.vec2("gravity", s.gravity);
   s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
-  s.sort_every =
-      static_cast<std::uint64_t>(r.integer("sort_every", static_cast<std::int64_t>(s.sort_every), 0,
-                                           std::numeric_limits<std::int64_t>::max()));
 }
 
 // A name thermo.csv's columns (force_NAME_x) and a driver's target can carry.

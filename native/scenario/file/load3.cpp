@@ -32,7 +32,6 @@ void read_simulation(TableReader& r, Simulation3Section& s) {
   s.integrator = parse_integrator(r.choice("integrator", "verlet", {"gear", "verlet"}));
   s.gravity = vec3(r, "gravity", s.gravity);
   s.threads = static_cast<int>(r.integer("threads", s.threads, 0, 1024));
-  if (r.has("sort_every")) r.fail("sort_every", std::string("renumbering the spheres") + not_in_3d);
 }
 
 void read_particles(TableReader& r, Particles3Section& p, const std::string& file) {

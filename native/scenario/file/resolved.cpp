@@ -79,7 +79,6 @@ toml::table simulation_table(const SimulationSection& sim) {
   t.insert("integrator", std::string(to_string(sim.integrator)));
   t.insert("gravity", vec(sim.gravity));
   t.insert("threads", sim.threads);
-  t.insert("sort_every", static_cast<std::int64_t>(sim.sort_every));
   return t;
 }
 

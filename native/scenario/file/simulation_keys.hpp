@@ -1,7 +1,7 @@
 #pragma once
 // The keys that 2D and 3D scenarios share (of [simulation]: the clock, the laws, the seed, the
-// skin; of [output]: the intervals), read and written for either section type: the 2D sections
-// and the 3D ones name these fields alike.
+// skin, the renumbering; of [output]: the intervals), read and written for either section type: the
+// 2D sections and the 3D ones name these fields alike.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -46,6 +46,9 @@ template <class S> void read_clock_and_laws(TableReader& r, S& s) {
   s.seed = static_cast<std::uint64_t>(r.integer("seed", static_cast<std::int64_t>(s.seed), 0,
                                                 std::numeric_limits<std::int64_t>::max()));
   s.skin = r.number("skin", s.skin, 0.0, inf, ">= 0 m (0: automatic)");
+  s.sort_every =
+      static_cast<std::uint64_t>(r.integer("sort_every", static_cast<std::int64_t>(s.sort_every), 0,
+                                           std::numeric_limits<std::int64_t>::max()));
   s.impact_speed = r.number("impact_speed", s.impact_speed, 1e-9, inf, "> 0 m/s");
 }
 
@@ -74,6 +77,7 @@ template <class S> void write_clock_and_laws(toml::table& t, const S& s) {
   t.insert("tangential_law", std::string(name_of(s.tangential_law)));
   t.insert("seed", static_cast<std::int64_t>(s.seed));
   t.insert("skin", s.skin);
+  t.insert("sort_every", static_cast<std::int64_t>(s.sort_every));
   t.insert("impact_speed", s.impact_speed);
 }
 
