@@ -1,7 +1,8 @@
 #!/bin/sh
 # The built-in 3D scenario, short: talus run writes thermo.csv, run.json and snapshots that VTK's
 # reader opens (read_vtk3d.py), the spheres come to rest in the box, a run stopped and resumed
-# is the run that never stopped, and the commands that take 2D runs refuse the folder.
+# is the run that never stopped, one lengthened with --duration ends as the longer run, and the
+# commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -50,6 +51,20 @@ for f in thermo.csv particles.pvd walls.pvd $(cd "$dir/whole" && ls snapshots/*)
 done
 [ "$(ls "$dir/parts/snapshots" | wc -l)" -eq "$(ls "$dir/whole/snapshots" | wc -l)" ] \
   || { echo "FAIL: the snapshots after a resume are not the whole run's"; exit 1; }
+# a finished run is refused without --duration, and a --duration not beyond its time; run on
+# with --duration it ends where the run that was that long from the start ends, to the bit
+if "$talus" resume "$dir/whole" > "$dir/out.txt" 2>&1; then echo "FAIL: a finished run resumed"; exit 1; fi
+grep -q "has ended at t = .*--duration T" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+if "$talus" resume "$dir/whole" --duration 0.05 > "$dir/out.txt" 2>&1; then
+  echo "FAIL: a shorter --duration was taken"; exit 1
+fi
+grep -q "the run is at t = .* already" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+"$talus" resume "$dir/whole" --duration 0.13 --quiet
+"$talus" run pour3d --out "$dir/long" $short --set simulation.duration=0.13
+grep -q "^duration = 0.13$" "$dir/whole/scenario.toml" || { echo "FAIL: scenario.toml not lengthened"; exit 1; }
+last() { ls "$1"/snapshots/spheres_*.vtp | tail -1; }
+cmp -s "$(last "$dir/whole")" "$(last "$dir/long")" \
+  || { echo "FAIL: a lengthened run does not end as the run that long from the start"; exit 1; }
 # and a resolved 3D scenario reruns as it is
 "$talus" run "$run/scenario.toml" --out "$dir/again" --quiet --set simulation.duration=0.01
 echo "pour3d: run, snapshots read back, stopped and resumed as one run, 2D commands refuse it"

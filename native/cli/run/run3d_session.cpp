@@ -64,6 +64,27 @@ void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::o
                         encode_checkpoint3({sim.state(), sim.settings(), book.encode()}));
 }
 
+// talus resume --duration T: the run goes on to T s, T beyond where it stands, and its
+// scenario.toml says so (the length alone changes: the steps up to the old end are the same).
+// Without it, a run that has reached its end is refused, saying how to lengthen it.
+void lengthen(Scenario3& s, const Checkpoint3& c, double duration, const fs::path& dir) {
+  const double dt = c.settings.timestep;
+  if (duration < 0.0) {
+    if (c.state.steps >= steps_until(s.simulation.duration, dt))
+      throw InvalidArgument(fmt::format("the run in '{}' has ended at t = {:.9g} s, its "
+                                        "simulation.duration; run it on to T s with: talus "
+                                        "resume {} --duration T",
+                                        dir.string(), c.state.time, dir.string()));
+    return;
+  }
+  if (!(duration > c.state.time))
+    throw InvalidArgument(fmt::format("a duration of {:g} s: the run is at t = {:.9g} s already; "
+                                      "allowed: a longer whole length",
+                                      duration, c.state.time));
+  s.simulation.duration = duration;
+  write_file_atomically((dir / "scenario.toml").string(), to_toml(s));
+}
+
 } // namespace
 
 std::string Book3::encode() const {
@@ -163,19 +184,21 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
 }
 
 int resume_3d(RunFolder folder, const RunOptions& o) {
-  if (!o.set.empty() || o.duration >= 0.0)
-    throw InvalidArgument("--set and --duration: a 3D run continues as it started, for now");
+  if (!o.set.empty())
+    throw InvalidArgument("--set: a 3D run continues with the scenario it started with, for now "
+                          "(--duration lengthens it)");
   const fs::path& dir = folder.path();
   const std::string toml = (dir / "scenario.toml").string(),
                     bin = (dir / "checkpoint.bin").string();
   if (!fs::exists(bin))
     throw InvalidArgument("no checkpoint in '" + dir.string() + "': start it again with talus run");
-  const Scenario3 s = load_scenario3(read_file(toml), toml);
+  Scenario3 s = load_scenario3(read_file(toml), toml);
   Checkpoint3 c = decode_checkpoint3(read_file(bin), bin);
   Book3 book = Book3::decode(c.run_data, bin);
   // the outputs cut back to the checkpoint: thermo.csv's tail, the later snapshots
   if (fs::file_size(dir / "thermo.csv") < book.thermo_bytes)
     throw InvalidArgument((dir / "thermo.csv").string() + " is shorter than at the checkpoint");
+  lengthen(s, c, o.duration, dir);
   fs::resize_file(dir / "thermo.csv", book.thermo_bytes);
   for (const auto& e : fs::directory_iterator(dir / "snapshots")) {
     const std::string name = "snapshots/" + e.path().filename().string();
