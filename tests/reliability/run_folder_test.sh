@@ -129,25 +129,24 @@ grep -q "'$dir/del' was replaced under the running run.*writes nothing more" "$d
 [ -z "$(ls "$dir/del/snapshots")" ] || fail "the replaced run wrote into the new run's folder"
 kill -KILL "$other"
 wait "$other" 2>/dev/null
-"$talus" run "${long[@]}" --out "$dir/gone" 2> "$dir/gone.txt" &
-pid=$!
-wait_for "$dir/gone/snapshots/particles_000002.vtp"
-until rm -rf "$dir/gone" 2> /dev/null; do :; done
-wait "$pid"
-status=$?
-[ "$status" -eq 1 ] || fail "a run whose folder was deleted exited $status: $(cat "$dir/gone.txt")"
+# a long run into $dir/NAME whose PATH (under $dir) is deleted once its third snapshot is
+# there; its stderr in $dir/NAME.txt, its exit status 1 asked for
+delete_under_run() {
+  "$talus" run "${long[@]}" --out "$dir/$1" 2> "$dir/$1.txt" &
+  local run=$!
+  wait_for "$dir/$1/snapshots/particles_000002.vtp"
+  until rm -rf "$dir/$2" 2> /dev/null; do :; done
+  wait "$run"
+  local code=$?
+  [ "$code" -eq 1 ] || fail "a run whose $2 was deleted exited $code: $(cat "$dir/$1.txt")"
+}
+delete_under_run gone gone
 grep -q "'$dir/gone' was deleted under the running run" "$dir/gone.txt" ||
   fail "a run whose folder was deleted said: $(cat "$dir/gone.txt")"
 [ -e "$dir/gone" ] && fail "a run whose folder was deleted made it again"
 # a folder whose files are deleted (rm -rf caught halfway, before it reaches the lock) gives the
 # same diagnosis, not a full disk's
-"$talus" run "${long[@]}" --out "$dir/half" 2> "$dir/half.txt" &
-pid=$!
-wait_for "$dir/half/snapshots/particles_000002.vtp"
-until rm -rf "$dir/half/snapshots" 2> /dev/null; do :; done
-wait "$pid"
-status=$?
-[ "$status" -eq 1 ] || fail "a run whose snapshots were deleted exited $status: $(cat "$dir/half.txt")"
+delete_under_run half half/snapshots
 grep -q "files of the run folder '$dir/half' were deleted under the running run.*No such file" \
   "$dir/half.txt" || fail "a run whose snapshots were deleted said: $(cat "$dir/half.txt")"
 [ -e "$dir/half/snapshots" ] && fail "a run whose snapshots were deleted wrote them again"
