@@ -7,8 +7,8 @@
 #include <string>
 
 #include "io/lammps_export.hpp"
-#include "scenario/build3.hpp"
-#include "scenario/scenario3.hpp"
+#include "scenario3d/build3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus {
 

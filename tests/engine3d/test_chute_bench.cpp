@@ -1,4 +1,4 @@
-// talus bench chute's system (scenario/chute_bench.hpp): the counts, the frozen base, the laws
+// talus bench chute's system (scenario3d/chute_bench.hpp): the counts, the frozen base, the laws
 // and gravity of LAMMPS' in.chute, no overlap at the start, and a layer that flows down the slope
 // over its base without going unstable.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "engine3d/simulation3.hpp"
-#include "scenario/chute_bench.hpp"
+#include "scenario3d/chute_bench.hpp"
 #include "talus/error.hpp"
 
 namespace talus {

@@ -1,4 +1,4 @@
-// [[drivers]] of a 3D scenario (scenario/file/load3.hpp, scenario/box3.hpp, build3.hpp): the
+// [[drivers]] of a 3D scenario (scenario/file/load3.hpp, scenario3d/box3.hpp, build3.hpp): the
 // box's sides are named, a driver moves the plates its target names and no other, its keys
 // resolve and reload, and a target the box has not, a plate driven twice, a key of another
 // motion or a motion the 3D engine has not are refused by key. A driven floor and side stand
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "cli/builtin_scenarios.hpp"
-#include "scenario/box3.hpp"
-#include "scenario/build3.hpp"
 #include "scenario/file/load3.hpp"
+#include "scenario3d/box3.hpp"
+#include "scenario3d/build3.hpp"
 
 namespace talus {
 namespace {

@@ -17,8 +17,8 @@
 #include "cli/builtin_scenarios.hpp"
 #include "engine3d/renumber3.hpp"
 #include "engine3d/simulation3.hpp"
-#include "scenario/build3.hpp"
 #include "scenario/file/load3.hpp"
+#include "scenario3d/build3.hpp"
 
 namespace talus {
 namespace {

@@ -1,4 +1,4 @@
-// Scenario files of spheres in 3D (scenario/file/load3.hpp, scenario/build3.hpp): the built-in
+// Scenario files of spheres in 3D (scenario/file/load3.hpp, scenario3d/build3.hpp): the built-in
 // pour3d loads and its resolved form reloads to the same text; what the 3D engine does not have
 // is refused naming the key; the build puts the spheres in the box, as the seed says, and
 // refuses a count the box cannot hold or a timestep too long for the collisions.
@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "cli/builtin_scenarios.hpp"
-#include "scenario/build3.hpp"
 #include "scenario/file/load.hpp"
 #include "scenario/file/load3.hpp"
 #include "scenario/file/shared_sections.hpp"
 #include "scenario/size_distribution.hpp"
+#include "scenario3d/build3.hpp"
 
 namespace talus {
 namespace {

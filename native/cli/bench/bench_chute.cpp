@@ -15,7 +15,7 @@
 #include "io/checkpoint3.hpp"
 #include "io/lammps_export3.hpp"
 #include "io/lammps_words.hpp"
-#include "scenario/chute_bench.hpp"
+#include "scenario3d/chute_bench.hpp"
 
 namespace fs = std::filesystem;
 

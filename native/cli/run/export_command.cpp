@@ -10,9 +10,9 @@
 #include "io/lammps_export.hpp"
 #include "io/lammps_export3.hpp"
 #include "scenario/build.hpp"
-#include "scenario/build3.hpp"
 #include "scenario/file/load.hpp"
 #include "scenario/file/load3.hpp"
+#include "scenario3d/build3.hpp"
 
 namespace talus::cli {
 

@@ -5,8 +5,8 @@
 #include <toml++/toml.h>
 
 #include "cli/run/run3d_session.hpp"
-#include "scenario/build3.hpp"
 #include "scenario/file/load3.hpp"
+#include "scenario3d/build3.hpp"
 
 namespace talus::cli {
 

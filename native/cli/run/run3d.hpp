@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cli/run/run_loop.hpp"
-#include "scenario/scenario3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus::cli {
 

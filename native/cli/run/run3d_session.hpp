@@ -9,7 +9,7 @@
 #include "cli/run/run_folder.hpp"
 #include "cli/run/run_loop.hpp"
 #include "engine3d/simulation3.hpp"
-#include "scenario/scenario3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus::cli {
 

@@ -3,10 +3,10 @@
 #include <limits>
 #include <sstream>
 
-#include "scenario/box3.hpp"
 #include "scenario/file/load.hpp"
 #include "scenario/file/shared_sections.hpp"
 #include "scenario/file/simulation_keys.hpp"
+#include "scenario3d/box3.hpp"
 
 namespace talus {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scenario/file/toml_reader.hpp"
-#include "scenario/scenario3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus {
 

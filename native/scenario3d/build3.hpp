@@ -1,7 +1,7 @@
 #pragma once
 // A 3D scenario built: spheres on a loose lattice in a box of plates, ready to pour.
 #include "engine3d/simulation3.hpp"
-#include "scenario/scenario3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/scenario3.hpp"
+#include "scenario3d/scenario3.hpp"
 
 namespace talus {
 

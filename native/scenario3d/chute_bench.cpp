@@ -1,4 +1,4 @@
-#include "scenario/chute_bench.hpp"
+#include "scenario3d/chute_bench.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "scenario/build3.hpp"
+#include "scenario3d/build3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 
 #include "core/random.hpp"
 #include "materials/pair_table.hpp"
-#include "scenario/box3.hpp"
 #include "scenario/file/load3.hpp"
 #include "scenario/size_distribution.hpp"
+#include "scenario3d/box3.hpp"
 
 namespace talus {
 

@@ -1,4 +1,4 @@
-#include "scenario/box3.hpp"
+#include "scenario3d/box3.hpp"
 
 #include <array>
 
