@@ -4,9 +4,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "talus/contact_force.hpp"
-#include "talus/contact_geometry_3d.hpp"
-#include "talus/rolling_resistance.hpp"
+#include <omp.h>
+
+#include "engine3d/pair_lanes3.hpp"
+#include "neighbours/neighbour_list.hpp"
 
 namespace talus {
 
@@ -50,24 +51,6 @@ template <class S, class L, class Pair, class OnPlate, class Apart>
   }
 }
 
-// A sphere's inertia about a point of its rim, which rolling resistance's dashpot takes.
-double rim_of(const Spheres& s, std::size_t i) {
-  return rim_inertia(s.inertia[i], s.mass[i], s.radius[i]);
-}
-
-// Rolling resistance's torque on i of a contact with rolling spring `theta` (turned into the
-// tangent plane and advanced a step here), against a sphere or plate of spin w_j and rim inertia
-// rim_j (0: a plate, infinitely heavy). None where the pair does not roll with resistance.
-template <class N>
-Vec3 rolling_torque(const PairParameters& p, const ContactGeometry3& g, double normal_force,
-                    const Vec3& w_i, const Vec3& w_j, double rim_i, double rim_j, Vec3& theta,
-                    double dt) {
-  if (p.rolling_friction == 0.0) return {};
-  theta = into_tangent_plane(theta, g.normal);
-  return RollingLaw::torque<N>(p, g, not_below_zero(normal_force), rolling_spin(w_i, w_j, g.normal),
-                               rolling_inertia(rim_i, rim_j), theta, dt);
-}
-
 // The elastic energy of a rolling spring as it stands (turned into the tangent plane).
 template <class N>
 double rolling_energy(const PairParameters& p, const ContactGeometry3& g, const Vec3& theta) {
@@ -78,85 +61,108 @@ double rolling_energy(const PairParameters& p, const ContactGeometry3& g, const 
 } // namespace
 
 std::size_t ForcePass3::bytes() const {
-  return sizeof(Vec3) * (force_.capacity() + torque_i_.capacity() + torque_j_.capacity() +
-                         plate_force_.capacity() + plate_torque_.capacity());
+  std::size_t found = 0;
+  for (const auto& f : found_) found += f.capacity() * sizeof(Touching3);
+  return found + sizeof(Vec3) * (deferred_force_.capacity() + deferred_torque_j_.capacity() +
+                                 plate_force_.capacity() + plate_torque_.capacity());
+}
+
+template <class N, class T>
+ContactPass3 ForcePass3::add_with(Scene3& scene, SphereList& list, const PairTable& table,
+                                  const Settings3& settings, int threads) {
+  Spheres& s = scene.spheres;
+  const std::size_t n = s.size();
+  const double dt = settings.timestep;
+  const LeverShares shares = lever_shares(settings.lever_arm);
+  const std::uint32_t rows = force_block_rows(n);
+  const auto blocks = static_cast<std::ptrdiff_t>(n == 0 ? 0 : (n + rows - 1) / rows);
+  deferred_force_.resize(list.pair_count());
+  deferred_torque_j_.resize(list.pair_count());
+  plate_force_.resize(list.plate.size());
+  plate_torque_.resize(list.plate.size());
+  found_.resize(static_cast<std::size_t>(std::max(threads, 1)));
+  const PairLanes3<ContactLanes3> pairs(table);
+  std::size_t contacts = 0, on_plates = 0;
+  double deepest = 0.0;
+  // each block's spheres sum the contacts among them in entry order, then their plates'
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) \
+    reduction(+ : contacts, on_plates) reduction(max : deepest)
+  for (std::ptrdiff_t block = 0; block < blocks; ++block) {
+    const auto first = static_cast<std::uint32_t>(block) * rows;
+    const auto last = static_cast<std::uint32_t>(std::min<std::size_t>(n, first + rows));
+    const BlockSums3 sums{s, first, last, deferred_force_.data(), deferred_torque_j_.data()};
+    std::vector<Touching3>& found = found_[static_cast<std::size_t>(omp_get_thread_num())];
+    found.resize(
+        std::max<std::size_t>(found.size(), list.row_offset[last] - list.row_offset[first]));
+    const std::size_t touching =
+        list.with_rolling ? touching_entries<true>(s, list, scene.domain, sums, found.data())
+                          : touching_entries<false>(s, list, scene.domain, sums, found.data());
+    const PairTally3 tally =
+        pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
+    const PlateTally3 plates = plate_forces<N, T>(scene, list, table, first, last, dt, shares);
+    contacts += tally.contacts + plates.contacts, on_plates += plates.contacts;
+    deepest = std::max({deepest, tally.deepest, plates.deepest});
+  }
+  // then the contacts with spheres of the blocks before, in entry order
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const std::uint32_t block_entries = list.row_offset[i / rows * rows];
+    Vec3 f = s.force[i], m = s.torque[i];
+    for (std::uint32_t q = list.second_offset[i]; q < list.second_offset[i + 1]; ++q) {
+      const std::uint32_t e = list.second_entry[q];
+      if (e >= block_entries) break;
+      f -= deferred_force_[e], m += deferred_torque_j_[e];
+    }
+    s.force[i] = f, s.torque[i] = m;
+  }
+  for (Plane& p : scene.plates) p.force = {};
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e)
+      scene.plates[list.plate[e]].force -= plate_force_[e];
+  return ContactPass3{contacts, on_plates, deepest};
+}
+
+template <class N, class T>
+ForcePass3::PlateTally3
+ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
+                         std::uint32_t first, std::uint32_t last, double dt, LeverShares shares) {
+  Spheres& s = scene.spheres;
+  PlateTally3 tally;
+  for (std::uint32_t i = first; i < last; ++i) {
+    for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e) {
+      const std::uint32_t w = list.plate[e];
+      const Plane& plate = scene.plates[w];
+      const Vec3 touch = closest_point(plate, s.position[i]);
+      const Vec3 d = s.position[i] - touch;
+      const double dist2 = norm2(d);
+      if (dist2 >= s.radius[i] * s.radius[i] || dist2 == 0.0) {
+        list.plate_spring[e] = plate_force_[e] = plate_torque_[e] = {};
+        if (list.with_rolling) list.plate_rolling[e] = {};
+        continue;
+      }
+      const ContactGeometry3 g =
+          wall_geometry(d, std::sqrt(dist2), s.radius[i], s.mass[i], s.velocity[i],
+                        s.angular_velocity[i], plate.velocity_at(touch), shares);
+      const PairParameters& p = table(s.material[i], plate.material);
+      const ContactForce3 c = contact_force<N, T>(p, g, list.plate_spring[e], dt);
+      plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
+      if (list.with_rolling)
+        plate_torque_[e] +=
+            rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i], plate.angular_velocity,
+                              rim_of(s, i), 0.0, list.plate_rolling[e], dt);
+      s.force[i] += plate_force_[e], s.torque[i] += plate_torque_[e];
+      ++tally.contacts;
+      tally.deepest = std::max(tally.deepest, g.overlap / s.radius[i]);
+    }
+  }
+  return tally;
 }
 
 ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& table,
                              const Settings3& settings, int threads) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
-    Spheres& s = scene.spheres;
-    const auto n = static_cast<std::ptrdiff_t>(s.size());
-    const double dt = settings.timestep;
-    const LeverShares shares = lever_shares(settings.lever_arm);
-    force_.resize(list.pair_count());
-    torque_i_.resize(list.pair_count());
-    torque_j_.resize(list.pair_count());
-    plate_force_.resize(list.plate.size());
-    plate_torque_.resize(list.plate.size());
-    std::size_t contacts = 0, on_plates = 0;
-    double deepest = 0.0;
-    // each entry's force, rows side by side
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : contacts, on_plates) \
-    reduction(max : deepest)
-    for (std::ptrdiff_t row = 0; row < n; ++row) {
-      const auto i = static_cast<std::size_t>(row);
-      contacts_of(
-          i, scene, list, table, shares,
-          [&](std::uint32_t e, std::uint32_t j, const ContactGeometry3& g, const PairParameters& p,
-              Vec3& spring) {
-            const ContactForce3 c = contact_force<N, T>(p, g, spring, dt);
-            force_[e] = c.force, torque_i_[e] = c.torque_i, torque_j_[e] = c.torque_j;
-            if (list.with_rolling) {
-              const Vec3 m = rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i],
-                                               s.angular_velocity[j], rim_of(s, i), rim_of(s, j),
-                                               list.rolling[e], dt);
-              torque_i_[e] += m, torque_j_[e] -= m;
-            }
-            ++contacts;
-            deepest = std::max(deepest, g.overlap / std::min(s.radius[i], s.radius[j]));
-          },
-          [&](std::uint32_t e, std::uint32_t w, const ContactGeometry3& g, const PairParameters& p,
-              Vec3& spring) {
-            const ContactForce3 c = contact_force<N, T>(p, g, spring, dt);
-            plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
-            if (list.with_rolling)
-              plate_torque_[e] += rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i],
-                                                    scene.plates[w].angular_velocity, rim_of(s, i),
-                                                    0.0, list.plate_rolling[e], dt);
-            ++contacts, ++on_plates;
-            deepest = std::max(deepest, g.overlap / s.radius[i]);
-          },
-          [&](std::uint32_t e, bool plate) {
-            if (plate) {
-              list.plate_spring[e] = plate_force_[e] = plate_torque_[e] = {};
-              if (list.with_rolling) list.plate_rolling[e] = {};
-            } else {
-              list.spring[e] = force_[e] = torque_i_[e] = torque_j_[e] = {};
-              if (list.with_rolling) list.rolling[e] = {};
-            }
-          });
-    }
-    // each sphere's sum, in a fixed order
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::ptrdiff_t k = 0; k < n; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      Vec3 f = s.force[i], m = s.torque[i];
-      for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e)
-        f += force_[e], m += torque_i_[e];
-      for (std::uint32_t q = list.second_offset[i]; q < list.second_offset[i + 1]; ++q) {
-        const std::uint32_t e = list.second_entry[q];
-        f -= force_[e], m += torque_j_[e];
-      }
-      for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e)
-        f += plate_force_[e], m += plate_torque_[e];
-      s.force[i] = f, s.torque[i] = m;
-    }
-    for (Plane& p : scene.plates) p.force = {};
-    for (std::size_t i = 0; i < s.size(); ++i)
-      for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e)
-        scene.plates[list.plate[e]].force -= plate_force_[e];
-    return ContactPass3{contacts, on_plates, deepest};
+    return add_with<N, T>(scene, list, table, settings, threads);
   });
 }
 

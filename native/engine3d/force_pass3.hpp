@@ -1,9 +1,11 @@
 #pragma once
 // The contact forces of a scene of spheres: every touching pair of the list and every sphere on
 // a plate, through the contact laws of src/talus in 3D, on any number of threads with the same
-// bits: each entry's force is computed once (rows side by side), then each sphere sums its
-// entries' forces in a fixed order (its row, then the entries where it is second, then its
-// plates), never by atomics.
+// bits. The rows are cut into blocks by the sphere count alone (force_block_rows); a thread takes
+// a block at a time and its spheres sum the block's pair contacts in entry order (two computed
+// at a time, engine3d/pair_lanes3.hpp), then their plates'; a pair whose second sphere lies in
+// a later block keeps its force, which that sphere adds after, in entry order. The order of
+// every sum is thus fixed, whatever the threads, and no atomics are needed.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -23,6 +25,13 @@ struct ContactPass3 {
   double deepest = 0.0;
 };
 
+/// A touching entry of a block of rows: d = r_i - r_j (j's image), its entry and its first sphere.
+struct Touching3 {
+  Vec3 d;
+  std::uint32_t entry;
+  std::uint32_t i;
+};
+
 class ForcePass3 {
 public:
   /// Adds the contact forces and torques to every sphere's force and torque, sets each plate's
@@ -30,12 +39,26 @@ public:
   ContactPass3 add(Scene3& scene, SphereList& list, const PairTable& table,
                    const Settings3& settings, int threads);
 
-  /// The bytes its per-entry forces take.
+  /// The bytes its buffers take: the deferred forces, the plates' and the touching entries'.
   std::size_t bytes() const;
 
 private:
-  std::vector<Vec3> force_, torque_i_, torque_j_; // per pair entry
-  std::vector<Vec3> plate_force_, plate_torque_;  // per sphere-plate entry
+  struct PlateTally3 {
+    std::size_t contacts = 0;
+    double deepest = 0.0;
+  };
+  template <class N, class T>
+  ContactPass3 add_with(Scene3& scene, SphereList& list, const PairTable& table,
+                        const Settings3& settings, int threads);
+  // the plate contacts of spheres [first, last), added to them and kept for the plates' sums
+  template <class N, class T>
+  PlateTally3 plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
+                           std::uint32_t first, std::uint32_t last, double dt, LeverShares shares);
+
+  // per pair entry whose second sphere is in a later block: its force on i, its torque on j
+  std::vector<Vec3> deferred_force_, deferred_torque_j_;
+  std::vector<Vec3> plate_force_, plate_torque_; // per sphere-plate entry
+  std::vector<std::vector<Touching3>> found_;    // per thread: its block's touching entries
 };
 
 /// The elastic energy stored in the contacts (J): the normal laws' and the springs'.

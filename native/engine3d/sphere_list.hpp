@@ -22,8 +22,8 @@ struct SphereList {
   std::vector<std::uint32_t> neighbour;  ///< j > i, ascending within a row
   std::vector<Shift3> shift;
   std::vector<Vec3> spring; ///< tangential spring (m) of each entry, 0 when not touching
-  /// CSR over spheres: the entries whose second sphere is k, ascending (each sphere's forces are
-  /// summed from its entries in this fixed order, whatever the threads: force_pass3.hpp).
+  /// CSR over spheres: the entries whose second sphere is k, ascending (a sphere adds the forces
+  /// of those from earlier force blocks in this order, whatever the threads: force_pass3.hpp).
   std::vector<std::uint32_t> second_offset;
   std::vector<std::uint32_t> second_entry;
   std::vector<std::uint32_t> plate_offset; ///< CSR over spheres: their plates within reach

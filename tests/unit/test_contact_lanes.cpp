@@ -13,6 +13,7 @@
 
 #include "core/contact_lanes.hpp"
 #include "core/contact_vectors.hpp"
+#include "support/lane_parameter_sets.hpp"
 #include "talus/law_table.hpp"
 
 namespace talus {
@@ -50,22 +51,9 @@ Sample draw(std::mt19937_64& rng) {
   return s;
 }
 
-// Three parameter sets: a damping rate (LAMMPS' way), a damping from the restitution (square
-// root of m_eff), and a mixed pair; each with its own Hertz and tangential damping.
-std::vector<PairParameters> parameter_sets() {
-  Material a, b, c;
-  a.normal_stiffness = 1e5, a.normal_damping_rate = 100.0, a.tangential_damping = 50.0;
-  a.hertz_damping = 1e-4;
-  b.normal_stiffness = 3e4, b.restitution = 0.5, b.friction = 0.3, b.tangential_damping = 1e3;
-  b.hertz_damping = 2e-5;
-  c.young = 5e7, c.poisson = 0.25, c.hertz_damping = 1e-5, c.tangential_damping = 20.0;
-  c.normal_stiffness = 2e5, c.friction = 0.8, c.restitution = 0.7;
-  return {mix(a, a, 1.0), mix(b, b, 1.0), mix(b, c, 1.0)};
-}
-
 // `with_friction`: the law reaches the Coulomb limit (not so for the frictionless law)
 template <class N, class T> void expect_lanes_match_scalar(const char* laws, bool with_friction) {
-  const std::vector<PairParameters> params = parameter_sets();
+  const std::vector<PairParameters> params = testing::lane_parameter_sets();
   std::mt19937_64 rng(7);
   const double dt = 1e-5;
   int compared = 0, slipping = 0, released = 0;

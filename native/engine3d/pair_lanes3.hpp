@@ -1,0 +1,227 @@
+#pragma once
+// The pair contacts of a block of rows of the sphere list, two at a time (one per SIMD lane,
+// core/lanes.hpp), from the laws of src/talus in 3D: first the touch test writes down the
+// touching entries without a branch per entry, then their forces are computed side by side and
+// added to both spheres in entry order, or, for a second sphere beyond the block, kept in the
+// entry's deferred force. Each lane rounds as the double code does, so the results are the
+// scalar ones to the bit.
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/lanes.hpp"
+#include "core/vec3.hpp"
+#include "engine3d/force_pass3.hpp"
+#include "engine3d/scene3.hpp"
+#include "engine3d/sphere_list.hpp"
+#include "materials/pair_table.hpp"
+#include "talus/contact_force.hpp"
+#include "talus/contact_geometry_3d.hpp"
+#include "talus/rolling_resistance.hpp"
+
+namespace talus {
+
+/// The lanes the 3D pair contacts are computed in: two, as the 2D engine's. Four (a 32-byte
+/// vector built for SSE2) hold each 3D vector in six registers, and the law's spills to memory
+/// cost more than the second chain of arithmetic gains (docs/performance.md).
+using ContactLanes3 = Lanes;
+
+/// The number of lanes of a SIMD type of doubles.
+template <class L> inline constexpr int lane_count = static_cast<int>(sizeof(L) / sizeof(double));
+
+/// Lanes whose lane k is f(k).
+template <class L, class F> L lanes_from(F&& f) {
+  L v{};
+  for (int k = 0; k < lane_count<L>; ++k) v[k] = f(k);
+  return v;
+}
+/// Vectors of lanes whose lane k is the vector f(k).
+template <class L, class F> Vec3Of<L> vec3_lanes_from(F&& f) {
+  Vec3Of<L> v{};
+  for (int k = 0; k < lane_count<L>; ++k) {
+    const Vec3 a = f(k);
+    v.x[k] = a.x, v.y[k] = a.y, v.z[k] = a.z;
+  }
+  return v;
+}
+template <class L> Vec3 lane_of(const Vec3Of<L>& v, int k) {
+  return {v.x[k], v.y[k], v.z[k]};
+}
+/// One lane of a contact's geometry, as the double code has it.
+template <class L> ContactGeometry3 lane_of(const ContactGeometry3Of<L>& g, int k) {
+  return {lane_of(g.normal, k), g.overlap[k], g.r_eff[k],    g.m_eff[k],
+          g.arm_i[k],           g.arm_j[k],   g.v_normal[k], lane_of(g.v_tangent, k)};
+}
+
+/// Where a block's pair forces go: its spheres [first, last) sum theirs directly; an entry whose
+/// second sphere lies beyond `last` keeps its force and j's torque (deferred_*) for later.
+struct BlockSums3 {
+  Spheres& s;
+  std::uint32_t first, last;
+  Vec3* deferred_force;
+  Vec3* deferred_torque_j;
+};
+
+/// What a block's pair contacts met.
+struct PairTally3 {
+  std::size_t contacts = 0;
+  double deepest = 0.0;
+};
+
+/// v where `keep` has every bit set, 0 where it has none.
+inline Vec3 kept_if(const Vec3& v, std::uint64_t keep) {
+  const auto masked = [keep](double x) {
+    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) & keep);
+  };
+  return {masked(v.x), masked(v.y), masked(v.z)};
+}
+
+/// Tests every entry of rows [first, last): a touching one is written down in `found` (which has
+/// room for every entry of the rows); the springs of the others are cleared (and their rolling
+/// springs, `Rolling`). An entry beyond the block starts with no deferred force. Returns the count
+/// written. The arrays are taken as pointers once: the loop has more of them than registers.
+template <bool Rolling>
+std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& domain,
+                             const BlockSums3& b, Touching3* found) {
+  const Vec3* const position = s.position.data();
+  const double* const radius = s.radius.data();
+  const std::uint32_t* const row_offset = list.row_offset.data();
+  const std::uint32_t* const neighbour = list.neighbour.data();
+  const Shift3* const shift = list.shift.data();
+  Vec3* const spring = list.spring.data();
+  Vec3* const rolling = list.rolling.data();
+  const Vec3 box = domain.size();
+  std::size_t count = 0;
+  for (std::uint32_t i = b.first; i < b.last; ++i) {
+    const Vec3 ri = position[i];
+    const double radius_i = radius[i];
+    const std::uint32_t end = row_offset[i + 1];
+    for (std::uint32_t e = row_offset[i]; e < end; ++e) {
+      const std::uint32_t j = neighbour[e];
+      Vec3 rj = position[j];
+      const Shift3 image = shift[e];
+      if (image.x != 0 || image.y != 0 || image.z != 0) [[unlikely]] // a periodic image
+        rj += Vec3{image.x * box.x, image.y * box.y, image.z * box.z};
+      const Vec3 d = ri - rj;
+      const double dist2 = norm2(d);
+      const double reach = radius_i + radius[j];
+      // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
+      // that it reaches the forces and the stability guard
+      const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
+      found[count] = {d, e, i};
+      count += touches;
+      // which entries touch follows no pattern a branch predictor could learn: masks
+      const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
+      spring[e] = kept_if(spring[e], keep);
+      if constexpr (Rolling) rolling[e] = kept_if(rolling[e], keep);
+      if (j >= b.last) b.deferred_force[e] = b.deferred_torque_j[e] = {};
+    }
+  }
+  return count;
+}
+
+/// The pair parameters of contacts side by side, in lanes L: once for a scene of one material.
+template <class L> class PairLanes3 {
+public:
+  explicit PairLanes3(const PairTable& table) : table_(table), one_(table.material_count() == 1) {
+    if (one_) uniform_ = broadcast(table(0, 0));
+  }
+  /// The parameters of the pairs (i[k], j[k]) in lane k.
+  PairParametersOf<L> operator()(const Spheres& s, const std::uint32_t* i,
+                                 const std::uint32_t* j) const {
+    if (one_) return uniform_;
+    const auto pair = [&](int k) -> const PairParameters& {
+      return table_(s.material[i[k]], s.material[j[k]]);
+    };
+    const auto two = [](double x, double y) { return Lanes{x, y}; };
+    static_assert(lane_count<L> == 2);
+    return PairParametersOf<Lanes>::gather(pair(0), pair(1), two);
+  }
+
+private:
+  static PairParametersOf<L> broadcast(const PairParameters& p) {
+    return PairParametersOf<L>::gather(p, p, [](double x, double) { return L{} + x; });
+  }
+  const PairTable& table_;
+  bool one_;
+  PairParametersOf<L> uniform_{};
+};
+
+/// Rolling resistance's torque on i of a contact with rolling spring `theta` (turned into the
+/// tangent plane and advanced a step here), against a sphere or plate of spin w_j and rim inertia
+/// rim_j (0: a plate, infinitely heavy). None where the pair does not roll with resistance.
+template <class N>
+Vec3 rolling_torque(const PairParameters& p, const ContactGeometry3& g, double normal_force,
+                    const Vec3& w_i, const Vec3& w_j, double rim_i, double rim_j, Vec3& theta,
+                    double dt) {
+  if (p.rolling_friction == 0.0) return {};
+  theta = into_tangent_plane(theta, g.normal);
+  return RollingLaw::torque<N>(p, g, not_below_zero(normal_force), rolling_spin(w_i, w_j, g.normal),
+                               rolling_inertia(rim_i, rim_j), theta, dt);
+}
+
+/// A sphere's inertia about a point of its rim, which rolling resistance's dashpot takes.
+inline double rim_of(const Spheres& s, std::size_t i) {
+  return rim_inertia(s.inertia[i], s.mass[i], s.radius[i]);
+}
+
+/// The forces of found[0, count), as many at a time as L has lanes (the last ones repeated to
+/// fill them), added in entry order: to i, and to j or the entry's deferred force.
+template <class N, class T, class L>
+[[gnu::flatten]] PairTally3 pair_forces3(const BlockSums3& b, SphereList& list,
+                                         const PairLanes3<L>& pairs, const PairTable& table,
+                                         const Touching3* found, std::size_t count, double dt,
+                                         LeverShares shares) {
+  constexpr int width = lane_count<L>;
+  Spheres& s = b.s;
+  PairTally3 tally;
+  for (std::size_t t = 0; t < count; t += width) {
+    const int live = static_cast<int>(std::min<std::size_t>(width, count - t));
+    std::uint32_t entry[width], i[width], j[width];
+    for (int k = 0; k < width; ++k) {
+      const Touching3& c = found[t + static_cast<std::size_t>(std::min(k, live - 1))];
+      entry[k] = c.entry, i[k] = c.i, j[k] = list.neighbour[c.entry];
+    }
+    const auto each = [&](const auto& field) { return [&](int k) { return field[i[k]]; }; };
+    const auto each_j = [&](const auto& field) { return [&](int k) { return field[j[k]]; }; };
+    const L ri = lanes_from<L>(each(s.radius)), rj = lanes_from<L>(each_j(s.radius));
+    const Vec3Of<L> d = vec3_lanes_from<L>(
+        [&](int k) { return found[t + static_cast<std::size_t>(std::min(k, live - 1))].d; });
+    const ContactGeometry3Of<L> g = pair_geometry(
+        d, square_root(dot(d, d)), ri, rj, lanes_from<L>(each(s.mass)),
+        lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)),
+        vec3_lanes_from<L>(each_j(s.velocity)), vec3_lanes_from<L>(each(s.angular_velocity)),
+        vec3_lanes_from<L>(each_j(s.angular_velocity)),
+        N::uses_r_eff || T::uses_r_eff || list.with_rolling, shares);
+    Vec3Of<L> spring{};
+    if constexpr (T::has_history)
+      spring = vec3_lanes_from<L>([&](int k) { return list.spring[entry[k]]; });
+    const ContactForce3Of<L> f = contact_force<N, T>(pairs(s, i, j), g, spring, dt);
+    for (int k = 0; k < live; ++k) {
+      const Vec3 force = lane_of(f.force, k);
+      Vec3 torque_i = lane_of(f.torque_i, k), torque_j = lane_of(f.torque_j, k);
+      if constexpr (T::has_history) list.spring[entry[k]] = lane_of(spring, k);
+      if (list.with_rolling) {
+        const Vec3 m =
+            rolling_torque<N>(table(s.material[i[k]], s.material[j[k]]), lane_of(g, k),
+                              f.normal_force[k], s.angular_velocity[i[k]], s.angular_velocity[j[k]],
+                              rim_of(s, i[k]), rim_of(s, j[k]), list.rolling[entry[k]], dt);
+        torque_i += m, torque_j -= m;
+      }
+      s.force[i[k]] += force, s.torque[i[k]] += torque_i;
+      if (j[k] < b.last) {
+        s.force[j[k]] -= force, s.torque[j[k]] += torque_j;
+      } else {
+        b.deferred_force[entry[k]] = force, b.deferred_torque_j[entry[k]] = torque_j;
+      }
+    }
+    const L ratio = g.overlap / smaller(ri, rj);
+    for (int k = 0; k < live; ++k) tally.deepest = std::max(tally.deepest, ratio[k]);
+    tally.contacts += static_cast<std::size_t>(live);
+  }
+  return tally;
+}
+
+} // namespace talus
