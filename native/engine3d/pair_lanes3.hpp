@@ -31,20 +31,17 @@ using ContactLanes3 = Lanes;
 /// The number of lanes of a SIMD type of doubles.
 template <class L> inline constexpr int lane_count = static_cast<int>(sizeof(L) / sizeof(double));
 
-/// Lanes whose lane k is f(k).
+/// Lanes whose lane k is f(k). Built as one initialiser, so that the values go to the register
+/// directly, not through memory.
 template <class L, class F> L lanes_from(F&& f) {
-  L v{};
-  for (int k = 0; k < lane_count<L>; ++k) v[k] = f(k);
-  return v;
+  static_assert(lane_count<L> == 2);
+  return L{f(0), f(1)};
 }
 /// Vectors of lanes whose lane k is the vector f(k).
 template <class L, class F> Vec3Of<L> vec3_lanes_from(F&& f) {
-  Vec3Of<L> v{};
-  for (int k = 0; k < lane_count<L>; ++k) {
-    const Vec3 a = f(k);
-    v.x[k] = a.x, v.y[k] = a.y, v.z[k] = a.z;
-  }
-  return v;
+  static_assert(lane_count<L> == 2);
+  const Vec3 a = f(0), b = f(1);
+  return {L{a.x, b.x}, L{a.y, b.y}, L{a.z, b.z}};
 }
 template <class L> Vec3 lane_of(const Vec3Of<L>& v, int k) {
   return {v.x[k], v.y[k], v.z[k]};
