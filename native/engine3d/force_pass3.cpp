@@ -84,24 +84,35 @@ ContactPass3 ForcePass3::add_with(Scene3& scene, SphereList& list, const PairTab
   const PairLanes3<ContactLanes3> pairs(table);
   std::size_t contacts = 0, on_plates = 0;
   double deepest = 0.0;
-  // each block's spheres sum the contacts among them in entry order, then their plates'
+  // each block's spheres sum their weights, the contacts among them in entry order, then their
+  // plates'
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) \
     reduction(+ : contacts, on_plates) reduction(max : deepest)
   for (std::ptrdiff_t block = 0; block < blocks; ++block) {
     const auto first = static_cast<std::uint32_t>(block) * rows;
     const auto last = static_cast<std::uint32_t>(std::min<std::size_t>(n, first + rows));
+    for (std::uint32_t i = first; i < last; ++i) {
+      s.force[i] = s.is_free(i) ? s.mass[i] * scene.gravity : Vec3{};
+      s.torque[i] = {};
+    }
     const BlockSums3 sums{s, first, last, deferred_force_.data(), deferred_torque_j_.data()};
     std::vector<Touching3>& found = found_[static_cast<std::size_t>(omp_get_thread_num())];
-    found.resize(
-        std::max<std::size_t>(found.size(), list.row_offset[last] - list.row_offset[first]));
-    const std::size_t touching =
-        list.with_rolling ? touching_entries<true>(s, list, scene.domain, sums, found.data())
-                          : touching_entries<false>(s, list, scene.domain, sums, found.data());
-    const PairTally3 tally =
-        pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
+    // by stretches of rows, so that the touching entries written down are still in the cache
+    // when their forces are computed
+    for (std::uint32_t r0 = first; r0 < last; r0 += stretch_rows) {
+      const std::uint32_t r1 = std::min(last, r0 + stretch_rows);
+      found.resize(std::max<std::size_t>(found.size(), list.row_offset[r1] - list.row_offset[r0]));
+      const std::size_t touching =
+          list.with_rolling
+              ? touching_entries<true>(s, list, scene.domain, sums, r0, r1, found.data())
+              : touching_entries<false>(s, list, scene.domain, sums, r0, r1, found.data());
+      const PairTally3 tally =
+          pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
+      contacts += tally.contacts, deepest = std::max(deepest, tally.deepest);
+    }
     const PlateTally3 plates = plate_forces<N, T>(scene, list, table, first, last, dt, shares);
-    contacts += tally.contacts + plates.contacts, on_plates += plates.contacts;
-    deepest = std::max({deepest, tally.deepest, plates.deepest});
+    contacts += plates.contacts, on_plates += plates.contacts;
+    deepest = std::max(deepest, plates.deepest);
   }
   // then the contacts with spheres of the blocks before, in entry order
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -159,8 +170,8 @@ ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table
   return tally;
 }
 
-ContactPass3 ForcePass3::add(Scene3& scene, SphereList& list, const PairTable& table,
-                             const Settings3& settings, int threads) {
+ContactPass3 ForcePass3::compute(Scene3& scene, SphereList& list, const PairTable& table,
+                                 const Settings3& settings, int threads) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
     return add_with<N, T>(scene, list, table, settings, threads);
   });

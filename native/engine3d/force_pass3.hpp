@@ -34,15 +34,18 @@ struct Touching3 {
 
 class ForcePass3 {
 public:
-  /// Adds the contact forces and torques to every sphere's force and torque, sets each plate's
-  /// force, and advances the springs of the list by one step `settings.timestep`.
-  ContactPass3 add(Scene3& scene, SphereList& list, const PairTable& table,
-                   const Settings3& settings, int threads);
+  /// Sets every sphere's force to its weight (none for a sphere that is not free) plus its
+  /// contacts' forces, and its torque to its contacts', sets each plate's force, and advances the
+  /// springs of the list by one step `settings.timestep`.
+  ContactPass3 compute(Scene3& scene, SphereList& list, const PairTable& table,
+                       const Settings3& settings, int threads);
 
   /// The bytes its buffers take: the deferred forces, the plates' and the touching entries'.
   std::size_t bytes() const;
 
 private:
+  // rows whose touching entries are written down, then computed: their entries fit in L1
+  static constexpr std::uint32_t stretch_rows = 64;
   struct PlateTally3 {
     std::size_t contacts = 0;
     double deepest = 0.0;

@@ -75,13 +75,15 @@ inline Vec3 kept_if(const Vec3& v, std::uint64_t keep) {
   return {masked(v.x), masked(v.y), masked(v.z)};
 }
 
-/// Tests every entry of rows [first, last): a touching one is written down in `found` (which has
-/// room for every entry of the rows); the springs of the others are cleared (and their rolling
-/// springs, `Rolling`). An entry beyond the block starts with no deferred force. Returns the count
-/// written. The arrays are taken as pointers once: the loop has more of them than registers.
+/// Tests every entry of rows [r0, r1) of the block: a touching one is written down in `found`
+/// (which has room for every entry of the rows); the springs of the others are cleared (and their
+/// rolling springs, `Rolling`). An entry beyond the block starts with no deferred force. Returns
+/// the count written. The arrays are taken as pointers once: the loop has more of them than
+/// registers.
 template <bool Rolling>
 std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& domain,
-                             const BlockSums3& b, Touching3* found) {
+                             const BlockSums3& b, std::uint32_t r0, std::uint32_t r1,
+                             Touching3* found) {
   const Vec3* const position = s.position.data();
   const double* const radius = s.radius.data();
   const std::uint32_t* const row_offset = list.row_offset.data();
@@ -91,7 +93,7 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
   Vec3* const rolling = list.rolling.data();
   const Vec3 box = domain.size();
   std::size_t count = 0;
-  for (std::uint32_t i = b.first; i < b.last; ++i) {
+  for (std::uint32_t i = r0; i < r1; ++i) {
     const Vec3 ri = position[i];
     const double radius_i = radius[i];
     const std::uint32_t end = row_offset[i + 1];

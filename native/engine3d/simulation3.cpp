@@ -96,15 +96,7 @@ void Simulation3::set_up() {
 }
 
 void Simulation3::compute_forces() {
-  Spheres& s = scene_.spheres;
-  const auto n = static_cast<std::ptrdiff_t>(s.size());
-#pragma omp parallel for schedule(static) num_threads(threads_)
-  for (std::ptrdiff_t k = 0; k < n; ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    s.force[i] = s.is_free(i) ? s.mass[i] * scene_.gravity : Vec3{};
-    s.torque[i] = {};
-  }
-  last_ = force_pass_.add(scene_, list_, table_, settings_, threads_);
+  last_ = force_pass_.compute(scene_, list_, table_, settings_, threads_);
 }
 
 // Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
