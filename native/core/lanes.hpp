@@ -21,8 +21,30 @@ namespace talus {
 
 using Lanes = double __attribute__((vector_size(16)));
 using LaneMask = std::int64_t __attribute__((vector_size(16))); // a comparison's result
-inline constexpr LaneMask lane_sign_bit = {std::numeric_limits<std::int64_t>::min(),
-                                           std::numeric_limits<std::int64_t>::min()};
+
+/// What the contact laws need of a GCC vector V of doubles, whose comparisons give the mask M,
+/// but its square root (talus/number.hpp): each lane rounds as the double code does.
+template <class V, class M> struct VectorNumber {
+  static constexpr M sign_bits = M{} + std::numeric_limits<std::int64_t>::min();
+  static V select(M condition, V a, V b) { return condition ? a : b; }
+  static V magnitude(V x) { // clears the sign bits
+    return reinterpret_cast<V>(reinterpret_cast<M>(x) & ~sign_bits);
+  }
+  static V copy_sign(V size, V sign) {
+    return reinterpret_cast<V>((reinterpret_cast<M>(size) & ~sign_bits) |
+                               (reinterpret_cast<M>(sign) & sign_bits));
+  }
+  static V power(V x, double y) { // no SIMD pow: lane by lane, as the scalar code
+    V result{};
+    for (std::size_t k = 0; k < sizeof(V) / sizeof(double); ++k) result[k] = std::pow(x[k], y);
+    return result;
+  }
+  static bool all_zero(V x) {
+    for (std::size_t k = 0; k < sizeof(V) / sizeof(double); ++k)
+      if (x[k] != 0.0) return false;
+    return true;
+  }
+};
 
 /// a[0] and a[1] as lanes, and back.
 inline Lanes lanes_at(const double* a) {
@@ -51,29 +73,13 @@ template <class XY> void store_components(XY* a, Lanes x, Lanes y) {
 }
 
 /// The arithmetic of the contact laws on lanes (talus/number.hpp): each lane rounds as double.
-template <> struct Number<Lanes> {
+template <> struct Number<Lanes> : VectorNumber<Lanes, LaneMask> {
   static Lanes square_root(Lanes x) {
 #if defined(__SSE2__)
     return _mm_sqrt_pd(x);
 #else
     return Lanes{std::sqrt(x[0]), std::sqrt(x[1])};
 #endif
-  }
-  static Lanes select(LaneMask condition, Lanes a, Lanes b) {
-    return condition ? a : b;
-  }
-  static Lanes magnitude(Lanes x) { // clears the sign bits
-    return reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(x) & ~lane_sign_bit);
-  }
-  static Lanes copy_sign(Lanes size, Lanes sign) {
-    return reinterpret_cast<Lanes>((reinterpret_cast<LaneMask>(size) & ~lane_sign_bit) |
-                                   (reinterpret_cast<LaneMask>(sign) & lane_sign_bit));
-  }
-  static Lanes power(Lanes x, double y) { // no SIMD pow: lane by lane, as the scalar code
-    return Lanes{std::pow(x[0], y), std::pow(x[1], y)};
-  }
-  static bool all_zero(Lanes x) {
-    return x[0] == 0.0 && x[1] == 0.0;
   }
 };
 

@@ -60,6 +60,10 @@ double rolling_energy(const PairParameters& p, const ContactGeometry3& g, const 
 
 } // namespace
 
+int pair_contact_lanes() {
+  return lane_count<ContactLanes3>;
+}
+
 std::size_t ForcePass3::bytes() const {
   std::size_t found = 0;
   for (const auto& f : found_) found += f.capacity() * sizeof(Touching3);

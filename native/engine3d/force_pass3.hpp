@@ -64,6 +64,10 @@ private:
   std::vector<std::vector<Touching3>> found_;    // per thread: its block's touching entries
 };
 
+/// How many pair contacts the force pass computes at a time: 4 where the 3D engine is built for
+/// AVX2 (CMake's TALUS_AVX2), else 2 (SSE2).
+int pair_contact_lanes();
+
 /// The elastic energy stored in the contacts (J): the normal laws' and the springs'.
 double contact_elastic_energy(const Scene3& scene, const SphereList& list, const PairTable& table,
                               const Settings3& settings);

@@ -6,12 +6,16 @@
 // entry's deferred force. Each lane rounds as the double code does, so the results are the
 // scalar ones to the bit.
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "core/lanes.hpp"
+#if defined(__AVX2__)
+#include "core/lanes4.hpp"
+#endif
 #include "core/vec3.hpp"
 #include "engine3d/force_pass3.hpp"
 #include "engine3d/scene3.hpp"
@@ -23,10 +27,12 @@
 
 namespace talus {
 
-/// The lanes the 3D pair contacts are computed in: two, as the 2D engine's. Four (a 32-byte
-/// vector built for SSE2) hold each 3D vector in six registers, and the law's spills to memory
-/// cost more than the second chain of arithmetic gains (docs/performance.md).
+/// The lanes the 3D pair contacts are computed in: four in a build with AVX2, else two (SSE2).
+#if defined(__AVX2__)
+using ContactLanes3 = Lanes4;
+#else
 using ContactLanes3 = Lanes;
+#endif
 
 /// The number of lanes of a SIMD type of doubles.
 template <class L> inline constexpr int lane_count = static_cast<int>(sizeof(L) / sizeof(double));
@@ -34,14 +40,23 @@ template <class L> inline constexpr int lane_count = static_cast<int>(sizeof(L) 
 /// Lanes whose lane k is f(k). Built as one initialiser, so that the values go to the register
 /// directly, not through memory.
 template <class L, class F> L lanes_from(F&& f) {
-  static_assert(lane_count<L> == 2);
-  return L{f(0), f(1)};
+  if constexpr (lane_count<L> == 2) {
+    return L{f(0), f(1)};
+  } else {
+    static_assert(lane_count<L> == 4);
+    return L{f(0), f(1), f(2), f(3)};
+  }
 }
 /// Vectors of lanes whose lane k is the vector f(k).
 template <class L, class F> Vec3Of<L> vec3_lanes_from(F&& f) {
-  static_assert(lane_count<L> == 2);
-  const Vec3 a = f(0), b = f(1);
-  return {L{a.x, b.x}, L{a.y, b.y}, L{a.z, b.z}};
+  if constexpr (lane_count<L> == 2) {
+    const Vec3 a = f(0), b = f(1);
+    return {L{a.x, b.x}, L{a.y, b.y}, L{a.z, b.z}};
+  } else {
+    static_assert(lane_count<L> == 4);
+    const Vec3 a = f(0), b = f(1), c = f(2), d = f(3);
+    return {L{a.x, b.x, c.x, d.x}, L{a.y, b.y, c.y, d.y}, L{a.z, b.z, c.z, d.z}};
+  }
 }
 template <class L> Vec3 lane_of(const Vec3Of<L>& v, int k) {
   return {v.x[k], v.y[k], v.z[k]};
@@ -121,6 +136,22 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
   return count;
 }
 
+/// The parameters *p[k] of lane k's pair, in lanes L.
+template <class L>
+PairParametersOf<L> parameters_in_lanes(const std::array<const PairParameters*, lane_count<L>>& p) {
+  const auto two = [](double x, double y) { return Lanes{x, y}; };
+  if constexpr (lane_count<L> == 2) {
+    return PairParametersOf<Lanes>::gather(*p[0], *p[1], two);
+  } else {
+    static_assert(lane_count<L> == 4);
+    return PairParametersOf<L>::gather(PairParametersOf<Lanes>::gather(*p[0], *p[1], two),
+                                       PairParametersOf<Lanes>::gather(*p[2], *p[3], two),
+                                       [](Lanes x, Lanes y) {
+                                         return L{x[0], x[1], y[0], y[1]};
+                                       });
+  }
+}
+
 /// The pair parameters of contacts side by side, in lanes L: once for a scene of one material.
 template <class L> class PairLanes3 {
 public:
@@ -131,12 +162,10 @@ public:
   PairParametersOf<L> operator()(const Spheres& s, const std::uint32_t* i,
                                  const std::uint32_t* j) const {
     if (one_) return uniform_;
-    const auto pair = [&](int k) -> const PairParameters& {
-      return table_(s.material[i[k]], s.material[j[k]]);
-    };
-    const auto two = [](double x, double y) { return Lanes{x, y}; };
-    static_assert(lane_count<L> == 2);
-    return PairParametersOf<Lanes>::gather(pair(0), pair(1), two);
+    std::array<const PairParameters*, lane_count<L>> pair;
+    for (int k = 0; k < lane_count<L>; ++k)
+      pair[static_cast<std::size_t>(k)] = &table_(s.material[i[k]], s.material[j[k]]);
+    return parameters_in_lanes<L>(pair);
   }
 
 private:

@@ -88,6 +88,8 @@ void print_system(const ChuteOptions& o, const ChuteBench& c, const Simulation3&
              "of in.chute, {} thread(s), {} round(s) of {} steps after {} steps of flow\n",
              sim.scene().spheres.size(), c.nx, c.ny, c.layers, sim.threads(), o.rounds, o.steps,
              o.flow_steps);
+  fmt::print("  pair contacts:              {} at a time ({})\n", pair_contact_lanes(),
+             pair_contact_lanes() == 4 ? "AVX2" : "SSE2");
   fmt::print("  contacts per free sphere:   {:.3f}\n", sim.coordination());
   fmt::print("  list entries per sphere:    {:.3f} (half list)\n",
              static_cast<double>(sim.list().pair_count()) / n);
