@@ -72,8 +72,8 @@ std::size_t ForcePass3::bytes() const {
 }
 
 template <class N, class T>
-ContactPass3 ForcePass3::add_with(Scene3& scene, SphereList& list, const PairTable& table,
-                                  const Settings3& settings, int threads) {
+ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const PairTable& table,
+                                      const Settings3& settings, int threads) {
   Spheres& s = scene.spheres;
   const std::size_t n = s.size();
   const double dt = settings.timestep;
@@ -110,26 +110,30 @@ ContactPass3 ForcePass3::add_with(Scene3& scene, SphereList& list, const PairTab
           list.with_rolling
               ? touching_entries<true>(s, list, scene.domain, sums, r0, r1, found.data())
               : touching_entries<false>(s, list, scene.domain, sums, r0, r1, found.data());
-      const PairTally3 tally =
+      const ContactTally3 tally =
           pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
       contacts += tally.contacts, deepest = std::max(deepest, tally.deepest);
     }
-    const PlateTally3 plates = plate_forces<N, T>(scene, list, table, first, last, dt, shares);
+    const ContactTally3 plates = plate_forces<N, T>(scene, list, table, first, last, dt, shares);
     contacts += plates.contacts, on_plates += plates.contacts;
     deepest = std::max(deepest, plates.deepest);
   }
   // then the contacts with spheres of the blocks before, in entry order
+  // (the first block has none before it)
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
-    const auto i = static_cast<std::size_t>(k);
-    const std::uint32_t block_entries = list.row_offset[i / rows * rows];
-    Vec3 f = s.force[i], m = s.torque[i];
-    for (std::uint32_t q = list.second_offset[i]; q < list.second_offset[i + 1]; ++q) {
-      const std::uint32_t e = list.second_entry[q];
-      if (e >= block_entries) break;
-      f -= deferred_force_[e], m += deferred_torque_j_[e];
+  for (std::ptrdiff_t block = 1; block < blocks; ++block) {
+    const auto first = static_cast<std::uint32_t>(block) * rows;
+    const auto last = static_cast<std::uint32_t>(std::min<std::size_t>(n, first + rows));
+    const std::uint32_t block_entries = list.row_offset[first];
+    for (std::uint32_t i = first; i < last; ++i) {
+      Vec3 f = s.force[i], m = s.torque[i];
+      for (std::uint32_t q = list.second_offset[i]; q < list.second_offset[i + 1]; ++q) {
+        const std::uint32_t e = list.second_entry[q];
+        if (e >= block_entries) break;
+        f -= deferred_force_[e], m += deferred_torque_j_[e];
+      }
+      s.force[i] = f, s.torque[i] = m;
     }
-    s.force[i] = f, s.torque[i] = m;
   }
   for (Plane& p : scene.plates) p.force = {};
   for (std::size_t i = 0; i < n; ++i)
@@ -139,11 +143,11 @@ ContactPass3 ForcePass3::add_with(Scene3& scene, SphereList& list, const PairTab
 }
 
 template <class N, class T>
-ForcePass3::PlateTally3
-ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
-                         std::uint32_t first, std::uint32_t last, double dt, LeverShares shares) {
+ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
+                                       std::uint32_t first, std::uint32_t last, double dt,
+                                       LeverShares shares) {
   Spheres& s = scene.spheres;
-  PlateTally3 tally;
+  ContactTally3 tally;
   for (std::uint32_t i = first; i < last; ++i) {
     for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e) {
       const std::uint32_t w = list.plate[e];
@@ -177,7 +181,7 @@ ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table
 ContactPass3 ForcePass3::compute(Scene3& scene, SphereList& list, const PairTable& table,
                                  const Settings3& settings, int threads) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
-    return add_with<N, T>(scene, list, table, settings, threads);
+    return compute_with<N, T>(scene, list, table, settings, threads);
   });
 }
 

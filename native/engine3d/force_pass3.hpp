@@ -32,6 +32,13 @@ struct Touching3 {
   std::uint32_t i;
 };
 
+/// What a block's pair or plate contacts met: how many touch, the deepest overlap relative to the
+/// smaller radius.
+struct ContactTally3 {
+  std::size_t contacts = 0;
+  double deepest = 0.0;
+};
+
 class ForcePass3 {
 public:
   /// Sets every sphere's force to its weight (none for a sphere that is not free) plus its
@@ -46,17 +53,14 @@ public:
 private:
   // rows whose touching entries are written down, then computed: their entries fit in L1
   static constexpr std::uint32_t stretch_rows = 64;
-  struct PlateTally3 {
-    std::size_t contacts = 0;
-    double deepest = 0.0;
-  };
   template <class N, class T>
-  ContactPass3 add_with(Scene3& scene, SphereList& list, const PairTable& table,
-                        const Settings3& settings, int threads);
+  ContactPass3 compute_with(Scene3& scene, SphereList& list, const PairTable& table,
+                            const Settings3& settings, int threads);
   // the plate contacts of spheres [first, last), added to them and kept for the plates' sums
   template <class N, class T>
-  PlateTally3 plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
-                           std::uint32_t first, std::uint32_t last, double dt, LeverShares shares);
+  ContactTally3 plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
+                             std::uint32_t first, std::uint32_t last, double dt,
+                             LeverShares shares);
 
   // per pair entry whose second sphere is in a later block: its force on i, its torque on j
   std::vector<Vec3> deferred_force_, deferred_torque_j_;

@@ -76,12 +76,6 @@ struct BlockSums3 {
   Vec3* deferred_torque_j;
 };
 
-/// What a block's pair contacts met.
-struct PairTally3 {
-  std::size_t contacts = 0;
-  double deepest = 0.0;
-};
-
 /// v where `keep` has every bit set, 0 where it has none.
 inline Vec3 kept_if(const Vec3& v, std::uint64_t keep) {
   const auto masked = [keep](double x) {
@@ -198,13 +192,13 @@ inline double rim_of(const Spheres& s, std::size_t i) {
 /// The forces of found[0, count), as many at a time as L has lanes (the last ones repeated to
 /// fill them), added in entry order: to i, and to j or the entry's deferred force.
 template <class N, class T, class L>
-[[gnu::flatten]] PairTally3 pair_forces3(const BlockSums3& b, SphereList& list,
-                                         const PairLanes3<L>& pairs, const PairTable& table,
-                                         const Touching3* found, std::size_t count, double dt,
-                                         LeverShares shares) {
+[[gnu::flatten]] ContactTally3 pair_forces3(const BlockSums3& b, SphereList& list,
+                                            const PairLanes3<L>& pairs, const PairTable& table,
+                                            const Touching3* found, std::size_t count, double dt,
+                                            LeverShares shares) {
   constexpr int width = lane_count<L>;
   Spheres& s = b.s;
-  PairTally3 tally;
+  ContactTally3 tally;
   for (std::size_t t = 0; t < count; t += width) {
     const int live = static_cast<int>(std::min<std::size_t>(width, count - t));
     std::uint32_t entry[width], i[width], j[width];
