@@ -79,47 +79,56 @@ ContactPowers contact_powers(const Simulation& sim) {
   return out;
 }
 
-void EnergyLedger::start(const Simulation& sim) {
-  last_ = contact_powers(sim);
-  last_time_ = sim.time();
+void EnergyLedger::start(const ContactPowers& now, double time, double total) {
+  last_ = now;
+  last_time_ = time;
   damper_ = tangential_ = walls_ = 0.0;
-  start_total_ = energies(sim).total();
-  start_tangential_elastic_ = last_.tangential_elastic;
+  start_total_ = total;
+  start_tangential_elastic_ = now.tangential_elastic;
 }
 
-void EnergyLedger::observe(const Simulation& sim) {
-  const ContactPowers now = contact_powers(sim);
-  const double h = sim.time() - last_time_;
+void EnergyLedger::observe(const ContactPowers& now, double time) {
+  const double h = time - last_time_;
   damper_ += 0.5 * h * (last_.damper + now.damper);
   tangential_ += 0.5 * h * (last_.tangential + now.tangential);
   walls_ += 0.5 * h * (last_.walls + now.walls);
   last_ = now;
-  last_time_ = sim.time();
+  last_time_ = time;
 }
 
-void EnergyLedger::changed(double total_before, const Simulation& sim) {
-  const ContactPowers now = contact_powers(sim);
-  start_total_ += energies(sim).total() - total_before;
+void EnergyLedger::changed(const ContactPowers& now, double total_before, double total_now) {
+  start_total_ += total_now - total_before;
   // friction's dissipation is its work less the springs' energy gained: a spring the change
   // took away was not dissipated
   start_tangential_elastic_ += now.tangential_elastic - last_.tangential_elastic;
   last_ = now;
 }
 
-LedgerRow EnergyLedger::row(const Energies& e) {
+LedgerRow EnergyLedger::row(double total, double mechanical) {
   LedgerRow r;
   r.dissipated_damper = damper_;
   r.dissipated_friction = tangential_ - (last_.tangential_elastic - start_tangential_elastic_);
   r.wall_work = walls_;
-  r.imbalance =
-      e.total() + r.dissipated_damper + r.dissipated_friction - r.wall_work - start_total_;
-  largest_mechanical_ = std::max(largest_mechanical_, e.kinetic() + e.elastic);
+  r.imbalance = total + r.dissipated_damper + r.dissipated_friction - r.wall_work - start_total_;
+  largest_mechanical_ = std::max(largest_mechanical_, mechanical);
   const double in_play = largest_mechanical_ + std::abs(r.dissipated_damper) +
                          std::abs(r.dissipated_friction) + std::abs(r.wall_work);
   r.rise = r.imbalance - lowest_imbalance_;
   r.growth = in_play > 0.0 ? r.rise / in_play : 0.0;
   lowest_imbalance_ = std::min(lowest_imbalance_, r.imbalance);
   return r;
+}
+
+void start_ledger(EnergyLedger& ledger, const Simulation& sim) {
+  ledger.start(contact_powers(sim), sim.time(), energies(sim).total());
+}
+
+void observe_ledger(EnergyLedger& ledger, const Simulation& sim) {
+  ledger.observe(contact_powers(sim), sim.time());
+}
+
+LedgerRow ledger_row(EnergyLedger& ledger, const Energies& e) {
+  return ledger.row(e.total(), e.kinetic() + e.elastic);
 }
 
 std::vector<double> EnergyLedger::save() const {
@@ -146,6 +155,15 @@ void EnergyLedger::load(const std::vector<double>& s) {
   largest_mechanical_ = s[11];
 }
 
+std::string energy_growth_words(std::uint64_t step, double time, double timestep,
+                                const LedgerRow& row) {
+  return fmt::format(
+      "unstable at step {} (t = {:.6g} s, dt = {:.4g} s): the energy grew by {:.3g} J, {:.2g} "
+      "of the energy in play, that no damper, friction or driven wall accounts for (the energy "
+      "ledger; limit {:g})",
+      step, time, timestep, row.rise, row.growth, ledger_growth_limit);
+}
+
 std::string energy_growth_diagnosis(const Simulation& sim, const LedgerRow& row,
                                     double collision_time) {
   const Particles& p = sim.world().particles;
@@ -166,11 +184,7 @@ std::string energy_growth_diagnosis(const Simulation& sim, const LedgerRow& row,
                                     : fmt::format("wall segment {}", v.wall));
     });
   });
-  std::string msg = fmt::format(
-      "unstable at step {} (t = {:.6g} s, dt = {:.4g} s): the energy grew by {:.3g} J, {:.2g} "
-      "of the energy in play, that no damper, friction or driven wall accounts for (the energy "
-      "ledger; limit {:g})",
-      sim.step_count(), sim.time(), c.timestep, row.rise, row.growth, ledger_growth_limit);
+  std::string msg = energy_growth_words(sim.step_count(), sim.time(), c.timestep, row);
   if (std::isfinite(shortest)) {
     msg += fmt::format(". The stiffest contact now, between {} at an overlap of {:.2g} of the "
                        "smaller radius, lasts about {:.3g} s: {:.3g} steps",

@@ -5,6 +5,7 @@
 // the contacts, looked at after every step. With them the sum
 //   E_kin + E_grav + E_el + dissipated - wall work
 // stays at its start but for the integration's error: its drift is the run's energy error.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -49,18 +50,19 @@ inline constexpr double ledger_growth_limit = 0.01;
 
 class EnergyLedger {
 public:
-  /// Starts at the current state (a new run's t = 0).
-  void start(const Simulation& sim);
+  /// Starts at a state of time `time` (s), total energy `total` (J) and contact powers `now` (a
+  /// new run's t = 0). The ledger is the same in 2D and 3D: each engine computes its powers.
+  void start(const ContactPowers& now, double time, double total);
   /// Takes in the step since the last look (trapezoidal rule on the powers).
-  void observe(const Simulation& sim);
+  void observe(const ContactPowers& now, double time);
   /// The run was changed since the last look, at the same time (gravity, materials, the
   /// tangential law, walls removed with the springs of their contacts): the energy the change
-  /// put in or took out, `sim`'s total less `total_before` (J), is the change's, not an
-  /// imbalance, and the powers go on from `sim`.
-  void changed(double total_before, const Simulation& sim);
-  /// The ledger at the last look, with that state's energies, as a thermo row: the growth is
-  /// measured against the rows before.
-  LedgerRow row(const Energies& e);
+  /// put in or took out, `total_now` less `total_before` (J), is the change's, not an
+  /// imbalance, and the powers go on from `now`.
+  void changed(const ContactPowers& now, double total_before, double total_now);
+  /// The ledger at the last look, with that state's total energy and its kinetic plus elastic
+  /// energy (J), as a thermo row: the growth is measured against the rows before.
+  LedgerRow row(double total, double mechanical);
   /// The ledger as numbers, for a checkpoint, and back (a resumed run's ledger is the same as an
   /// uninterrupted one's).
   std::vector<double> save() const;
@@ -74,6 +76,16 @@ private:
   double start_tangential_elastic_ = 0.0;
   double lowest_imbalance_ = 0.0, largest_mechanical_ = 0.0; ///< J, over the rows so far
 };
+
+/// The 2D engine's ledger: started at a simulation's state, taking in its steps, and a row at its
+/// energies `e`.
+void start_ledger(EnergyLedger& ledger, const Simulation& sim);
+void observe_ledger(EnergyLedger& ledger, const Simulation& sim);
+LedgerRow ledger_row(EnergyLedger& ledger, const Energies& e);
+
+/// The first words of an energy growth's diagnosis: when, by how much, against which limit.
+std::string energy_growth_words(std::uint64_t step, double time, double timestep,
+                                const LedgerRow& row);
 
 /// Why a run's energy grew: the stiffest contact now against the timestep, and against the
 /// collision time the timestep was chosen for (`collision_time`, s). For the guard's message.

@@ -40,8 +40,12 @@ LedgerObserver::LedgerObserver(RunContext& c) {
   if (!c.book.ledger_state.empty()) ledger_.load(c.book.ledger_state);
 }
 
+void LedgerObserver::changed(RunContext& c, const WorldChange& w) {
+  ledger_.changed(contact_powers(c.sim), w.energy_before, energies(c.sim).total());
+}
+
 std::string LedgerObserver::thermo_columns(const RunContext& c, const Energies& e) {
-  const LedgerRow l = ledger_.row(e);
+  const LedgerRow l = ledger_row(ledger_, e);
   // energy from nowhere: an instability the overlap guard has not seen (yet)
   if (l.growth > ledger_growth_limit)
     throw InstabilityError(energy_growth_diagnosis(c.sim, l, c.book.collision_time));

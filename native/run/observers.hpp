@@ -38,12 +38,10 @@ class LedgerObserver final : public Observer {
 public:
   explicit LedgerObserver(RunContext& c);
   std::uint64_t next_look(std::uint64_t step) const override { return step + 1; }
-  void start(RunContext& c) override { ledger_.start(c.sim); }
-  void look(RunContext& c) override { ledger_.observe(c.sim); }
+  void start(RunContext& c) override { start_ledger(ledger_, c.sim); }
+  void look(RunContext& c) override { observe_ledger(ledger_, c.sim); }
   void save(RunBook& b) const override { b.ledger_state = ledger_.save(); }
-  void changed(RunContext& c, const WorldChange& w) override {
-    ledger_.changed(w.energy_before, c.sim);
-  }
+  void changed(RunContext& c, const WorldChange& w) override;
   /// The ledger's thermo columns at energies `e`; throws InstabilityError when energy grew.
   std::string thermo_columns(const RunContext& c, const Energies& e);
 

@@ -38,14 +38,14 @@ struct Watch {
 Watch watch(Simulation& s, LeverArm arm) {
   Watch out;
   EnergyLedger ledger;
-  ledger.start(s);
+  start_ledger(ledger, s);
   double previous_friction = 0.0, previous_slip = std::abs(slip(s, arm));
   bool touched = false;
   const double mu = s.world().materials[0].friction;
   for (int k = 0; k < 1'000'000 && !out.separated; ++k) {
     s.step();
-    ledger.observe(s);
-    const LedgerRow row = ledger.row(energies(s));
+    observe_ledger(ledger, s);
+    const LedgerRow row = ledger_row(ledger, energies(s));
     out.worst_step_dissipation =
         std::min(out.worst_step_dissipation, row.dissipated_friction - previous_friction);
     previous_friction = row.dissipated_friction;
@@ -170,13 +170,13 @@ TEST(FrictionEnergy, ALongStickSlipShearNeverCreatesEnergy) {
       config.timestep = 2e-5;
       Simulation s(std::move(w), config);
       EnergyLedger ledger;
-      ledger.start(s);
+      start_ledger(ledger, s);
       double previous = 0.0, worst = 0.0, scale = 0.0;
       LedgerRow row;
       for (int k = 0; k < 50'000; ++k) {
         s.step();
-        ledger.observe(s);
-        row = ledger.row(energies(s));
+        observe_ledger(ledger, s);
+        row = ledger_row(ledger, energies(s));
         worst = std::min(worst, row.dissipated_friction - previous);
         previous = row.dissipated_friction;
         scale = std::max(scale, row.dissipated_friction);

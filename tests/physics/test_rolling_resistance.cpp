@@ -109,14 +109,14 @@ TEST_P(RollingOnAFloor, TheLedgerBalancesAndFrictionNeverGivesEnergyBack) {
   Simulation s = roll_on_floor(f);
   const double t_stop = f.speed * (1.0 + inertia_factor(f.shape)) / (f.rolling_friction * g_roll);
   EnergyLedger ledger;
-  ledger.start(s);
+  start_ledger(ledger, s);
   const Energies start = energies(s);
   double previous = 0.0, worst = 0.0;
   LedgerRow row;
   while (s.time() < 1.2 * t_stop) {
     s.step();
-    ledger.observe(s);
-    row = ledger.row(energies(s));
+    observe_ledger(ledger, s);
+    row = ledger_row(ledger, energies(s));
     worst = std::min(worst, row.dissipated_friction - previous);
     previous = row.dissipated_friction;
   }
