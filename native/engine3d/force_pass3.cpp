@@ -6,59 +6,11 @@
 
 #include <omp.h>
 
+#include "engine3d/contact_visit3.hpp"
 #include "engine3d/pair_lanes3.hpp"
 #include "neighbours/neighbour_list.hpp"
 
 namespace talus {
-
-namespace {
-
-// Calls on_pair(e, j, geometry, parameters, spring) for every touching entry of sphere i's row,
-// then on_plate(e, plate, geometry, parameters, spring) for its touching plates; the spring of
-// an entry no longer touching is cleared (and `apart(e, is_plate)` told).
-template <class S, class L, class Pair, class OnPlate, class Apart>
-[[gnu::flatten]] void contacts_of(std::size_t i, S& scene, L& list, const PairTable& table,
-                                  LeverShares shares, Pair&& on_pair, OnPlate&& on_plate,
-                                  Apart&& apart) {
-  const Spheres& s = scene.spheres;
-  for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
-    const std::uint32_t j = list.neighbour[e];
-    const Vec3 d = s.position[i] - (s.position[j] + list.offset(e, scene.domain));
-    const double reach = s.radius[i] + s.radius[j];
-    const double dist2 = norm2(d);
-    if (dist2 >= reach * reach || dist2 == 0.0) {
-      apart(e, false);
-      continue;
-    }
-    const ContactGeometry3 g = pair_geometry(
-        d, std::sqrt(dist2), s.radius[i], s.radius[j], s.mass[i], s.mass[j], s.velocity[i],
-        s.velocity[j], s.angular_velocity[i], s.angular_velocity[j], true, shares);
-    on_pair(e, j, g, table(s.material[i], s.material[j]), list.spring[e]);
-  }
-  for (std::uint32_t e = list.plate_offset[i]; e < list.plate_offset[i + 1]; ++e) {
-    const auto& plate = scene.plates[list.plate[e]];
-    const Vec3 touch = closest_point(plate, s.position[i]);
-    const Vec3 d = s.position[i] - touch;
-    const double dist2 = norm2(d);
-    if (dist2 >= s.radius[i] * s.radius[i] || dist2 == 0.0) {
-      apart(e, true);
-      continue;
-    }
-    const ContactGeometry3 g =
-        wall_geometry(d, std::sqrt(dist2), s.radius[i], s.mass[i], s.velocity[i],
-                      s.angular_velocity[i], plate.velocity_at(touch), shares);
-    on_plate(e, list.plate[e], g, table(s.material[i], plate.material), list.plate_spring[e]);
-  }
-}
-
-// The elastic energy of a rolling spring as it stands (turned into the tangent plane).
-template <class N>
-double rolling_energy(const PairParameters& p, const ContactGeometry3& g, const Vec3& theta) {
-  if (p.rolling_friction == 0.0) return 0.0;
-  return RollingLaw::elastic_energy<N>(p, g, into_tangent_plane(theta, g.normal));
-}
-
-} // namespace
 
 int pair_contact_lanes() {
   return lane_count<ContactLanes3>;
@@ -189,16 +141,15 @@ double contact_elastic_energy(const Scene3& scene, const SphereList& list, const
                               const Settings3& settings) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
     double e = 0.0;
-    const auto add = [&](const std::vector<Vec3>& rolling) {
-      return [&](std::uint32_t k, std::uint32_t, const ContactGeometry3& g, const PairParameters& p,
-                 const Vec3& spring) {
-        e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(spring, g.normal));
+    const auto add = [&](const std::vector<Vec3>& spring, const std::vector<Vec3>& rolling) {
+      return [&](std::uint32_t, std::uint32_t k, std::uint32_t, const ContactGeometry3& g,
+                 const PairParameters& p) {
+        e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(spring[k], g.normal));
         if (list.with_rolling) e += rolling_energy<N>(p, g, rolling[k]);
       };
     };
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-      contacts_of(i, scene, list, table, lever_shares(settings.lever_arm), add(list.rolling),
-                  add(list.plate_rolling), [](std::uint32_t, bool) {});
+    for_each_contact3(scene, list, table, lever_shares(settings.lever_arm),
+                      add(list.spring, list.rolling), add(list.plate_spring, list.plate_rolling));
     return e;
   });
 }
@@ -209,26 +160,24 @@ std::string deepest_contact(const Scene3& scene, const SphereList& list,
   const PairTable table(scene.materials, settings.impact_speed, settings.linear_damping);
   double deepest = -1.0;
   std::ostringstream words;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    contacts_of(
-        i, scene, list, table, lever_shares(settings.lever_arm),
-        [&](std::uint32_t, std::uint32_t j, const ContactGeometry3& g, const PairParameters&,
-            const Vec3&) {
-          const double f = g.overlap / std::min(s.radius[i], s.radius[j]);
-          if (f <= deepest) return;
-          deepest = f;
-          words.str("");
-          words << "sphere " << s.id[i] << " overlaps sphere " << s.id[j] << " by " << f;
-        },
-        [&](std::uint32_t, std::uint32_t w, const ContactGeometry3& g, const PairParameters&,
-            const Vec3&) {
-          const double f = g.overlap / s.radius[i];
-          if (f <= deepest) return;
-          deepest = f;
-          words.str("");
-          words << "sphere " << s.id[i] << " overlaps plate " << w << " by " << f;
-        },
-        [](std::uint32_t, bool) {});
+  for_each_contact3(
+      scene, list, table, lever_shares(settings.lever_arm),
+      [&](std::uint32_t i, std::uint32_t, std::uint32_t j, const ContactGeometry3& g,
+          const PairParameters&) {
+        const double f = g.overlap / std::min(s.radius[i], s.radius[j]);
+        if (f <= deepest) return;
+        deepest = f;
+        words.str("");
+        words << "sphere " << s.id[i] << " overlaps sphere " << s.id[j] << " by " << f;
+      },
+      [&](std::uint32_t i, std::uint32_t, std::uint32_t w, const ContactGeometry3& g,
+          const PairParameters&) {
+        const double f = g.overlap / s.radius[i];
+        if (f <= deepest) return;
+        deepest = f;
+        words.str("");
+        words << "sphere " << s.id[i] << " overlaps plate " << w << " by " << f;
+      });
   return words.str() + " of the smaller radius";
 }
 

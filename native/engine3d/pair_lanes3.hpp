@@ -18,6 +18,7 @@
 #endif
 #include "core/vec3.hpp"
 #include "engine3d/force_pass3.hpp"
+#include "engine3d/rolling3.hpp"
 #include "engine3d/scene3.hpp"
 #include "engine3d/sphere_list.hpp"
 #include "materials/pair_table.hpp"
@@ -170,24 +171,6 @@ private:
   bool one_;
   PairParametersOf<L> uniform_{};
 };
-
-/// Rolling resistance's torque on i of a contact with rolling spring `theta` (turned into the
-/// tangent plane and advanced a step here), against a sphere or plate of spin w_j and rim inertia
-/// rim_j (0: a plate, infinitely heavy). None where the pair does not roll with resistance.
-template <class N>
-Vec3 rolling_torque(const PairParameters& p, const ContactGeometry3& g, double normal_force,
-                    const Vec3& w_i, const Vec3& w_j, double rim_i, double rim_j, Vec3& theta,
-                    double dt) {
-  if (p.rolling_friction == 0.0) return {};
-  theta = into_tangent_plane(theta, g.normal);
-  return RollingLaw::torque<N>(p, g, not_below_zero(normal_force), rolling_spin(w_i, w_j, g.normal),
-                               rolling_inertia(rim_i, rim_j), theta, dt);
-}
-
-/// A sphere's inertia about a point of its rim, which rolling resistance's dashpot takes.
-inline double rim_of(const Spheres& s, std::size_t i) {
-  return rim_inertia(s.inertia[i], s.mass[i], s.radius[i]);
-}
 
 /// The forces of found[0, count), as many at a time as L has lanes (the last ones repeated to
 /// fill them), added in entry order: to i, and to j or the entry's deferred force.

@@ -59,6 +59,8 @@ public:
   const Scene3& scene() const { return scene_; }
   const Settings3& settings() const { return settings_; }
   const SphereList& list() const { return list_; }
+  /// Every material pair's contact parameters.
+  const PairTable& table() const { return table_; }
   /// The touching contacts of the last force pass.
   std::size_t contact_count() const { return last_.contacts; }
   /// The last force pass' contacts (of them, those on plates) and deepest overlap.
