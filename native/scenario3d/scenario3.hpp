@@ -70,6 +70,7 @@ struct Output3Section {
   double thermo_interval = 0.01;    ///< s
   double snapshot_interval = 0.1;   ///< s; 0: none
   double checkpoint_interval = 1.0; ///< s; 0: only at the end, at --stop-at and on a signal
+  bool energy_ledger = false;       ///< the ledger's columns in thermo.csv (energy_ledger3.hpp)
 };
 
 struct Scenario3 {

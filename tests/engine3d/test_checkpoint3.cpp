@@ -8,38 +8,12 @@
 
 #include "engine3d/simulation3.hpp"
 #include "io/checkpoint3.hpp"
-#include "support/two_body.hpp"
+#include "support/shaken_bed3.hpp"
 
 namespace talus {
 namespace {
 
-// 300 spheres falling in a box periodic along x onto a vibrating floor, with friction and
-// rolling resistance.
-Simulation3 shaken_bed(Integrator integrator = Integrator::verlet) {
-  Material m = testing::elastic_material();
-  m.restitution = 0.5;
-  m.friction = 0.4;
-  m.rolling_friction = 0.05;
-  Scene3 scene;
-  scene.materials = {m};
-  scene.gravity = {0.0, 0.0, -9.81};
-  scene.domain = {.lo = {0.0, 0.0, 0.0}, .hi = {0.02, 0.02, 0.2}, .periodic = {true, false, false}};
-  scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}));
-  scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}));
-  scene.plates.push_back(make_plane({0.0, 0.02, 0.0}, {0.0, -1.0, 0.0}));
-  scene.drivers.push_back(
-      {.plate = 0, .motion = PlateDriver::Motion::vibrate, .amplitude = 2e-4, .frequency = 50.0});
-  for (int k = 0; k < 300; ++k)
-    scene.add_sphere({.position = {0.002 + 0.004 * (k % 5), 0.002 + 0.004 * ((k / 5) % 5),
-                                   0.002 + 0.004 * (k / 25)},
-                      .radius = 1.5e-3 + 1e-4 * (k % 3),
-                      .velocity = {0.2 * ((k % 7) - 3), 0.0, 0.0}});
-  const double mass = 2650.0 * 4.0 / 3.0 * 3.14159 * 1.5e-9;
-  return Simulation3(std::move(scene),
-                     {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 30.0,
-                      .integrator = integrator,
-                      .sort_interval = 1000}); // renumbered at the checkpoint's step too
-}
+using testing::shaken_bed3;
 
 bool same(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
   return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(Vec3)) == 0;
@@ -48,7 +22,7 @@ bool same(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
 class Checkpoint3Integrators : public ::testing::TestWithParam<Integrator> {};
 
 TEST_P(Checkpoint3Integrators, AResumedRunIsTheWholeRunToTheBit) {
-  Simulation3 whole = shaken_bed(GetParam()), first = shaken_bed(GetParam());
+  Simulation3 whole = shaken_bed3(GetParam()), first = shaken_bed3(GetParam());
   whole.run(12000);
   first.run(6000);
   const std::string bytes =
@@ -83,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(Checkpoint3, Checkpoint3Integrators,
                          });
 
 TEST(Checkpoint3, ADamagedOrForeignFileIsRefused) {
-  Simulation3 s = shaken_bed();
+  Simulation3 s = shaken_bed3(Integrator::verlet);
   s.run(10);
   const std::string bytes = encode_checkpoint3({s.state(), s.settings(), ""});
   const auto refusal = [](const std::string& b) {

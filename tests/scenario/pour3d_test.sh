@@ -1,8 +1,9 @@
 #!/bin/sh
 # The built-in 3D scenario, short: talus run writes thermo.csv, run.json and snapshots that VTK's
-# reader opens (read_vtk3d.py), the spheres come to rest in the box, a run stopped and resumed
-# is the run that never stopped, one lengthened with --duration ends as the longer run, and the
-# commands that take 2D runs refuse the folder.
+# reader opens (read_vtk3d.py), the spheres come to rest in the box with the energy ledger
+# balanced, a run stopped and resumed is the run that never stopped (its ledger too), one
+# lengthened with --duration ends as the longer run, the ledger stops a run whose energy grows,
+# and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -10,7 +11,8 @@ dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
 run="$dir/run"
 "$talus" run pour3d --out "$run" --quiet --set particles.count=120 --set simulation.duration=0.3 \
-  --set output.snapshot_interval=0.05 --set simulation.timestep_factor=20
+  --set output.snapshot_interval=0.05 --set simulation.timestep_factor=20 \
+  --set output.energy_ledger=true
 for f in thermo.csv run.json scenario.toml particles.pvd walls.pvd; do
   [ -s "$run/$f" ] || { echo "FAIL: no $f"; exit 1; }
 done
@@ -29,6 +31,11 @@ assert 2.5 < float(last["coordination"]) < 6.5, last["coordination"]
 # the energy only fell (the Verlet swing of a contact allowed, a thousandth of what fell)
 totals = [float(r["total"]) for r in rows]
 assert all(b <= a + 1e-3 * fallen for a, b in zip(totals, totals[1:])), "the energy grew"
+# the ledger: what fell went to the dampers and friction (velocity Verlet at 20 steps a
+# collision: its first-order error within 1e-2 of it), the plates standing still
+dissipated = float(last["dissipated_damper"]) + float(last["dissipated_friction"])
+assert abs(float(last["energy_imbalance"])) < 1e-2 * dissipated, (last, dissipated)
+assert abs(float(last["wall_work"])) < 1e-12 * dissipated, last["wall_work"]
 print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
@@ -39,7 +46,8 @@ done
 # stopped at a checkpoint and resumed, with outputs past the checkpoint left behind by a run that
 # died (a row of thermo.csv, a snapshot): the same files as a run that never stopped
 short="--quiet --set particles.count=60 --set simulation.duration=0.1 --set simulation.timestep_factor=20
-       --set output.snapshot_interval=0.02 --set output.checkpoint_interval=0.03"
+       --set output.snapshot_interval=0.02 --set output.checkpoint_interval=0.03
+       --set output.energy_ledger=true"
 "$talus" run pour3d --out "$dir/whole" $short
 status=0; "$talus" run pour3d --out "$dir/parts" $short --stop-at 0.045 || status=$?
 [ "$status" -eq 4 ] || { echo "FAIL: --stop-at exited with $status, not 4"; exit 1; }
@@ -65,6 +73,15 @@ grep -q "^duration = 0.13$" "$dir/whole/scenario.toml" || { echo "FAIL: scenario
 last() { ls "$1"/snapshots/spheres_*.vtp | tail -1; }
 cmp -s "$(last "$dir/whole")" "$(last "$dir/long")" \
   || { echo "FAIL: a lengthened run does not end as the run that long from the start"; exit 1; }
+# Gear at 5 steps a collision gains energy with no overlap near the guard's limit: the ledger
+# stops the run, saying so, and run.json says why it ended
+status=0
+"$talus" run pour3d --out "$dir/gains" --quiet --set particles.count=200 --set simulation.duration=0.3 \
+  --set simulation.integrator=gear --set simulation.timestep_factor=5 --set output.energy_ledger=true \
+  > "$dir/out.txt" 2>&1 || status=$?
+[ "$status" -ne 0 ] || { echo "FAIL: a run gaining energy went on"; exit 1; }
+grep -q "the energy grew by .* (the energy ledger" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+grep -q '"ended_by": "unstable"' "$dir/gains/run.json" || { echo "FAIL: run.json"; exit 1; }
 # and a resolved 3D scenario reruns as it is
 "$talus" run "$run/scenario.toml" --out "$dir/again" --quiet --set simulation.duration=0.01
 echo "pour3d: run, snapshots read back, stopped and resumed as one run, 2D commands refuse it"

@@ -3,11 +3,13 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "analysis/energy_ledger3.hpp"
 #include "io/checkpoint3.hpp"
 #include "io/vtk.hpp"
 #include "io/vtk_spheres.hpp"
@@ -20,15 +22,50 @@ namespace talus::cli {
 
 namespace {
 
-constexpr const char* thermo_header =
-    "time,step,kinetic,rotational,potential,elastic,total,contacts,coordination,list_builds\n";
+// thermo.csv of a 3D run: a row of energies, contacts and list builds, and with
+// output.energy_ledger the ledger's columns, its powers taken in after every step.
+class Thermo3 {
+public:
+  Thermo3(const Scenario3& s, const Book3& book) {
+    if (!s.output.energy_ledger) return;
+    ledger_.emplace();
+    if (!book.ledger_state.empty()) ledger_->load(book.ledger_state);
+  }
+  void start(const Simulation3& sim) {
+    if (ledger_) start_ledger(*ledger_, sim);
+  }
+  void look(const Simulation3& sim) {
+    if (ledger_) observe_ledger(*ledger_, sim);
+  }
+  void save(Book3& book) const {
+    if (ledger_) book.ledger_state = ledger_->save();
+  }
+  std::string header() const {
+    return std::string("time,step,kinetic,rotational,potential,elastic,total,contacts,"
+                       "coordination,list_builds") +
+           (ledger_ ? ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance" : "") +
+           "\n";
+  }
+  // throws InstabilityError where the ledger finds energy from nowhere
+  std::string row(const Simulation3& sim, double collision_time) {
+    const Energies3 e = sim.energies();
+    std::string out =
+        fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}", sim.time(),
+                    sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
+                    sim.contact_count(), sim.coordination(), sim.list().builds);
+    if (ledger_) {
+      const LedgerRow l = ledger_row(*ledger_, e);
+      if (l.growth > ledger_growth_limit)
+        throw InstabilityError(energy_growth_diagnosis(sim, l, collision_time));
+      out += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
+                         l.wall_work, l.imbalance);
+    }
+    return out + "\n";
+  }
 
-std::string thermo_row(const Simulation3& sim) {
-  const Energies3 e = sim.energies();
-  return fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}\n", sim.time(),
-                     sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
-                     sim.contact_count(), sim.coordination(), sim.list().builds);
-}
+private:
+  std::optional<EnergyLedger> ledger_;
+};
 
 // A snapshot of the spheres and one of the plates, listed in the book and their collections.
 void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, Book3& book) {
@@ -57,8 +94,10 @@ std::string run_json(const Scenario3& s, const Simulation3& sim, double collisio
       sim.threads(), wall, rate, ended);
 }
 
-void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::ofstream& thermo) {
+void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::ofstream& thermo,
+                const Thermo3& columns) {
   thermo.flush();
+  columns.save(book);
   book.thermo_bytes = fs::file_size(dir / "thermo.csv");
   write_file_atomically((dir / "checkpoint.bin").string(),
                         encode_checkpoint3({sim.state(), sim.settings(), book.encode()}));
@@ -92,6 +131,8 @@ std::string Book3::encode() const {
                                 spheres.size());
   for (std::size_t k = 0; k < spheres.size(); ++k)
     out += fmt::format("{:.17g} {} {}\n", spheres[k].first, spheres[k].second, plates[k].second);
+  if (!ledger_state.empty())
+    out += fmt::format("ledger {}\n{:.17g}\n", ledger_state.size(), fmt::join(ledger_state, " "));
   return out;
 }
 
@@ -110,6 +151,13 @@ Book3 Book3::decode(const std::string& text, const std::string& source) {
     b.spheres.emplace_back(t, s);
     b.plates.emplace_back(t, p);
   }
+  std::string word;
+  if (!(in >> word)) return b;
+  if (word != "ledger" || !(in >> count))
+    throw CheckpointError(source + ": its run book has '" + word + "' after the snapshots");
+  b.ledger_state.resize(count);
+  for (double& v : b.ledger_state)
+    if (!(in >> v)) throw CheckpointError(source + ": its run book's ledger is cut short");
   return b;
 }
 
@@ -127,9 +175,11 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
                       checkpoint_every = every(s.output.checkpoint_interval);
   const double reach = norm(s.geometry.hi - s.geometry.lo);
   const bool fresh = book.spheres.empty() && book.thermo_bytes == 0;
+  Thermo3 columns(s, book);
   std::ofstream thermo(dir / "thermo.csv", fresh ? std::ios::trunc : std::ios::app);
   if (fresh) {
-    thermo << thermo_header << thermo_row(sim);
+    columns.start(sim);
+    thermo << columns.header() << columns.row(sim, book.collision_time);
     if (snapshot_every > 0) write_snapshot(dir, sim, reach, book);
   }
   run::RunProgress progress(o.quiet, s.simulation.duration, s.output.thermo_interval, dt);
@@ -144,7 +194,7 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
   };
   while (sim.step_count() < stop) {
     if (stop_signal()) {
-      checkpoint(dir, sim, book, thermo);
+      checkpoint(dir, sim, book, thermo, columns);
       progress.finish();
       fmt::print(stderr,
                  "talus: interrupted at t = {:.6g} s after a checkpoint; continue with: "
@@ -152,19 +202,20 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
                  sim.time(), dir.string());
       return exit_interrupted;
     }
+    const std::uint64_t k = sim.step_count() + 1;
     try {
       sim.step();
+      columns.look(sim);
+      if (k % thermo_every == 0 || k == total) thermo << columns.row(sim, book.collision_time);
     } catch (const InstabilityError&) { // the last checkpoint and the outputs up to here stay
       thermo.close();
       record("unstable");
       throw;
     }
-    const std::uint64_t k = sim.step_count();
-    if (k % thermo_every == 0 || k == total) thermo << thermo_row(sim);
     if (snapshot_every > 0 && (k % snapshot_every == 0 || k == total))
       write_snapshot(dir, sim, reach, book);
     if ((checkpoint_every > 0 && k % checkpoint_every == 0) || k == stop)
-      checkpoint(dir, sim, book, thermo);
+      checkpoint(dir, sim, book, thermo, columns);
     if (k % 256 == 0 || k == stop)
       progress.report(sim.time(), k, total, stop, wall(), k - first, sim.energies().kinetic);
   }

@@ -18,6 +18,7 @@ struct Book3 {
   double collision_time = 0.0;    ///< s
   std::uint64_t thermo_bytes = 0; ///< thermo.csv's length at the checkpoint
   std::vector<std::pair<double, std::string>> spheres, plates; ///< the snapshots (time, file)
+  std::vector<double> ledger_state; ///< EnergyLedger::save, with output.energy_ledger
 
   std::string encode() const;
   /// Throws CheckpointError naming `source` when the text is not a book.
