@@ -19,8 +19,20 @@ int pair_contact_lanes() {
 std::size_t ForcePass3::bytes() const {
   std::size_t found = 0;
   for (const auto& f : found_) found += f.capacity() * sizeof(Touching3);
-  return found + sizeof(Vec3) * (deferred_force_.capacity() + deferred_torque_j_.capacity() +
-                                 plate_force_.capacity() + plate_torque_.capacity());
+  return found + touched_.capacity() +
+         sizeof(Vec3) * (deferred_force_.capacity() + deferred_torque_j_.capacity() +
+                         plate_force_.capacity() + plate_torque_.capacity());
+}
+
+void ForcePass3::take_touching_from_springs(const SphereList& list) {
+  const std::size_t n = list.pair_count();
+  const auto some = [](const Vec3& v) { return v.x != 0.0 || v.y != 0.0 || v.z != 0.0; };
+  touched_.resize(n);
+  for (std::size_t e = 0; e < n; ++e)
+    touched_[e] = some(list.spring[e]) || (list.with_rolling && some(list.rolling[e])) ? 1 : 0;
+  deferred_force_.assign(n, Vec3{});
+  deferred_torque_j_.assign(n, Vec3{});
+  list_changed_ = false;
 }
 
 template <class N, class T>
@@ -32,8 +44,7 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
   const LeverShares shares = lever_shares(settings.lever_arm);
   const std::uint32_t rows = force_block_rows(n);
   const auto blocks = static_cast<std::ptrdiff_t>(n == 0 ? 0 : (n + rows - 1) / rows);
-  deferred_force_.resize(list.pair_count());
-  deferred_torque_j_.resize(list.pair_count());
+  if (list_changed_ || touched_.size() != list.pair_count()) take_touching_from_springs(list);
   plate_force_.resize(list.plate.size());
   plate_torque_.resize(list.plate.size());
   found_.resize(static_cast<std::size_t>(std::max(threads, 1)));
@@ -58,10 +69,11 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
     for (std::uint32_t r0 = first; r0 < last; r0 += stretch_rows) {
       const std::uint32_t r1 = std::min(last, r0 + stretch_rows);
       found.resize(std::max<std::size_t>(found.size(), list.row_offset[r1] - list.row_offset[r0]));
-      const std::size_t touching =
-          list.with_rolling
-              ? touching_entries<true>(s, list, scene.domain, sums, r0, r1, found.data())
-              : touching_entries<false>(s, list, scene.domain, sums, r0, r1, found.data());
+      const std::size_t touching = list.with_rolling
+                                       ? touching_entries<true>(s, list, scene.domain, sums, r0, r1,
+                                                                touched_.data(), found.data())
+                                       : touching_entries<false>(s, list, scene.domain, sums, r0,
+                                                                 r1, touched_.data(), found.data());
       const ContactTally3 tally =
           pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
       contacts += tally.contacts, deepest = std::max(deepest, tally.deepest);

@@ -47,7 +47,12 @@ public:
   ContactPass3 compute(Scene3& scene, SphereList& list, const PairTable& table,
                        const Settings3& settings, int threads);
 
-  /// The bytes its buffers take: the deferred forces, the plates' and the touching entries'.
+  /// The list's entries changed (a build, a renumbering): which of them touch is taken again from
+  /// their springs, and the deferred forces cleared, at the next pass.
+  void list_changed() { list_changed_ = true; }
+
+  /// The bytes its buffers take: the deferred forces, the plates', the touching entries' and
+  /// which entries touched.
   std::size_t bytes() const;
 
 private:
@@ -62,8 +67,15 @@ private:
                              std::uint32_t first, std::uint32_t last, double dt,
                              LeverShares shares);
 
+  // after the list changed: an entry touched if its spring (or rolling spring) is not 0, which
+  // holds for the springs the list carries over (a contact with a spring of exactly 0 has none to
+  // clear when it ends), and no entry has a deferred force yet
+  void take_touching_from_springs(const SphereList& list);
+
   // per pair entry whose second sphere is in a later block: its force on i, its torque on j
   std::vector<Vec3> deferred_force_, deferred_torque_j_;
+  std::vector<std::uint8_t> touched_; // per pair entry: touching at the last pass
+  bool list_changed_ = true;
   std::vector<Vec3> plate_force_, plate_torque_; // per sphere-plate entry
   std::vector<std::vector<Touching3>> found_;    // per thread: its block's touching entries
 };

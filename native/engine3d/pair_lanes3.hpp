@@ -77,23 +77,16 @@ struct BlockSums3 {
   Vec3* deferred_torque_j;
 };
 
-/// v where `keep` has every bit set, 0 where it has none.
-inline Vec3 kept_if(const Vec3& v, std::uint64_t keep) {
-  const auto masked = [keep](double x) {
-    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) & keep);
-  };
-  return {masked(v.x), masked(v.y), masked(v.z)};
-}
-
 /// Tests every entry of rows [r0, r1) of the block: a touching one is written down in `found`
-/// (which has room for every entry of the rows); the springs of the others are cleared (and their
-/// rolling springs, `Rolling`). An entry beyond the block starts with no deferred force. Returns
-/// the count written. The arrays are taken as pointers once: the loop has more of them than
-/// registers.
+/// (which has room for every entry of the rows). `touched[e]` says whether entry e touched at the
+/// last pass: an entry that touched then and does not now has its spring cleared (and its rolling
+/// spring, `Rolling`, and its deferred force). Those of an entry that did not touch are 0 already,
+/// so that only the contacts that end cost a write. Returns the count written. The arrays are
+/// taken as pointers once: the loop has more of them than registers.
 template <bool Rolling>
 std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& domain,
                              const BlockSums3& b, std::uint32_t r0, std::uint32_t r1,
-                             Touching3* found) {
+                             std::uint8_t* touched, Touching3* found) {
   const Vec3* const position = s.position.data();
   const double* const radius = s.radius.data();
   const std::uint32_t* const row_offset = list.row_offset.data();
@@ -119,13 +112,16 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
       // "not beyond reach" rather than "within reach": a NaN distance counts as touching, so
       // that it reaches the forces and the stability guard
       const bool touches = !(dist2 >= reach * reach) & (dist2 != 0.0);
+      // which entries touch follows no pattern a branch predictor could learn: no branch on it
       found[count] = {d, e, i};
       count += touches;
-      // which entries touch follows no pattern a branch predictor could learn: masks
-      const std::uint64_t keep = 0ull - static_cast<std::uint64_t>(touches);
-      spring[e] = kept_if(spring[e], keep);
-      if constexpr (Rolling) rolling[e] = kept_if(rolling[e], keep);
-      if (j >= b.last) b.deferred_force[e] = b.deferred_torque_j[e] = {};
+      // but few contacts end in a step
+      if (touched[e] > static_cast<std::uint8_t>(touches)) [[unlikely]] {
+        spring[e] = {};
+        if constexpr (Rolling) rolling[e] = {};
+        if (j >= b.last) b.deferred_force[e] = b.deferred_torque_j[e] = {};
+      }
+      touched[e] = static_cast<std::uint8_t>(touches);
     }
   }
   return count;

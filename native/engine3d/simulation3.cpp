@@ -136,6 +136,7 @@ void Simulation3::sort_spheres() {
   Spheres& s = scene_.spheres;
   const double range = 2.0 * s.max_radius() + list_.skin;
   renumber_spheres(s, list_, gear_, spheres_by_cell(s, scene_.domain, range));
+  force_pass_.list_changed();
 }
 
 void Simulation3::forces_after_the_move() {
@@ -145,6 +146,7 @@ void Simulation3::forces_after_the_move() {
     guard();
     build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                       resolved_skin(scene_, settings_));
+    force_pass_.list_changed();
   }
   compute_forces();
 }
