@@ -11,6 +11,41 @@
 
 namespace talus::lammps_test {
 
+// Two spheres 0.2 um apart, closing at 0.2 m/s off centre, out of any axis' plane, both spinning
+// about tilted axes: the contact slides, sticks and ends within the steps.
+inline std::vector<Sphere> oblique_pair() {
+  const Vec3 offset{0.0, 0.0012, -0.0009}; // across the line of approach
+  const double reach = 0.005 + 0.004 + 2e-7;
+  const double along = std::sqrt(reach * reach - norm2(offset));
+  return {{{0.0, 0.0, 0.0}, {0.1, 0.0, 0.0}, {10.0, -20.0, 30.0}, 0.005, 2.0e-4},
+          {Vec3{along, 0.0, 0.0} + offset, {-0.1, 0.0, 0.0}, {-5.0, 0.0, 8.0}, 0.004, 1.5e-4}};
+}
+
+/// The side of periodic_cloud's box, m.
+inline constexpr double cloud_side = 0.03;
+
+// Twelve spheres thrown at each other in a box of side cloud_side periodic along x, y and z,
+// moving and spinning about every axis, apart on a lattice of 2 x 2 x 3 sites, the lowest and
+// the highest close across z's sides.
+inline std::vector<Sphere> periodic_cloud() {
+  RandomStream rng(2026, 1206);
+  std::vector<Sphere> spheres;
+  const double side = cloud_side;
+  for (int k = 0; k < 12; ++k) {
+    Sphere s{};
+    s.radius = 0.003 * (1.0 + 0.2 * rng.uniform(-1.0, 1.0));
+    s.mass = 1e-4 * (1.0 + 0.3 * rng.uniform(-1.0, 1.0));
+    s.position = {side * (k % 2 == 0 ? 0.25 : 0.75) + 0.001 * rng.uniform(-1.0, 1.0),
+                  side * ((k / 2) % 2 == 0 ? 0.25 : 0.75) + 0.001 * rng.uniform(-1.0, 1.0),
+                  side * (0.15 + 0.35 * (k / 4)) + 0.001 * rng.uniform(-1.0, 1.0)};
+    s.velocity = {rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)};
+    s.spin = {50.0 * rng.uniform(-1.0, 1.0), 50.0 * rng.uniform(-1.0, 1.0),
+              50.0 * rng.uniform(-1.0, 1.0)};
+    spheres.push_back(s);
+  }
+  return spheres;
+}
+
 /// The spheres as a native scene of one material (no gravity, no plates).
 inline Scene3 native_scene(const Material& m, const std::vector<Sphere>& spheres,
                            const Domain3& domain = {}) {

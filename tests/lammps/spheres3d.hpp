@@ -22,11 +22,10 @@ inline Material spheres_material() {
   return m;
 }
 
-// Spheres in a 3D LAMMPS box, SI units: `boundary` and `box` as LAMMPS' commands take them.
-inline void set_up_3d(LammpsInstance& l, const std::string& laws, const Material& m,
-                      const std::vector<Sphere>& spheres, double dt,
-                      const std::string& boundary = "f f f",
-                      const std::string& box = "-0.1 0.1 -0.1 0.1 -0.1 0.1") {
+// Spheres in a 3D LAMMPS box, SI units, with no pair style yet: `boundary` and `box` as LAMMPS'
+// commands take them.
+inline void spheres_in_box(LammpsInstance& l, const std::vector<Sphere>& spheres,
+                           const std::string& boundary, const std::string& box) {
   l.commands({"dimension 3", "units si", "atom_style sphere", "atom_modify map array",
               "boundary " + boundary, ghost_velocities, "newton off", "region box block " + box,
               "create_box 1 box"});
@@ -42,6 +41,14 @@ inline void set_up_3d(LammpsInstance& l, const std::string& laws, const Material
     double* w = l.lmp()->atom->omega[l.index(static_cast<int>(k) + 1)];
     w[0] = s.spin.x, w[1] = s.spin.y, w[2] = s.spin.z;
   }
+}
+
+// The spheres with pair_style granthesis of the laws `laws` and material m.
+inline void set_up_3d(LammpsInstance& l, const std::string& laws, const Material& m,
+                      const std::vector<Sphere>& spheres, double dt,
+                      const std::string& boundary = "f f f",
+                      const std::string& box = "-0.1 0.1 -0.1 0.1 -0.1 0.1") {
+  spheres_in_box(l, spheres, boundary, box);
   l.commands({words({"pair_style granthesis", laws}), "pair_coeff 1 1 " + pair_coefficient_words(m),
               "neighbor 0.001 bin", words({"timestep", exact(dt)})});
 }

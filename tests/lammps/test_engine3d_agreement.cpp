@@ -26,16 +26,6 @@ Difference after(const std::string& normal, const std::string& tangential,
   return between(l, s);
 }
 
-// Two spheres 0.2 um apart, closing at 0.2 m/s off centre, out of any axis' plane, both spinning
-// about tilted axes: the contact slides, sticks and ends within the steps.
-std::vector<Sphere> oblique_pair() {
-  const Vec3 offset{0.0, 0.0012, -0.0009}; // across the line of approach
-  const double reach = 0.005 + 0.004 + 2e-7;
-  const double along = std::sqrt(reach * reach - norm2(offset));
-  return {{{0.0, 0.0, 0.0}, {0.1, 0.0, 0.0}, {10.0, -20.0, 30.0}, 0.005, 2.0e-4},
-          {Vec3{along, 0.0, 0.0} + offset, {-0.1, 0.0, 0.0}, {-5.0, 0.0, 8.0}, 0.004, 1.5e-4}};
-}
-
 // Rounding: the engines order a few operations differently (the kick's 1/m, the contacts' sums),
 // a few ulp a step over 3000 steps: below 1e-12 of the speeds and spins, 1e-15 m of positions.
 TEST(Engine3DAgreement, AnObliqueCollisionAgreesWithLammpsToRounding) {
@@ -61,22 +51,8 @@ TEST(Engine3DAgreement, AnObliqueCollisionAgreesWithLammpsToRounding) {
 // the images and the springs carried across sides, against LAMMPS' ghosts. Rounding as above,
 // over fewer steps: every collision after the first amplifies the engines' rounding.
 TEST(Engine3DAgreement, CollisionsAcrossPeriodicSidesAgreeWithLammpsToRounding) {
-  RandomStream rng(2026, 1206);
-  std::vector<Sphere> spheres;
-  const double side = 0.03;
-  for (int k = 0; k < 12; ++k) {
-    Sphere s{};
-    s.radius = 0.003 * (1.0 + 0.2 * rng.uniform(-1.0, 1.0));
-    s.mass = 1e-4 * (1.0 + 0.3 * rng.uniform(-1.0, 1.0));
-    // apart on a lattice of 2 x 2 x 3 sites, the lowest and the highest close across z's sides
-    s.position = {side * (k % 2 == 0 ? 0.25 : 0.75) + 0.001 * rng.uniform(-1.0, 1.0),
-                  side * ((k / 2) % 2 == 0 ? 0.25 : 0.75) + 0.001 * rng.uniform(-1.0, 1.0),
-                  side * (0.15 + 0.35 * (k / 4)) + 0.001 * rng.uniform(-1.0, 1.0)};
-    s.velocity = {rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)};
-    s.spin = {50.0 * rng.uniform(-1.0, 1.0), 50.0 * rng.uniform(-1.0, 1.0),
-              50.0 * rng.uniform(-1.0, 1.0)};
-    spheres.push_back(s);
-  }
+  const std::vector<Sphere> spheres = periodic_cloud();
+  const double side = cloud_side;
   const Domain3 box{
       .lo = {0.0, 0.0, 0.0}, .hi = {side, side, side}, .periodic = {true, true, true}};
   const std::string lammps_box = words({"0", exact(side), "0", exact(side), "0", exact(side)});
