@@ -64,4 +64,35 @@ ChuteBench build_chute_bench(std::size_t n, std::uint64_t seed) {
   return c;
 }
 
+Scene3 tiled_across(const Scene3& scene, std::size_t k) {
+  const Domain3& d = scene.domain;
+  require(k >= 1, "a tiling takes 1 or more copies along each side");
+  require(d.periodic[0] && d.periodic[1] && scene.plates.empty(),
+          "only a scene periodic along x and y, without plates, is tiled across them");
+  Scene3 out;
+  out.materials = scene.materials;
+  out.gravity = scene.gravity;
+  out.domain = d;
+  const Vec3 size = d.size();
+  out.domain.hi.x = d.lo.x + static_cast<double>(k) * size.x;
+  out.domain.hi.y = d.lo.y + static_cast<double>(k) * size.y;
+  const Spheres& s = scene.spheres;
+  for (std::size_t ky = 0; ky < k; ++ky)
+    for (std::size_t kx = 0; kx < k; ++kx) {
+      const Vec3 shift{static_cast<double>(kx) * size.x, static_cast<double>(ky) * size.y, 0.0};
+      for (std::size_t i = 0; i < s.size(); ++i) {
+        Image3 image{};
+        out.add_sphere({.position = d.wrap(s.position[i], image) + shift,
+                        .radius = s.radius[i],
+                        .material = s.material[i],
+                        .kind = s.kind[i],
+                        .velocity = s.velocity[i],
+                        .angular_velocity = s.angular_velocity[i],
+                        .mass = s.mass[i],
+                        .inertia = s.inertia[i]});
+      }
+    }
+  return out;
+}
+
 } // namespace talus

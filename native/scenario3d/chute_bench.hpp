@@ -34,4 +34,10 @@ inline constexpr std::size_t chute_bench_layers = 39;
 /// 40 x 20 base.
 ChuteBench build_chute_bench(std::size_t n, std::uint64_t seed = 12345);
 
+/// The scene repeated k x k times across its periodic x and y (k >= 1): each sphere with its
+/// copies shifted by whole box lengths, with the same velocity and spin, in a box k times as long
+/// and as wide. A larger sample of the same state, for the cost against the number of spheres.
+/// InvalidArgument where x or y is not periodic, or the scene has plates.
+Scene3 tiled_across(const Scene3& scene, std::size_t k);
+
 } // namespace talus

@@ -1,6 +1,7 @@
 // talus bench chute's system (scenario3d/chute_bench.hpp): the counts, the frozen base, the laws
-// and gravity of LAMMPS' in.chute, no overlap at the start, and a layer that flows down the slope
-// over its base without going unstable.
+// and gravity of LAMMPS' in.chute, no overlap at the start, a layer that flows down the slope
+// over its base without going unstable, and its tiling across the slope (the same state, every
+// copy feeling what its original feels).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -86,6 +87,38 @@ TEST(ChuteBench, TheLayerFlowsDownTheSlopeOverItsFrozenBase) {
   EXPECT_GT(mean.x, 0.1);                    // down the slope, at 2 time units of flow
   EXPECT_LT(std::abs(mean.y), 0.1 * mean.x); // hardly across it
   EXPECT_GT(sim.contact_count(), 0u);
+}
+
+// A flowing layer tiled 2 x 2: four copies of every sphere, each with its original's velocity and
+// spin, and, with the springs both start without, its original's contact force: the copies
+// see the same neighbours through the larger box's sides as the originals through the smaller
+// one's. To 1e-8 N (the largest forces are about 1e2 N): a position shifted by whole box lengths
+// rounds at the larger coordinate's scale (an ulp of 80 is 1.4e-14), which k_n = 2e5 and the
+// neighbours' own rounding turn into forces different by some 1e-9 N.
+TEST(ChuteBench, ATiledLayerIsFourCopiesFeelingWhatTheOriginalsFeel) {
+  ChuteBench c = build_chute_bench(1000);
+  c.settings.threads = 1;
+  c.settings.sort_interval = 0;
+  Simulation3 flowed(c.scene, c.settings);
+  flowed.run(12000);
+  const Scene3 tiled = tiled_across(flowed.scene(), 2);
+  const Simulation3 one(flowed.scene(), c.settings), four(tiled, c.settings);
+  const Spheres &a = one.scene().spheres, &b = four.scene().spheres;
+  ASSERT_EQ(b.size(), 4 * a.size());
+  EXPECT_EQ(four.scene().domain.size().x, 2.0 * one.scene().domain.size().x);
+  EXPECT_EQ(four.scene().domain.size().y, 2.0 * one.scene().domain.size().y);
+  ASSERT_GT(one.contact_count(), 10u); // the lowest layer has landed on the base
+  EXPECT_EQ(four.contact_count(), 4 * one.contact_count());
+  for (std::size_t copy = 0; copy < 4; ++copy)
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const std::size_t k = copy * a.size() + i;
+      ASSERT_EQ(b.velocity[k].x, a.velocity[i].x);
+      ASSERT_EQ(b.angular_velocity[k].z, a.angular_velocity[i].z);
+      ASSERT_LT(norm(b.force[k] - a.force[i]), 1e-8) << "copy " << copy << ", sphere " << i;
+    }
+  Scene3 walled = flowed.scene();
+  walled.domain.periodic[1] = false;
+  EXPECT_THROW(tiled_across(walled, 2), InvalidArgument);
 }
 
 } // namespace
