@@ -75,7 +75,7 @@ TEST(EnergyLedger3, AShakenBedBalancesThePlatesWorkAgainstDissipation) {
        {std::pair{Integrator::gear, 5e-4}, {Integrator::verlet, 5e-3}}) {
     Simulation3 sim = testing::shaken_bed3(integrator, 4e-4, 50.0);
     double worst = 0.0;
-    const LedgerRow row = run_with_ledger(sim, 40000, worst);
+    const LedgerRow row = run_with_ledger(sim, 20000, worst);
     const double dissipated = row.dissipated_damper + row.dissipated_friction;
     EXPECT_GT(row.dissipated_friction, 0.0);
     EXPECT_GT(row.dissipated_damper, 0.0);
