@@ -1,9 +1,9 @@
 #!/bin/sh
 # The built-in 3D scenario, short: talus run writes thermo.csv, run.json and snapshots that VTK's
 # reader opens (read_vtk3d.py), the spheres come to rest in the box with the energy ledger
-# balanced, a run stopped and resumed is the run that never stopped (its ledger too), one
-# lengthened with --duration ends as the longer run, the ledger stops a run whose energy grows,
-# and the commands that take 2D runs refuse the folder.
+# balanced, a run stopped and resumed is the run that never stopped (its ledger too, and with
+# the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
+# the ledger stops a run whose energy grows, and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -59,6 +59,22 @@ for f in thermo.csv particles.pvd walls.pvd $(cd "$dir/whole" && ls snapshots/*)
 done
 [ "$(ls "$dir/parts/snapshots" | wc -l)" -eq "$(ls "$dir/whole/snapshots" | wc -l)" ] \
   || { echo "FAIL: the snapshots after a resume are not the whole run's"; exit 1; }
+# resume --set changes a 3D run's outputs' intervals and nothing else: more snapshots from the
+# checkpoint on, the same thermo rows and end as the run that never stopped; physics is refused
+status=0; "$talus" run pour3d --out "$dir/more" $short --stop-at 0.045 || status=$?
+[ "$status" -eq 4 ] || { echo "FAIL: --stop-at exited with $status, not 4"; exit 1; }
+"$talus" resume "$dir/more" --quiet --set output.snapshot_interval=0.01
+grep -q "^snapshot_interval = 0.01$" "$dir/more/scenario.toml" || { echo "FAIL: scenario.toml"; exit 1; }
+cmp -s "$dir/whole/thermo.csv" "$dir/more/thermo.csv" || { echo "FAIL: thermo.csv after --set"; exit 1; }
+[ "$(ls "$dir/more/snapshots" | wc -l)" -gt "$(ls "$dir/whole/snapshots" | wc -l)" ] \
+  || { echo "FAIL: no more snapshots after resume --set"; exit 1; }
+cmp -s "$(ls "$dir"/whole/snapshots/spheres_*.vtp | tail -1)" \
+  "$(ls "$dir"/more/snapshots/spheres_*.vtp | tail -1)" || { echo "FAIL: the end differs"; exit 1; }
+if "$talus" resume "$dir/more" --set "simulation.gravity=[0, 0, -5]" > "$dir/out.txt" 2>&1; then
+  echo "FAIL: resume --set changed gravity"; exit 1
+fi
+grep -q "changes only its outputs' intervals .*allowed: output.thermo_interval" "$dir/out.txt" \
+  || { cat "$dir/out.txt"; exit 1; }
 # a finished run is refused without --duration, and a --duration not beyond its time; run on
 # with --duration it ends where the run that was that long from the start ends, to the bit
 if "$talus" resume "$dir/whole" > "$dir/out.txt" 2>&1; then echo "FAIL: a finished run resumed"; exit 1; fi

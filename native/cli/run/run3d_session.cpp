@@ -1,5 +1,7 @@
 #include "cli/run/run3d_session.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +17,7 @@
 #include "io/vtk_spheres.hpp"
 #include "run/progress.hpp"
 #include "scenario/file/load3.hpp"
+#include "scenario/file/stages.hpp"
 
 namespace fs = std::filesystem;
 
@@ -122,6 +125,22 @@ void lengthen(Scenario3& s, const Checkpoint3& c, double duration, const fs::pat
                                       duration, c.state.time));
   s.simulation.duration = duration;
   write_file_atomically((dir / "scenario.toml").string(), to_toml(s));
+}
+
+// The keys `talus resume --set` changes in a 3D run: its outputs' intervals, which leave the
+// physics and so the run's bits as they were.
+constexpr std::array<const char*, 3> changeable3{
+    "output.thermo_interval", "output.snapshot_interval", "output.checkpoint_interval"};
+
+void refuse_unchangeable3(const std::vector<std::string>& set) {
+  for (const std::string& x : set) {
+    const std::string key = change_key(x);
+    if (std::ranges::find(changeable3, key) != changeable3.end()) continue;
+    throw InvalidArgument(fmt::format("--set {}: a 3D run changes only its outputs' intervals "
+                                      "as it goes on, for now; allowed: {} (--duration "
+                                      "lengthens it)",
+                                      x, fmt::join(changeable3, ", ")));
+  }
 }
 
 } // namespace
@@ -235,21 +254,21 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
 }
 
 int resume_3d(RunFolder folder, const RunOptions& o) {
-  if (!o.set.empty())
-    throw InvalidArgument("--set: a 3D run continues with the scenario it started with, for now "
-                          "(--duration lengthens it)");
+  refuse_unchangeable3(o.set);
   const fs::path& dir = folder.path();
   const std::string toml = (dir / "scenario.toml").string(),
                     bin = (dir / "checkpoint.bin").string();
   if (!fs::exists(bin))
     throw InvalidArgument("no checkpoint in '" + dir.string() + "': start it again with talus run");
-  Scenario3 s = load_scenario3(read_file(toml), toml);
+  Scenario3 s = load_scenario3(read_file(toml), toml, o.set);
   Checkpoint3 c = decode_checkpoint3(read_file(bin), bin);
   Book3 book = Book3::decode(c.run_data, bin);
   // the outputs cut back to the checkpoint: thermo.csv's tail, the later snapshots
   if (fs::file_size(dir / "thermo.csv") < book.thermo_bytes)
     throw InvalidArgument((dir / "thermo.csv").string() + " is shorter than at the checkpoint");
   lengthen(s, c, o.duration, dir);
+  // the run goes on with the outputs asked, and its scenario.toml says so
+  if (!o.set.empty()) write_file_atomically(toml, to_toml(s));
   fs::resize_file(dir / "thermo.csv", book.thermo_bytes);
   for (const auto& e : fs::directory_iterator(dir / "snapshots")) {
     const std::string name = "snapshots/" + e.path().filename().string();
