@@ -172,7 +172,7 @@ Book3 Book3::decode(const std::string& text, const std::string& source) {
   }
   std::string word;
   if (!(in >> word)) return b;
-  if (word != "ledger" || !(in >> count))
+  if (word != "ledger" || !(in >> count) || count > 64) // a ledger holds a dozen numbers
     throw CheckpointError(source + ": its run book has '" + word + "' after the snapshots");
   b.ledger_state.resize(count);
   for (double& v : b.ledger_state)
