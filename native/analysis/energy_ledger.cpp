@@ -155,6 +155,11 @@ void EnergyLedger::load(const std::vector<double>& s) {
   largest_mechanical_ = s[11];
 }
 
+std::string ledger_thermo_columns(const LedgerRow& row) {
+  return fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", row.dissipated_damper, row.dissipated_friction,
+                     row.wall_work, row.imbalance);
+}
+
 std::string energy_growth_words(std::uint64_t step, double time, double timestep,
                                 const LedgerRow& row) {
   return fmt::format(

@@ -45,6 +45,12 @@ struct LedgerRow {
   double rise = 0.0; ///< J: the imbalance's rise above its lowest before
 };
 
+/// The ledger's columns of thermo.csv, in 2D and 3D, each with its leading comma: their names,
+/// and a row's values.
+inline constexpr const char* ledger_thermo_header =
+    ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
+std::string ledger_thermo_columns(const LedgerRow& row);
+
 /// The energy growth at which a run with the ledger stops as unstable.
 inline constexpr double ledger_growth_limit = 0.01;
 

@@ -49,8 +49,7 @@ std::string LedgerObserver::thermo_columns(const RunContext& c, const Energies& 
   // energy from nowhere: an instability the overlap guard has not seen (yet)
   if (l.growth > ledger_growth_limit)
     throw InstabilityError(energy_growth_diagnosis(c.sim, l, c.book.collision_time));
-  return fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
-                     l.wall_work, l.imbalance);
+  return ledger_thermo_columns(l);
 }
 
 } // namespace talus::run

@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 #include <sys/resource.h>
 
+#include "analysis/energy_ledger.hpp"
 #include "analysis/rattlers.hpp"
 #include "analysis/stress.hpp"
 #include "io/checkpoint.hpp"
@@ -98,7 +99,7 @@ std::string thermo_header(const RunBook& book, bool ledger, const OutputSection&
   std::string head = "time,step,kinetic_translational,kinetic_rotational,elastic,gravitational,"
                      "total,momentum_x,momentum_y,angular_momentum,coordination,contacts,"
                      "packing_fraction";
-  if (ledger) head += ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance";
+  if (ledger) head += ledger_thermo_header;
   if (output.stress) head += region_header("");
   for (const StressRegion& r : output.stress_regions) head += region_header(r.name + "_");
   for (const std::string& name : book.force_columns)

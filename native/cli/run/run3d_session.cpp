@@ -46,8 +46,7 @@ public:
   std::string header() const {
     return std::string("time,step,kinetic,rotational,potential,elastic,total,contacts,"
                        "coordination,list_builds") +
-           (ledger_ ? ",dissipated_damper,dissipated_friction,wall_work,energy_imbalance" : "") +
-           "\n";
+           (ledger_ ? ledger_thermo_header : "") + "\n";
   }
   // throws InstabilityError where the ledger finds energy from nowhere
   std::string row(const Simulation3& sim, double collision_time) {
