@@ -35,9 +35,9 @@ void ForcePass3::take_touching_from_springs(const SphereList& list) {
   list_changed_ = false;
 }
 
-template <class N, class T>
+template <class N, class T, bool Rotation>
 ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const PairTable& table,
-                                      const Settings3& settings, int threads) {
+                                      const Settings3& settings, int threads, bool one_material) {
   Spheres& s = scene.spheres;
   const std::size_t n = s.size();
   const double dt = settings.timestep;
@@ -48,7 +48,7 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
   plate_force_.resize(list.plate.size());
   plate_torque_.resize(list.plate.size());
   found_.resize(static_cast<std::size_t>(std::max(threads, 1)));
-  const PairLanes3<ContactLanes3> pairs(table);
+  const PairLanes3<ContactLanes3> pairs(table, one_material);
   std::size_t contacts = 0, on_plates = 0;
   double deepest = 0.0;
   // each block's spheres sum their weights, the contacts among them in entry order, then their
@@ -60,7 +60,7 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
     const auto last = static_cast<std::uint32_t>(std::min<std::size_t>(n, first + rows));
     for (std::uint32_t i = first; i < last; ++i) {
       s.force[i] = s.is_free(i) ? s.mass[i] * scene.gravity : Vec3{};
-      s.torque[i] = {};
+      if constexpr (Rotation) s.torque[i] = {};
     }
     const BlockSums3 sums{s, first, last, deferred_force_.data(), deferred_torque_j_.data()};
     std::vector<Touching3>& found = found_[static_cast<std::size_t>(omp_get_thread_num())];
@@ -74,11 +74,12 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
                                                                 touched_.data(), found.data())
                                        : touching_entries<false>(s, list, scene.domain, sums, r0,
                                                                  r1, touched_.data(), found.data());
-      const ContactTally3 tally =
-          pair_forces3<N, T>(sums, list, pairs, table, found.data(), touching, dt, shares);
+      const ContactTally3 tally = pair_forces3<N, T, Rotation>(sums, list, pairs, table,
+                                                               found.data(), touching, dt, shares);
       contacts += tally.contacts, deepest = std::max(deepest, tally.deepest);
     }
-    const ContactTally3 plates = plate_forces<N, T>(scene, list, table, first, last, dt, shares);
+    const ContactTally3 plates =
+        plate_forces<N, T, Rotation>(scene, list, table, first, last, dt, shares);
     contacts += plates.contacts, on_plates += plates.contacts;
     deepest = std::max(deepest, plates.deepest);
   }
@@ -94,9 +95,11 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
       for (std::uint32_t q = list.second_offset[i]; q < list.second_offset[i + 1]; ++q) {
         const std::uint32_t e = list.second_entry[q];
         if (e >= block_entries) break;
-        f -= deferred_force_[e], m += deferred_torque_j_[e];
+        f -= deferred_force_[e];
+        if constexpr (Rotation) m += deferred_torque_j_[e];
       }
-      s.force[i] = f, s.torque[i] = m;
+      s.force[i] = f;
+      if constexpr (Rotation) s.torque[i] = m;
     }
   }
   for (Plane& p : scene.plates) p.force = {};
@@ -106,7 +109,7 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
   return ContactPass3{contacts, on_plates, deepest};
 }
 
-template <class N, class T>
+template <class N, class T, bool Rotation>
 ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
                                        std::uint32_t first, std::uint32_t last, double dt,
                                        LeverShares shares) {
@@ -126,7 +129,7 @@ ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const Pa
       }
       const ContactGeometry3 g =
           wall_geometry(d, std::sqrt(dist2), s.radius[i], s.mass[i], s.velocity[i],
-                        s.angular_velocity[i], plate.velocity_at(touch), shares);
+                        spin_of<Rotation>(s, i), plate.velocity_at(touch), shares);
       const PairParameters& p = table(s.material[i], plate.material);
       const ContactForce3 c = contact_force<N, T>(p, g, list.plate_spring[e], dt);
       plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
@@ -134,7 +137,8 @@ ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const Pa
         plate_torque_[e] +=
             rolling_torque<N>(p, g, c.normal_force, s.angular_velocity[i], plate.angular_velocity,
                               rim_of(s, i), 0.0, list.plate_rolling[e], dt);
-      s.force[i] += plate_force_[e], s.torque[i] += plate_torque_[e];
+      s.force[i] += plate_force_[e];
+      if constexpr (Rotation) s.torque[i] += plate_torque_[e];
       ++tally.contacts;
       tally.deepest = std::max(tally.deepest, g.overlap / s.radius[i]);
     }
@@ -143,9 +147,14 @@ ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const Pa
 }
 
 ContactPass3 ForcePass3::compute(Scene3& scene, SphereList& list, const PairTable& table,
-                                 const Settings3& settings, int threads) {
+                                 const Settings3& settings, int threads, bool rotation,
+                                 bool one_material) {
   return with_contact_law(settings.normal_law, settings.tangential_law, [&]<class N, class T>() {
-    return compute_with<N, T>(scene, list, table, settings, threads);
+    // only a frictionless law has a step without rotation
+    if constexpr (!T::has_friction)
+      if (!rotation)
+        return compute_with<N, T, false>(scene, list, table, settings, threads, one_material);
+    return compute_with<N, T, true>(scene, list, table, settings, threads, one_material);
   });
 }
 

@@ -43,9 +43,13 @@ class ForcePass3 {
 public:
   /// Sets every sphere's force to its weight (none for a sphere that is not free) plus its
   /// contacts' forces, and its torque to its contacts', sets each plate's force, and advances the
-  /// springs of the list by one step `settings.timestep`.
+  /// springs of the list by one step `settings.timestep`. `rotation` false (a frictionless scene
+  /// whose spheres do not turn: turns_spheres) leaves the torques and the spins' part of the
+  /// contacts' velocities out; the torques stay what they were (0). `one_material` true lets
+  /// a scene of one material have its pair parameters put in lanes once, not per contact.
   ContactPass3 compute(Scene3& scene, SphereList& list, const PairTable& table,
-                       const Settings3& settings, int threads);
+                       const Settings3& settings, int threads, bool rotation = true,
+                       bool one_material = true);
 
   /// The list's entries changed (a build, a renumbering): which of them touch is taken again from
   /// their springs, and the deferred forces cleared, at the next pass.
@@ -58,11 +62,11 @@ public:
 private:
   // rows whose touching entries are written down, then computed: their entries fit in L1
   static constexpr std::uint32_t stretch_rows = 64;
-  template <class N, class T>
+  template <class N, class T, bool Rotation>
   ContactPass3 compute_with(Scene3& scene, SphereList& list, const PairTable& table,
-                            const Settings3& settings, int threads);
+                            const Settings3& settings, int threads, bool one_material);
   // the plate contacts of spheres [first, last), added to them and kept for the plates' sums
-  template <class N, class T>
+  template <class N, class T, bool Rotation>
   ContactTally3 plate_forces(Scene3& scene, SphereList& list, const PairTable& table,
                              std::uint32_t first, std::uint32_t last, double dt,
                              LeverShares shares);

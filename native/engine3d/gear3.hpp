@@ -18,10 +18,11 @@ struct GearState3 {
 void gear_initialise(GearState3& g, const Spheres& s);
 
 /// Moves every free sphere's values dt ahead along their Taylor series (the predictor).
-void gear_predict(GearState3& g, Spheres& s, double dt, int threads);
+/// `rotation` false (a step without rotation) leaves the spins and their derivatives as they are.
+void gear_predict(GearState3& g, Spheres& s, double dt, int threads, bool rotation = true);
 
 /// Corrects every free sphere's values from the forces at the predicted state (the corrector):
 /// each value k moves by gear_c[k] k!/dt^k (dt^2/2) (F/m - r2), and likewise for the spin.
-void gear_correct(GearState3& g, Spheres& s, double dt, int threads);
+void gear_correct(GearState3& g, Spheres& s, double dt, int threads, bool rotation = true);
 
 } // namespace talus

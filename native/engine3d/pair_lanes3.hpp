@@ -127,6 +127,12 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
   return count;
 }
 
+/// Sphere i's spin, or 0 in a step without rotation (which the laws then need not look up).
+template <bool Rotation> Vec3 spin_of(const Spheres& s, std::uint32_t i) {
+  if constexpr (Rotation) return s.angular_velocity[i];
+  return {};
+}
+
 /// The parameters *p[k] of lane k's pair, in lanes L.
 template <class L>
 PairParametersOf<L> parameters_in_lanes(const std::array<const PairParameters*, lane_count<L>>& p) {
@@ -143,10 +149,12 @@ PairParametersOf<L> parameters_in_lanes(const std::array<const PairParameters*, 
   }
 }
 
-/// The pair parameters of contacts side by side, in lanes L: once for a scene of one material.
+/// The pair parameters of contacts side by side, in lanes L: once for a scene of one material
+/// (where `once` allows it), else looked up per contact.
 template <class L> class PairLanes3 {
 public:
-  explicit PairLanes3(const PairTable& table) : table_(table), one_(table.material_count() == 1) {
+  explicit PairLanes3(const PairTable& table, bool once = true)
+      : table_(table), one_(once && table.material_count() == 1) {
     if (one_) uniform_ = broadcast(table(0, 0));
   }
   /// The parameters of the pairs (i[k], j[k]) in lane k.
@@ -169,8 +177,9 @@ private:
 };
 
 /// The forces of found[0, count), as many at a time as L has lanes (the last ones repeated to
-/// fill them), added in entry order: to i, and to j or the entry's deferred force.
-template <class N, class T, class L>
+/// fill them), added in entry order: to i, and to j or the entry's deferred force. Without
+/// `Rotation` the spins are taken as 0 and no torque is added.
+template <class N, class T, bool Rotation, class L>
 [[gnu::flatten]] ContactTally3 pair_forces3(const BlockSums3& b, SphereList& list,
                                             const PairLanes3<L>& pairs, const PairTable& table,
                                             const Touching3* found, std::size_t count, double dt,
@@ -190,12 +199,13 @@ template <class N, class T, class L>
     const L ri = lanes_from<L>(each(s.radius)), rj = lanes_from<L>(each_j(s.radius));
     const Vec3Of<L> d = vec3_lanes_from<L>(
         [&](int k) { return found[t + static_cast<std::size_t>(std::min(k, live - 1))].d; });
-    const ContactGeometry3Of<L> g = pair_geometry(
-        d, square_root(dot(d, d)), ri, rj, lanes_from<L>(each(s.mass)),
-        lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)),
-        vec3_lanes_from<L>(each_j(s.velocity)), vec3_lanes_from<L>(each(s.angular_velocity)),
-        vec3_lanes_from<L>(each_j(s.angular_velocity)),
-        N::uses_r_eff || T::uses_r_eff || list.with_rolling, shares);
+    const ContactGeometry3Of<L> g =
+        pair_geometry(d, square_root(dot(d, d)), ri, rj, lanes_from<L>(each(s.mass)),
+                      lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)),
+                      vec3_lanes_from<L>(each_j(s.velocity)),
+                      vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, i[k]); }),
+                      vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, j[k]); }),
+                      N::uses_r_eff || T::uses_r_eff || list.with_rolling, shares);
     Vec3Of<L> spring{};
     if constexpr (T::has_history)
       spring = vec3_lanes_from<L>([&](int k) { return list.spring[entry[k]]; });
@@ -204,18 +214,21 @@ template <class N, class T, class L>
       const Vec3 force = lane_of(f.force, k);
       Vec3 torque_i = lane_of(f.torque_i, k), torque_j = lane_of(f.torque_j, k);
       if constexpr (T::has_history) list.spring[entry[k]] = lane_of(spring, k);
-      if (list.with_rolling) {
+      if (Rotation && list.with_rolling) {
         const Vec3 m =
             rolling_torque<N>(table(s.material[i[k]], s.material[j[k]]), lane_of(g, k),
                               f.normal_force[k], s.angular_velocity[i[k]], s.angular_velocity[j[k]],
                               rim_of(s, i[k]), rim_of(s, j[k]), list.rolling[entry[k]], dt);
         torque_i += m, torque_j -= m;
       }
-      s.force[i[k]] += force, s.torque[i[k]] += torque_i;
+      s.force[i[k]] += force;
+      if constexpr (Rotation) s.torque[i[k]] += torque_i;
       if (j[k] < b.last) {
-        s.force[j[k]] -= force, s.torque[j[k]] += torque_j;
+        s.force[j[k]] -= force;
+        if constexpr (Rotation) s.torque[j[k]] += torque_j;
       } else {
-        b.deferred_force[entry[k]] = force, b.deferred_torque_j[entry[k]] = torque_j;
+        b.deferred_force[entry[k]] = force;
+        if constexpr (Rotation) b.deferred_torque_j[entry[k]] = torque_j;
       }
     }
     const L ratio = g.overlap / smaller(ri, rj);

@@ -11,6 +11,7 @@
 #include "core/capacity_bytes.hpp"
 #include "engine3d/renumber3.hpp"
 #include "talus/error.hpp"
+#include "talus/law_table.hpp"
 
 namespace talus {
 
@@ -48,6 +49,18 @@ double resolved_skin(const Scene3& scene, const Settings3& settings) {
 }
 
 } // namespace
+
+bool turns_spheres(const Scene3& scene, const Settings3& settings) {
+  const bool friction =
+      with_tangential_law(settings.tangential_law, []<class T>() { return T::has_friction; });
+  const bool rolling = std::ranges::any_of(
+      scene.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+  const Spheres& s = scene.spheres;
+  bool spinning = false;
+  for (std::size_t i = 0; i < s.size() && !spinning; ++i)
+    spinning = s.is_free(i) && norm2(s.angular_velocity[i]) != 0.0;
+  return friction || rolling || spinning;
+}
 
 Simulation3::Simulation3(Scene3 scene, Settings3 settings)
     : scene_(std::move(scene)), settings_(settings) {
@@ -93,10 +106,23 @@ void Simulation3::set_up() {
   const int asked = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
   const auto worth = static_cast<int>(std::max<std::size_t>(1, scene_.spheres.size() / 500));
   threads_ = std::max(1, std::min(asked, worth));
+  rotation_ = general_ || turns_spheres(scene_, settings_);
+}
+
+void Simulation3::use_general_step(bool general) {
+  general_ = general;
+  rotation_ = general_ || turns_spheres(scene_, settings_);
+}
+
+std::string Simulation3::step_description() const {
+  std::string words = rotation_ ? "" : "frictionless, no rotation";
+  if (!general_ && table_.material_count() == 1)
+    words += words.empty() ? "one material" : ", one material";
+  return words.empty() ? "general" : words;
 }
 
 void Simulation3::compute_forces() {
-  last_ = force_pass_.compute(scene_, list_, table_, settings_, threads_);
+  last_ = force_pass_.compute(scene_, list_, table_, settings_, threads_, rotation_, !general_);
 }
 
 // Velocity Verlet as the 2D engine's (integrate/integrator.hpp): the velocity the contact laws
@@ -114,16 +140,18 @@ void Simulation3::step() {
     const Vec3 kick = (half * s.inv_mass[i]) * s.force[i];
     s.position[i] += dt * (s.velocity[i] + kick);
     s.velocity[i] += (1.0 + lag_) * kick;
+    if (!rotation_) continue;
     const Vec3 spin_kick = (half * s.inv_inertia[i]) * s.torque[i];
     s.angular_velocity[i] += (1.0 + lag_) * spin_kick;
   }
   std::swap(s.force, s.force_previous);
-  std::swap(s.torque, s.torque_previous);
+  if (rotation_) std::swap(s.torque, s.torque_previous);
   forces_after_the_move();
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::ptrdiff_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(k);
     s.velocity[i] += (half * s.inv_mass[i]) * (s.force[i] - lag_ * s.force_previous[i]);
+    if (!rotation_) continue;
     s.angular_velocity[i] +=
         (half * s.inv_inertia[i]) * (s.torque[i] - lag_ * s.torque_previous[i]);
   }
@@ -154,9 +182,9 @@ void Simulation3::forces_after_the_move() {
 // Gear as the 2D engine's: the contact laws see the predicted positions, velocities and spins.
 void Simulation3::gear_step() {
   const double dt = settings_.timestep;
-  gear_predict(gear_, scene_.spheres, dt, threads_);
+  gear_predict(gear_, scene_.spheres, dt, threads_, rotation_);
   forces_after_the_move();
-  gear_correct(gear_, scene_.spheres, dt, threads_);
+  gear_correct(gear_, scene_.spheres, dt, threads_, rotation_);
   ++steps_;
   time_ = static_cast<double>(steps_) * dt;
   guard();

@@ -7,6 +7,7 @@
 // have yet is refused where it is set (Spheres::add): moved spheres. Its results are
 // bit-identical for any thread count.
 #include <cstdint>
+#include <string>
 
 #include "engine3d/force_pass3.hpp"
 #include "engine3d/gear3.hpp"
@@ -24,6 +25,11 @@ struct Energies3 {
   double elastic = 0.0;    ///< stored in the contacts
   double total() const { return kinetic + rotational + potential + elastic; }
 };
+
+/// Whether anything in the scene can turn a sphere: a tangential law with friction, rolling
+/// resistance, or a free sphere spinning already. A frictionless scene of spheres at rest in spin
+/// keeps them so (its contacts exert no torque), and its step leaves spins and torques out.
+bool turns_spheres(const Scene3& scene, const Settings3& settings);
 
 /// Everything that determines how a run continues: what a checkpoint saves.
 struct SimulationState3 {
@@ -70,6 +76,13 @@ public:
   double coordination() const;
   /// The threads it runs on: those asked (all cores for 0), but at most one per 500 spheres.
   int threads() const { return threads_; }
+  /// What the step specialised to the scene leaves out, for run.json and a run's opening lines:
+  /// "frictionless, no rotation" (turns_spheres false), "one material" (the pair parameters put
+  /// in lanes once), both, or "general".
+  std::string step_description() const;
+  /// true: the general step, whatever the scene (for the tests that compare the two; the
+  /// results are the same to the bit).
+  void use_general_step(bool general);
   Energies3 energies() const;
   /// Bytes the engine holds for the run: the spheres' fields, the list with its springs, the
   /// force pass' buffers and Gear's derivatives (capacities, not sizes).
@@ -93,6 +106,8 @@ private:
   ContactPass3 last_;
   GearState3 gear_;
   int threads_ = 1;
+  bool rotation_ = true; ///< false: the step leaves the torques and spins out (turns_spheres)
+  bool general_ = false;
   double lag_ = 1.0;
   double time_ = 0.0;
   std::uint64_t steps_ = 0;

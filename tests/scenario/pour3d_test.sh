@@ -3,7 +3,8 @@
 # reader opens (read_vtk3d.py), the spheres come to rest in the box with the energy ledger
 # balanced, a run stopped and resumed is the run that never stopped (its ledger too, and with
 # the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
-# the ledger stops a run whose energy grows, and the commands that take 2D runs refuse the folder.
+# the ledger stops a run whose energy grows, run.json names the step specialised to the scene,
+# and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -39,6 +40,12 @@ assert abs(float(last["wall_work"])) < 1e-12 * dissipated, last["wall_work"]
 print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
+# run.json says what the step left out: one material here; without friction, rotation too
+grep -q '"step": "one material"' "$run/run.json" || { echo "FAIL: run.json's step"; exit 1; }
+"$talus" run pour3d --out "$dir/frictionless" --quiet --set particles.count=30 \
+  --set simulation.duration=0.01 --set simulation.tangential_law=none
+grep -q '"step": "frictionless, no rotation, one material"' "$dir/frictionless/run.json" \
+  || { echo "FAIL: the frictionless run's step"; exit 1; }
 for command in render movie analyze checkpoint; do
   if "$talus" "$command" "$run" > "$dir/out.txt" 2>&1; then echo "FAIL: $command took a 3D run"; exit 1; fi
   grep -q "is a run of spheres in 3D" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }

@@ -16,6 +16,7 @@
 #include "io/lammps_export3.hpp"
 #include "io/lammps_words.hpp"
 #include "scenario3d/chute_bench.hpp"
+#include "talus/law_table.hpp"
 
 namespace fs = std::filesystem;
 
@@ -32,6 +33,7 @@ struct ChuteOptions {
   std::uint64_t sort_every = 1000;
   std::size_t tile = 1;
   bool lammps = false;
+  bool frictionless = false;
   std::string cache = "bench/cache";
   std::string results = "bench/results";
   std::string lammps_inputs;
@@ -70,11 +72,12 @@ double run_lammps(const ChuteOptions& o, int ranks, const fs::path& dir, const s
   return lammps_seconds_per_particle_step((dir / "bench.log").string());
 }
 
-// Seconds per particle-step of `steps` steps from `state`; the engine's bytes after them (its
-// buffers sized by the steps) into `bytes`.
+// Seconds per particle-step of `steps` steps from `state` (in the general step if `general`);
+// the engine's bytes after them (its buffers sized by the steps) into `bytes`.
 double time_native(const SimulationState3& state, const Settings3& settings, std::uint64_t steps,
-                   std::size_t& bytes) {
+                   std::size_t& bytes, bool general = false) {
   Simulation3 sim = Simulation3::restore(state, settings);
+  sim.use_general_step(general);
   const auto start = std::chrono::steady_clock::now();
   sim.run(steps);
   const double seconds =
@@ -135,12 +138,53 @@ SimulationState3 tiled_state(const ChuteOptions& o, ChuteBench& c, const Simulat
   return sim.state();
 }
 
+// --frictionless: the flowing layer without friction (the tangential law `none`, the spins
+// stopped), timed in the step specialised to it and in the general step, in turns.
+void run_frictionless(const ChuteOptions& o, ChuteBench& c, SimulationState3 state) {
+  c.settings.tangential_law = law_id<Frictionless>;
+  for (Vec3& w : state.scene.spheres.angular_velocity) w = {};
+  const Simulation3 sim = Simulation3::restore(state, c.settings);
+  fmt::print("bench chute --frictionless: {} spheres, the flowing layer without friction, {} "
+             "thread(s), {} round(s) of {} steps in each step, in turns; the step specialised "
+             "to it: {}\n",
+             sim.scene().spheres.size(), sim.threads(), o.rounds, o.steps, sim.step_description());
+  std::vector<double> special, general, ratio;
+  std::size_t bytes = 0;
+  for (int round = 0; round < o.rounds; ++round) {
+    special.push_back(time_native(state, c.settings, o.steps, bytes));
+    general.push_back(time_native(state, c.settings, o.steps, bytes, true));
+    ratio.push_back(general.back() / special.back());
+    fmt::print("  round {}: specialised {:.2f} ns per particle-step, general {:.2f} ({:.2f}x)\n",
+               round + 1, 1e9 * special.back(), 1e9 * general.back(), ratio.back());
+    std::fflush(stdout);
+  }
+  fmt::print("  the specialised step against the general one: {:.2f}x (median of the rounds' "
+             "ratios)\n",
+             median(ratio));
+  const double n = static_cast<double>(sim.scene().spheres.size());
+  for (const bool g : {false, true}) {
+    const std::string file = append_result(
+        o.results, {.benchmark = g ? "chute_frictionless_general" : "chute_frictionless",
+                    .n = sim.scene().spheres.size(),
+                    .steps = o.steps,
+                    .threads = sim.threads(),
+                    .seconds_per_particle_step = median(g ? general : special),
+                    .contacts_per_particle = sim.coordination(),
+                    .peak_bytes_per_particle = peak_rss_bytes() / n,
+                    .nx = c.nx,
+                    .ny = c.ny,
+                    .skin = c.settings.skin});
+    if (g) fmt::print("appended to {}\n", file);
+  }
+}
+
 void run_chute(const ChuteOptions& o) {
   ChuteBench c = build_chute_bench(o.n);
   c.settings.threads = o.threads;
   c.settings.sort_interval = o.sort_every;
   SimulationState3 state = flowed_state(o, c);
   if (o.tile > 1) state = tiled_state(o, c, state);
+  if (o.frictionless) return run_frictionless(o, c, std::move(state));
   const Simulation3 sim = Simulation3::restore(state, c.settings);
   print_system(o, c, sim);
   const fs::path dir = fs::absolute(fs::path(o.cache) / "chute");
@@ -229,8 +273,13 @@ void add_bench_chute_command(CLI::App& bench) {
                   "beyond what a flow of its own would take long to reach")
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
-  cmd->add_flag("--lammps", o->lammps,
-                "also time LAMMPS (lmp, gran/hooke/history) on the same state, in turns");
+  CLI::Option* lammps =
+      cmd->add_flag("--lammps", o->lammps,
+                    "also time LAMMPS (lmp, gran/hooke/history) on the same state, in turns");
+  cmd->add_flag("--frictionless", o->frictionless,
+                "time the flowing layer without friction (tangential law none, spins stopped) in "
+                "the step specialised to it and in the general step, in turns")
+      ->excludes(lammps);
   cmd->add_option("--cache", o->cache,
                   "folder for the flowing layer (cached) and LAMMPS' data file and logs")
       ->capture_default_str();

@@ -66,6 +66,9 @@ int run_3d(const Scenario3& s, const std::string& dir, const RunOptions& o,
     fmt::print("  {} spheres, {} plates (3D); dt = {:.4g} s (collision time {:.4g} s); {} "
                "thread(s)\n",
                n, plates, built.settings.timestep, built.collision_time, sim.threads());
+    fmt::print("  step: {}\n", sim.step_description() == "general"
+                                   ? "the general one (the scene uses every feature it has)"
+                                   : "specialised to the scene: " + sim.step_description());
   }
   Book3 book;
   book.collision_time = built.collision_time;

@@ -89,11 +89,12 @@ std::string run_json(const Scenario3& s, const Simulation3& sim, double collisio
       "{{\n  \"talus_version\": \"{}\",\n  \"scenario\": \"{}\",\n  \"dimension\": 3,\n"
       "  \"seed\": {},\n  \"particles\": {},\n  \"plates\": {},\n  \"steps\": {},\n"
       "  \"time\": {:.9g},\n  \"timestep\": {:.9g},\n  \"collision_time\": {:.9g},\n"
-      "  \"integrator\": \"{}\",\n  \"threads\": {},\n  \"wall_seconds\": {:.6f},\n"
+      "  \"integrator\": \"{}\",\n  \"threads\": {},\n  \"step\": \"{}\",\n"
+      "  \"wall_seconds\": {:.6f},\n"
       "  \"particle_steps_per_second\": {:.6g},\n  \"ended_by\": \"{}\"\n}}\n",
       TALUS_VERSION, s.name, s.simulation.seed, n, sim.scene().plates.size(), sim.step_count(),
       sim.time(), sim.settings().timestep, collision_time, to_string(sim.settings().integrator),
-      sim.threads(), wall, rate, ended);
+      sim.threads(), sim.step_description(), wall, rate, ended);
 }
 
 void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::ofstream& thermo,
