@@ -29,11 +29,27 @@ void ForcePass3::take_touching_from_springs(const SphereList& list) {
   const auto some = [](const Vec3& v) { return v.x != 0.0 || v.y != 0.0 || v.z != 0.0; };
   touched_.resize(n);
   for (std::size_t e = 0; e < n; ++e)
-    touched_[e] = some(list.spring[e]) || (list.with_rolling && some(list.rolling[e])) ? 1 : 0;
+    touched_[e] =
+        (list.with_springs && some(list.spring[e])) || (list.with_rolling && some(list.rolling[e]))
+            ? 1
+            : 0;
   deferred_force_.assign(n, Vec3{});
   deferred_torque_j_.assign(n, Vec3{});
   list_changed_ = false;
 }
+
+namespace {
+
+// f.template operator()<Springs, Rolling>() with what the list keeps.
+template <class F> std::size_t touching_in(const SphereList& list, F&& f) {
+  if (list.with_springs)
+    return list.with_rolling ? f.template operator()<true, true>()
+                             : f.template operator()<true, false>();
+  return list.with_rolling ? f.template operator()<false, true>()
+                           : f.template operator()<false, false>();
+}
+
+} // namespace
 
 template <class N, class T, bool Rotation>
 ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const PairTable& table,
@@ -69,11 +85,10 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
     for (std::uint32_t r0 = first; r0 < last; r0 += stretch_rows) {
       const std::uint32_t r1 = std::min(last, r0 + stretch_rows);
       found.resize(std::max<std::size_t>(found.size(), list.row_offset[r1] - list.row_offset[r0]));
-      const std::size_t touching = list.with_rolling
-                                       ? touching_entries<true>(s, list, scene.domain, sums, r0, r1,
-                                                                touched_.data(), found.data())
-                                       : touching_entries<false>(s, list, scene.domain, sums, r0,
-                                                                 r1, touched_.data(), found.data());
+      const std::size_t touching = touching_in(list, [&]<bool Springs, bool Rolling>() {
+        return touching_entries<Springs, Rolling>(s, list, scene.domain, sums, r0, r1,
+                                                  touched_.data(), found.data());
+      });
       const ContactTally3 tally = pair_forces3<N, T, Rotation>(sums, list, pairs, table,
                                                                found.data(), touching, dt, shares);
       contacts += tally.contacts, deepest = std::max(deepest, tally.deepest);
@@ -123,7 +138,8 @@ ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const Pa
       const Vec3 d = s.position[i] - touch;
       const double dist2 = norm2(d);
       if (dist2 >= s.radius[i] * s.radius[i] || dist2 == 0.0) {
-        list.plate_spring[e] = plate_force_[e] = plate_torque_[e] = {};
+        plate_force_[e] = plate_torque_[e] = {};
+        if (list.with_springs) list.plate_spring[e] = {};
         if (list.with_rolling) list.plate_rolling[e] = {};
         continue;
       }
@@ -131,7 +147,9 @@ ContactTally3 ForcePass3::plate_forces(Scene3& scene, SphereList& list, const Pa
           wall_geometry(d, std::sqrt(dist2), s.radius[i], s.mass[i], s.velocity[i],
                         spin_of<Rotation>(s, i), plate.velocity_at(touch), shares);
       const PairParameters& p = table(s.material[i], plate.material);
-      const ContactForce3 c = contact_force<N, T>(p, g, list.plate_spring[e], dt);
+      Vec3 none{}; // the spring of a law without history, which it leaves alone
+      const ContactForce3 c =
+          contact_force<N, T>(p, g, list.with_springs ? list.plate_spring[e] : none, dt);
       plate_force_[e] = c.force, plate_torque_[e] = c.torque_i;
       if (list.with_rolling)
         plate_torque_[e] +=
@@ -165,7 +183,8 @@ double contact_elastic_energy(const Scene3& scene, const SphereList& list, const
     const auto add = [&](const std::vector<Vec3>& spring, const std::vector<Vec3>& rolling) {
       return [&](std::uint32_t, std::uint32_t k, std::uint32_t, const ContactGeometry3& g,
                  const PairParameters& p) {
-        e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(spring[k], g.normal));
+        const Vec3 stretch = list.with_springs ? spring[k] : Vec3{}; // none without history
+        e += contact_elastic_energy<N, T>(p, g, into_tangent_plane(stretch, g.normal));
         if (list.with_rolling) e += rolling_energy<N>(p, g, rolling[k]);
       };
     };

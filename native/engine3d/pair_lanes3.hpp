@@ -79,11 +79,12 @@ struct BlockSums3 {
 
 /// Tests every entry of rows [r0, r1) of the block: a touching one is written down in `found`
 /// (which has room for every entry of the rows). `touched[e]` says whether entry e touched at the
-/// last pass: an entry that touched then and does not now has its spring cleared (and its rolling
-/// spring, `Rolling`, and its deferred force). Those of an entry that did not touch are 0 already,
-/// so that only the contacts that end cost a write. Returns the count written. The arrays are
-/// taken as pointers once: the loop has more of them than registers.
-template <bool Rolling>
+/// last pass: an entry that touched then and does not now has its spring cleared (where the list
+/// keeps springs, `Springs`; its rolling spring, `Rolling`; and its deferred force). Those of an
+/// entry that did not touch are 0 already, so that only the contacts that end cost a write. Returns
+/// the count written. The arrays are taken as pointers once: the loop has more of them than
+/// registers.
+template <bool Springs, bool Rolling>
 std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& domain,
                              const BlockSums3& b, std::uint32_t r0, std::uint32_t r1,
                              std::uint8_t* touched, Touching3* found) {
@@ -117,7 +118,7 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
       count += touches;
       // but few contacts end in a step
       if (touched[e] > static_cast<std::uint8_t>(touches)) [[unlikely]] {
-        spring[e] = {};
+        if constexpr (Springs) spring[e] = {};
         if constexpr (Rolling) rolling[e] = {};
         if (j >= b.last) b.deferred_force[e] = b.deferred_torque_j[e] = {};
       }

@@ -28,22 +28,24 @@ void renumber_pairs(SphereList& l, const std::vector<std::uint32_t>& new_of_old)
   for (std::size_t i = 0; i < n; ++i)
     for (std::uint32_t e = l.row_offset[i]; e < l.row_offset[i + 1]; ++e) {
       const std::uint32_t a = new_of_old[i], b = new_of_old[l.neighbour[e]];
+      const Vec3 spring = l.with_springs ? l.spring[e] : Vec3{};
       const Vec3 rolling = l.with_rolling ? l.rolling[e] : Vec3{};
       if (a < b) {
-        rows[a].push_back({b, l.shift[e], l.spring[e], rolling});
+        rows[a].push_back({b, l.shift[e], spring, rolling});
         continue;
       }
       const Shift3 back{static_cast<std::int8_t>(-l.shift[e].x),
                         static_cast<std::int8_t>(-l.shift[e].y),
                         static_cast<std::int8_t>(-l.shift[e].z)};
-      rows[b].push_back({a, back, -l.spring[e], -rolling});
+      rows[b].push_back({a, back, -spring, -rolling});
     }
   l.neighbour.clear(), l.shift.clear(), l.spring.clear(), l.rolling.clear();
   l.row_offset.assign(1, 0);
   for (std::vector<Entry>& row : rows) {
     std::ranges::sort(row, {}, &Entry::j);
     for (const Entry& x : row) {
-      l.neighbour.push_back(x.j), l.shift.push_back(x.shift), l.spring.push_back(x.spring);
+      l.neighbour.push_back(x.j), l.shift.push_back(x.shift);
+      if (l.with_springs) l.spring.push_back(x.spring);
       if (l.with_rolling) l.rolling.push_back(x.rolling);
     }
     l.row_offset.push_back(static_cast<std::uint32_t>(l.neighbour.size()));
@@ -57,7 +59,8 @@ void renumber_plates(SphereList& l, const std::vector<std::uint32_t>& old_of_new
   out.plate_offset.assign(1, 0);
   for (const std::uint32_t i : old_of_new) {
     for (std::uint32_t e = l.plate_offset[i]; e < l.plate_offset[i + 1]; ++e) {
-      out.plate.push_back(l.plate[e]), out.plate_spring.push_back(l.plate_spring[e]);
+      out.plate.push_back(l.plate[e]);
+      if (l.with_springs) out.plate_spring.push_back(l.plate_spring[e]);
       if (l.with_rolling) out.plate_rolling.push_back(l.plate_rolling[e]);
     }
     out.plate_offset.push_back(static_cast<std::uint32_t>(out.plate.size()));

@@ -71,6 +71,7 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   // mean of the two: a pair rolls with it if either material does)
   list_.with_rolling = std::ranges::any_of(
       scene_.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+  list_.with_springs = general_ || keeps_history(settings_.tangential_law);
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
   compute_forces();
@@ -85,6 +86,7 @@ Simulation3::Simulation3(SimulationState3 state, Settings3 settings, bool)
   set_up();
   require(start_.size() == scene_.plates.size(),
           "a saved state's start poses are not one per plate");
+  fit_springs(); // a state saved under another law (or step) has springs it needs not, or lacks
   const std::size_t derivatives =
       settings_.integrator == Integrator::gear ? scene_.spheres.size() : 0;
   for (const auto* v : {&gear_.r2, &gear_.r3, &gear_.r4, &gear_.w2, &gear_.w3, &gear_.w4})
@@ -112,12 +114,35 @@ void Simulation3::set_up() {
 void Simulation3::use_general_step(bool general) {
   general_ = general;
   rotation_ = general_ || turns_spheres(scene_, settings_);
+  fit_springs();
 }
 
+// Springs where the law keeps a history or the step is the general one: gained (a contact's
+// spring then starts from 0; a law without history never moves it) or let go.
+void Simulation3::fit_springs() {
+  list_.with_springs = general_ || keeps_history(settings_.tangential_law);
+  if (list_.with_springs) {
+    list_.spring.resize(list_.pair_count());
+    list_.plate_spring.resize(list_.plate.size());
+  } else {
+    list_.spring = {}, list_.plate_spring = {};
+  }
+  force_pass_.list_changed();
+}
+
+// In the 2D engine's words and order (simulation/step_features.hpp, describe).
 std::string Simulation3::step_description() const {
-  std::string words = rotation_ ? "" : "frictionless, no rotation";
-  if (!general_ && table_.material_count() == 1)
-    words += words.empty() ? "one material" : ", one material";
+  if (general_) return "general";
+  const bool friction =
+      with_tangential_law(settings_.tangential_law, []<class T>() { return T::has_friction; });
+  std::string words;
+  const auto add = [&words](bool leaves_out, const char* what) {
+    if (leaves_out) words.append(words.empty() ? "" : ", ").append(what);
+  };
+  add(!friction, "frictionless");
+  add(friction && !list_.with_springs, "history-free");
+  add(!rotation_, "no rotation");
+  add(table_.material_count() == 1, "one material");
   return words.empty() ? "general" : words;
 }
 

@@ -77,8 +77,9 @@ public:
   /// The threads it runs on: those asked (all cores for 0), but at most one per 500 spheres.
   int threads() const { return threads_; }
   /// What the step specialised to the scene leaves out, for run.json and a run's opening lines:
-  /// "frictionless, no rotation" (turns_spheres false), "one material" (the pair parameters put
-  /// in lanes once), both, or "general".
+  /// "frictionless" (no spring per list entry, none cleared or carried over), "history-free" (the
+  /// same for a law with friction but no history), "no rotation" (turns_spheres false), "one
+  /// material" (the pair parameters put in lanes once), those that apply, or "general".
   std::string step_description() const;
   /// true: the general step, whatever the scene (for the tests that compare the two; the
   /// results are the same to the bit).
@@ -94,6 +95,7 @@ private:
   void compute_forces();
   void forces_after_the_move(); ///< the plates to the step's end, the list if stale, the forces
   void gear_step();
+  void fit_springs();  ///< springs per entry where the law or the general step keeps them
   void sort_spheres(); ///< renumbers the spheres in the order of their cells (renumber3.hpp)
   void guard() const;
 

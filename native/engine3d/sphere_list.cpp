@@ -166,6 +166,7 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
   for (std::size_t i = 0; i < s.size(); ++i) s.position[i] = domain.wrap(s.position[i], s.image[i]);
   SphereList next;
   next.skin = skin;
+  next.with_springs = list.with_springs;
   next.with_rolling = list.with_rolling;
   next.builds = list.builds + 1;
   next.row_offset.assign(1, 0);
@@ -178,7 +179,8 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
       for (const Candidate& c : row) {
         next.neighbour.push_back(c.j);
         next.shift.push_back(c.shift);
-        next.spring.push_back(kept_spring(list.row_offset, list.neighbour, list.spring, i, c.j));
+        if (next.with_springs)
+          next.spring.push_back(kept_spring(list.row_offset, list.neighbour, list.spring, i, c.j));
         if (next.with_rolling)
           next.rolling.push_back(
               kept_spring(list.row_offset, list.neighbour, list.rolling, i, c.j));
@@ -189,8 +191,9 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
         if (norm2(s.position[i] - closest_point(plates[w], s.position[i])) >= reach * reach)
           continue;
         next.plate.push_back(w);
-        next.plate_spring.push_back(
-            kept_spring(list.plate_offset, list.plate, list.plate_spring, i, w));
+        if (next.with_springs)
+          next.plate_spring.push_back(
+              kept_spring(list.plate_offset, list.plate, list.plate_spring, i, w));
         if (next.with_rolling)
           next.plate_rolling.push_back(
               kept_spring(list.plate_offset, list.plate, list.plate_rolling, i, w));

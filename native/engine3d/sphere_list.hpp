@@ -29,6 +29,10 @@ struct SphereList {
   std::vector<std::uint32_t> plate_offset; ///< CSR over spheres: their plates within reach
   std::vector<std::uint32_t> plate;
   std::vector<Vec3> plate_spring;
+  /// Whether the entries keep tangential springs (`spring`, `plate_spring`): where the tangential
+  /// law has a history (talus/law_table.hpp, keeps_history); else both are empty. Set before the
+  /// first build; builds keep it.
+  bool with_springs = true;
   /// Whether the entries keep rolling springs: `rolling` beside `spring` and `plate_rolling`
   /// beside `plate_spring` (the rolling angle, rad, a vector in the tangent plane), else both
   /// are empty. Set before the first build; builds keep it.
@@ -49,9 +53,9 @@ struct SphereList {
 
 /// Rebuilds the list with the given skin (m). Wraps positions into the domain along periodic
 /// axes first. Pairs of two spheres that are not free are left out. The springs (and rolling
-/// springs) of pairs still within reach are carried over. Throws InvalidArgument if a periodic axis
-/// is shorter than three interaction ranges (2 max radius + skin): a sphere would meet j through
-/// two images.
+/// springs) of pairs still within reach are carried over, where the list keeps them. Throws
+/// InvalidArgument if a periodic axis is shorter than three interaction ranges (2 max radius +
+/// skin): a sphere would meet j through two images.
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin);
 

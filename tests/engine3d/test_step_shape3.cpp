@@ -1,9 +1,10 @@
-// The 3D step specialised to a frictionless scene whose spheres do not turn
-// (Simulation3::step_description, turns_spheres): it leaves the torques and spins out, and a run
-// with it is the general step's run to the bit (every sum of the general step adds zeros that
-// the specialised one leaves out). Scenes with both integrators, both normal laws, one and two
-// materials, a periodic axis, renumbering, a vibrating floor and a turning wall, on one and two
-// threads.
+// The 3D steps specialised to a scene (Simulation3::step_description): a frictionless scene whose
+// spheres do not turn (turns_spheres) leaves the torques and spins out, a law without history the
+// springs; a run with them is the general step's run to the bit (every sum of the general step
+// adds zeros that the specialised one leaves out), and continues from a checkpoint to the bit.
+// Scenes with both integrators, both normal laws, frictionless and history-free laws (with
+// rolling resistance too), one and two materials, a periodic axis, renumbering, a vibrating floor
+// and a turning wall, on one and two threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "engine3d/simulation3.hpp"
+#include "io/checkpoint3.hpp"
 #include "support/two_body.hpp"
 #include "talus/closed_forms.hpp"
 #include "talus/law_table.hpp"
@@ -27,16 +29,20 @@ bool same(const std::vector<Vec3>& u, const std::vector<Vec3>& v) {
 struct ShapeCase {
   Integrator integrator;
   NormalLaw normal_law;
+  TangentialLaw tangential_law;
+  bool rolling; ///< rolling resistance
   int materials;
   int threads;
+  const char* step; ///< what the specialised step leaves out
 };
 
-// 300 frictionless spheres falling in a box periodic along x onto a floor vibrating at 50 Hz,
+// 300 spheres falling in a box periodic along x onto a floor vibrating at 50 Hz,
 // beside a wall turning about the vertical, renumbered every 500 steps.
-Simulation3 frictionless_bed(const ShapeCase& c, bool general) {
+Simulation3 falling_bed(const ShapeCase& c, bool general) {
   Material m = elastic_material();
   m.restitution = 0.5;
-  m.friction = 0.0;
+  m.friction = c.tangential_law == law_id<Frictionless> ? 0.0 : 0.4;
+  m.rolling_friction = c.rolling ? 0.05 : 0.0;
   Material light = m;
   light.density = 0.5 * m.density;
   Scene3 scene;
@@ -65,7 +71,7 @@ Simulation3 frictionless_bed(const ShapeCase& c, bool general) {
                   {.timestep = linear_collision_time(m.normal_stiffness, 0.0, mass) / 30.0,
                    .integrator = c.integrator,
                    .normal_law = c.normal_law,
-                   .tangential_law = law_id<Frictionless>,
+                   .tangential_law = c.tangential_law,
                    .sort_interval = 500,
                    .threads = c.threads});
   sim.use_general_step(general);
@@ -74,30 +80,41 @@ Simulation3 frictionless_bed(const ShapeCase& c, bool general) {
 
 class StepShape3 : public ::testing::TestWithParam<ShapeCase> {};
 
-TEST_P(StepShape3, AFrictionlessRunWithoutRotationIsTheGeneralStepsToTheBit) {
-  Simulation3 special = frictionless_bed(GetParam(), false);
-  Simulation3 general = frictionless_bed(GetParam(), true);
-  EXPECT_EQ(special.step_description().rfind("frictionless, no rotation", 0), 0u);
+bool same_run(const Simulation3& a, const Simulation3& b) {
+  const Spheres &p = a.scene().spheres, &q = b.scene().spheres;
+  bool plates = true;
+  for (std::size_t w = 0; w < a.scene().plates.size(); ++w)
+    plates = plates &&
+             std::memcmp(&a.scene().plates[w].force, &b.scene().plates[w].force, sizeof(Vec3)) == 0;
+  // the general step's torques are +0 where the specialised one sums none
+  return same(p.position, q.position) && same(p.velocity, q.velocity) && same(p.force, q.force) &&
+         same(p.angular_velocity, q.angular_velocity) && same(p.torque, q.torque) && p.id == q.id &&
+         plates && a.time() == b.time();
+}
+
+TEST_P(StepShape3, ARunInTheSpecialisedStepIsTheGeneralStepsToTheBit) {
+  Simulation3 special = falling_bed(GetParam(), false);
+  Simulation3 general = falling_bed(GetParam(), true);
+  EXPECT_EQ(special.step_description(), GetParam().step);
   EXPECT_EQ(general.step_description(), "general");
+  EXPECT_TRUE(special.list().spring.empty() && special.list().plate_spring.empty());
+  EXPECT_EQ(general.list().spring.size(), general.list().pair_count());
   std::size_t contacts = 0, on_plates = 0; // the most met at once
+  std::string halfway;
   for (int k = 0; k < 100; ++k) {
     special.run(100);
     general.run(100);
     contacts = std::max(contacts, special.contact_count());
     on_plates = std::max(on_plates, special.last_pass().on_plates);
+    if (k == 49) halfway = encode_checkpoint3({special.state(), special.settings(), ""});
   }
-  const Spheres &a = special.scene().spheres, &b = general.scene().spheres;
-  EXPECT_TRUE(same(a.position, b.position));
-  EXPECT_TRUE(same(a.velocity, b.velocity));
-  EXPECT_TRUE(same(a.force, b.force));
-  EXPECT_TRUE(same(a.angular_velocity, b.angular_velocity));
-  EXPECT_TRUE(same(a.torque, b.torque)); // the general step's torques are +0 too
-  EXPECT_TRUE(a.id == b.id);
-  for (std::size_t w = 0; w < special.scene().plates.size(); ++w)
-    EXPECT_EQ(std::memcmp(&special.scene().plates[w].force, &general.scene().plates[w].force,
-                          sizeof(Vec3)),
-              0)
-        << "plate " << w;
+  EXPECT_TRUE(same_run(special, general));
+  // continued from a checkpoint (which holds no springs): the same run
+  const Checkpoint3 c = decode_checkpoint3(halfway, "test");
+  Simulation3 resumed = Simulation3::restore(c.state, c.settings);
+  resumed.run(5000);
+  EXPECT_TRUE(same_run(special, resumed));
+  EXPECT_EQ(resumed.step_description(), GetParam().step);
   // and the run did what it is meant to test: many contacts, on the plates too
   EXPECT_GT(contacts, 100u);
   EXPECT_GT(on_plates, 20u);
@@ -105,15 +122,22 @@ TEST_P(StepShape3, AFrictionlessRunWithoutRotationIsTheGeneralStepsToTheBit) {
 
 INSTANTIATE_TEST_SUITE_P(
     Shapes, StepShape3,
-    ::testing::Values(ShapeCase{Integrator::verlet, law_id<LinearSpringDashpot>, 1, 1},
-                      ShapeCase{Integrator::gear, law_id<HertzViscoelastic>, 2, 2},
-                      ShapeCase{Integrator::verlet, law_id<HertzViscoelastic>, 2, 2},
-                      ShapeCase{Integrator::gear, law_id<LinearSpringDashpot>, 1, 2}),
+    ::testing::Values(ShapeCase{Integrator::verlet, law_id<LinearSpringDashpot>,
+                                law_id<Frictionless>, false, 1, 1,
+                                "frictionless, no rotation, one material"},
+                      ShapeCase{Integrator::gear, law_id<HertzViscoelastic>, law_id<Frictionless>,
+                                false, 2, 2, "frictionless, no rotation"},
+                      ShapeCase{Integrator::verlet, law_id<HertzViscoelastic>,
+                                law_id<ViscousCoulomb>, false, 2, 2, "history-free"},
+                      ShapeCase{Integrator::gear, law_id<LinearSpringDashpot>,
+                                law_id<ViscousCoulomb>, true, 1, 2, "history-free, one material"}),
     [](const ::testing::TestParamInfo<ShapeCase>& p) {
       const ShapeCase& c = p.param;
       return std::string(c.integrator == Integrator::gear ? "gear" : "verlet") + "_" +
              with_normal_law(c.normal_law, []<class N>() { return std::string(N::name); }) + "_" +
-             std::to_string(c.materials) + "materials_" + std::to_string(c.threads) + "threads";
+             with_tangential_law(c.tangential_law, []<class T>() { return std::string(T::name); }) +
+             (c.rolling ? "_rolling_" : "_") + std::to_string(c.materials) + "materials_" +
+             std::to_string(c.threads) + "threads";
     });
 
 TEST(StepShape3, OnlyAFrictionlessSceneAtRestInSpinLeavesRotationOut) {
@@ -141,7 +165,7 @@ TEST(StepShape3, OnlyAFrictionlessSceneAtRestInSpinLeavesRotationOut) {
   // and what the run says it left out
   EXPECT_EQ(Simulation3(scene, frictionless).step_description(),
             "frictionless, no rotation, one material");
-  EXPECT_EQ(Simulation3(spinning, frictionless).step_description(), "one material");
+  EXPECT_EQ(Simulation3(spinning, frictionless).step_description(), "frictionless, one material");
 }
 
 } // namespace

@@ -94,15 +94,17 @@ if [ ${#lammps[@]} -gt 0 ]; then
 fi
 chute --n 1000 --flow-steps 50 --steps 10 > "$dir/chute2.txt" || { cat "$dir/chute2.txt"; exit 1; }
 grep -q "flowing layer from" "$dir/chute2.txt" || { echo "the layer flowed again"; exit 1; }
-# --frictionless: the specialised step and the general one, in turns, both in the results
-chute --n 1000 --flow-steps 50 --steps 10 --rounds 2 --frictionless > "$dir/chute3.txt" ||
+# --steps-with: the specialised step and the general one, in turns, both in the results
+chute --n 1000 --flow-steps 50 --steps 10 --rounds 2 --steps-with none > "$dir/chute3.txt" ||
   { cat "$dir/chute3.txt"; exit 1; }
 grep -q "the step specialised to it: frictionless, no rotation, one material" "$dir/chute3.txt" ||
   { cat "$dir/chute3.txt"; exit 1; }
 grep -q "round 2: specialised .* ns per particle-step, general .*x)" "$dir/chute3.txt" || exit 1
-grep -q ',chute_frictionless,1280,10,' "$csv" && grep -q ',chute_frictionless_general,1280,10,' "$csv" ||
+grep -q ',chute_none,1280,10,' "$csv" && grep -q ',chute_none_general,1280,10,' "$csv" ||
   { echo "no frictionless rows"; cat "$csv"; exit 1; }
-chute --frictionless --lammps 2> "$dir/err.txt" && { echo "--frictionless --lammps was accepted"; exit 1; }
+chute --steps-with none --lammps 2> "$dir/err.txt" && { echo "--steps-with --lammps was accepted"; exit 1; }
+chute --steps-with sticky 2> "$dir/err.txt" && { echo "a law that does not exist was accepted"; exit 1; }
+grep -q "cundall_strack" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 chute --n 500 2> "$dir/err.txt" && { echo "500 spheres were accepted"; exit 1; }
 grep -q "1000" "$dir/err.txt" || { cat "$dir/err.txt"; exit 1; }
 exit 0

@@ -33,7 +33,8 @@ struct ChuteOptions {
   std::uint64_t sort_every = 1000;
   std::size_t tile = 1;
   bool lammps = false;
-  bool frictionless = false;
+  std::string law; ///< --steps-with: a tangential law to time in both steps
+
   std::string cache = "bench/cache";
   std::string results = "bench/results";
   std::string lammps_inputs;
@@ -138,21 +139,24 @@ SimulationState3 tiled_state(const ChuteOptions& o, ChuteBench& c, const Simulat
   return sim.state();
 }
 
-// --frictionless: the flowing layer without friction (the tangential law `none`, the spins
-// stopped), timed in the step specialised to it and in the general step, in turns.
-void run_frictionless(const ChuteOptions& o, ChuteBench& c, SimulationState3 state) {
-  c.settings.tangential_law = law_id<Frictionless>;
-  for (Vec3& w : state.scene.spheres.angular_velocity) w = {};
+// --steps-with LAW: the flowing layer with the tangential law LAW (`none`: its spins stopped, so
+// that nothing turns; `coulomb`: damped at in.chute's gamma_n, which its dashpot has none of),
+// timed in the step specialised to it and in the general step, in turns.
+void run_both_steps(const ChuteOptions& o, ChuteBench& c, SimulationState3 state) {
+  c.settings.tangential_law = parse_tangential_law(o.law);
+  if (c.settings.tangential_law == law_id<Frictionless>)
+    for (Vec3& w : state.scene.spheres.angular_velocity) w = {};
+  for (Material& m : state.scene.materials) m.tangential_damping = m.normal_damping_rate;
   const Simulation3 sim = Simulation3::restore(state, c.settings);
-  fmt::print("bench chute --frictionless: {} spheres, the flowing layer without friction, {} "
-             "thread(s), {} round(s) of {} steps in each step, in turns; the step specialised "
-             "to it: {}\n",
-             sim.scene().spheres.size(), sim.threads(), o.rounds, o.steps, sim.step_description());
+  fmt::print("bench chute --steps-with {}: {} spheres, the flowing layer, {} thread(s), {} "
+             "round(s) of {} steps in each step, in turns; the step specialised to it: {}\n",
+             o.law, sim.scene().spheres.size(), sim.threads(), o.rounds, o.steps,
+             sim.step_description());
   std::vector<double> special, general, ratio;
-  std::size_t bytes = 0;
+  std::size_t bytes = 0, bytes_general = 0;
   for (int round = 0; round < o.rounds; ++round) {
     special.push_back(time_native(state, c.settings, o.steps, bytes));
-    general.push_back(time_native(state, c.settings, o.steps, bytes, true));
+    general.push_back(time_native(state, c.settings, o.steps, bytes_general, true));
     ratio.push_back(general.back() / special.back());
     fmt::print("  round {}: specialised {:.2f} ns per particle-step, general {:.2f} ({:.2f}x)\n",
                round + 1, 1e9 * special.back(), 1e9 * general.back(), ratio.back());
@@ -162,9 +166,11 @@ void run_frictionless(const ChuteOptions& o, ChuteBench& c, SimulationState3 sta
              "ratios)\n",
              median(ratio));
   const double n = static_cast<double>(sim.scene().spheres.size());
+  fmt::print("  engine memory per sphere:   {:.0f} bytes, general {:.0f}\n",
+             static_cast<double>(bytes) / n, static_cast<double>(bytes_general) / n);
   for (const bool g : {false, true}) {
     const std::string file = append_result(
-        o.results, {.benchmark = g ? "chute_frictionless_general" : "chute_frictionless",
+        o.results, {.benchmark = "chute_" + o.law + (g ? "_general" : ""),
                     .n = sim.scene().spheres.size(),
                     .steps = o.steps,
                     .threads = sim.threads(),
@@ -173,6 +179,7 @@ void run_frictionless(const ChuteOptions& o, ChuteBench& c, SimulationState3 sta
                     .peak_bytes_per_particle = peak_rss_bytes() / n,
                     .nx = c.nx,
                     .ny = c.ny,
+                    .engine_bytes_per_particle = static_cast<double>(g ? bytes_general : bytes) / n,
                     .skin = c.settings.skin});
     if (g) fmt::print("appended to {}\n", file);
   }
@@ -184,7 +191,7 @@ void run_chute(const ChuteOptions& o) {
   c.settings.sort_interval = o.sort_every;
   SimulationState3 state = flowed_state(o, c);
   if (o.tile > 1) state = tiled_state(o, c, state);
-  if (o.frictionless) return run_frictionless(o, c, std::move(state));
+  if (!o.law.empty()) return run_both_steps(o, c, std::move(state));
   const Simulation3 sim = Simulation3::restore(state, c.settings);
   print_system(o, c, sim);
   const fs::path dir = fs::absolute(fs::path(o.cache) / "chute");
@@ -276,9 +283,12 @@ void add_bench_chute_command(CLI::App& bench) {
   CLI::Option* lammps =
       cmd->add_flag("--lammps", o->lammps,
                     "also time LAMMPS (lmp, gran/hooke/history) on the same state, in turns");
-  cmd->add_flag("--frictionless", o->frictionless,
-                "time the flowing layer without friction (tangential law none, spins stopped) in "
-                "the step specialised to it and in the general step, in turns")
+  cmd->add_option("--steps-with", o->law,
+                  "time the flowing layer with this tangential law (none: the spins stopped; "
+                  "coulomb: damped at gamma_n) in the step specialised to it and in the general "
+                  "step, in turns")
+      ->check(CLI::IsMember(
+          std::vector<std::string>(TangentialLaws::names.begin(), TangentialLaws::names.end())))
       ->excludes(lammps);
   cmd->add_option("--cache", o->cache,
                   "folder for the flowing layer (cached) and LAMMPS' data file and logs")
