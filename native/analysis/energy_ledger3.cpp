@@ -68,25 +68,20 @@ ContactPowers contact_powers(const Simulation3& sim) {
   const auto sphere = [&](std::uint32_t k) {
     return Member{s.is_free(k), s.velocity[k], s.angular_velocity[k], rim_of(s, k)};
   };
-  // a law without history keeps no springs
-  const auto spring = [&](const std::vector<Vec3>& springs, std::uint32_t e) {
-    return list.with_springs ? springs[e] : Vec3{};
-  };
   with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
     for_each_contact3(
         scene, list, sim.table(), lever_shares(c.lever_arm),
         [&](std::uint32_t i, std::uint32_t e, std::uint32_t j, const ContactGeometry3& g,
             const PairParameters& p) {
-          add_contact<N, T>(g, p, spring(list.spring, e),
-                            list.with_rolling ? &list.rolling[e] : nullptr, sphere(i), sphere(j),
-                            out);
+          add_contact<N, T>(g, p, list.spring_at(e), list.with_rolling ? &list.rolling[e] : nullptr,
+                            sphere(i), sphere(j), out);
         },
         [&](std::uint32_t i, std::uint32_t e, std::uint32_t w, const ContactGeometry3& g,
             const PairParameters& p) {
           const Plane& plate = scene.plates[w];
           const Member at_plate{false, plate.velocity_at(closest_point(plate, s.position[i])),
                                 plate.angular_velocity, 0.0};
-          add_contact<N, T>(g, p, spring(list.plate_spring, e),
+          add_contact<N, T>(g, p, list.plate_spring_at(e),
                             list.with_rolling ? &list.plate_rolling[e] : nullptr, sphere(i),
                             at_plate, out);
         });

@@ -45,6 +45,10 @@ struct SphereList {
   std::uint64_t builds = 0;
 
   std::size_t pair_count() const { return neighbour.size(); }
+  /// The tangential spring of pair entry e, or of sphere-plate entry e: 0 where the list keeps
+  /// none (a law without history).
+  Vec3 spring_at(std::size_t e) const { return with_springs ? spring[e] : Vec3{}; }
+  Vec3 plate_spring_at(std::size_t e) const { return with_springs ? plate_spring[e] : Vec3{}; }
   Vec3 offset(std::size_t entry, const Domain3& d) const {
     const Vec3 l = d.size();
     return {shift[entry].x * l.x, shift[entry].y * l.y, shift[entry].z * l.z};

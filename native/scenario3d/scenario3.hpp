@@ -71,6 +71,7 @@ struct Output3Section {
   double snapshot_interval = 0.1;   ///< s; 0: none
   double checkpoint_interval = 1.0; ///< s; 0: only at the end, at --stop-at and on a signal
   bool energy_ledger = false;       ///< the ledger's columns in thermo.csv (energy_ledger3.hpp)
+  bool stress = false; ///< the box's stress and fabric columns in thermo.csv (stress3.hpp)
 };
 
 struct Scenario3 {

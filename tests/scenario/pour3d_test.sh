@@ -3,7 +3,8 @@
 # reader opens (read_vtk3d.py), the spheres come to rest in the box with the energy ledger
 # balanced, a run stopped and resumed is the run that never stopped (its ledger too, and with
 # the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
-# the ledger stops a run whose energy grows, run.json names the step specialised to the scene,
+# the ledger stops a run whose energy grows, the stress columns weigh the bed, run.json names the
+# step specialised to the scene,
 # and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
@@ -13,7 +14,7 @@ trap 'rm -rf "$dir"' EXIT
 run="$dir/run"
 "$talus" run pour3d --out "$run" --quiet --set particles.count=120 --set simulation.duration=0.3 \
   --set output.snapshot_interval=0.05 --set simulation.timestep_factor=20 \
-  --set output.energy_ledger=true
+  --set output.energy_ledger=true --set output.stress=true
 for f in thermo.csv run.json scenario.toml particles.pvd walls.pvd; do
   [ -s "$run/$f" ] || { echo "FAIL: no $f"; exit 1; }
 done
@@ -37,6 +38,17 @@ assert all(b <= a + 1e-3 * fallen for a, b in zip(totals, totals[1:])), "the ene
 dissipated = float(last["dissipated_damper"]) + float(last["dissipated_friction"])
 assert abs(float(last["energy_imbalance"])) < 1e-2 * dissipated, (last, dissipated)
 assert abs(float(last["wall_work"])) < 1e-12 * dissipated, last["wall_work"]
+# the stress over the box (0.03 x 0.03 x 0.12 m): its weight's virial g sum m z (the potential
+# column) is V sigma_zz less what the walls' friction carries; the bed still trembles, whose
+# accelerations move it by a few percent (tests/engine3d/test_stress3.cpp checks it at rest)
+volume = 0.03 * 0.03 * 0.12
+s = {k: float(v) for k, v in last.items()}
+assert 0.8 < s["stress_zz"] * volume / s["potential"] < 1.1, (s["stress_zz"], s["potential"])
+assert s["stress_zz"] > max(s["stress_xx"], s["stress_yy"]) > 0, last
+assert abs(s["pressure"] - (s["stress_xx"] + s["stress_yy"] + s["stress_zz"]) / 3) < 1e-9 * s["pressure"]
+assert abs(s["fabric_xx"] + s["fabric_yy"] + s["fabric_zz"] - 1) < 1e-6, last
+assert s["stress_major"] >= s["stress_intermediate"] >= s["stress_minor"], last
+assert s["stress_major_z"] > 0.9, last["stress_major_z"]
 print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]

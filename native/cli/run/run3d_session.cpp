@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "analysis/energy_ledger3.hpp"
+#include "analysis/stress3.hpp"
 #include "io/checkpoint3.hpp"
 #include "io/vtk.hpp"
 #include "io/vtk_spheres.hpp"
@@ -25,11 +26,13 @@ namespace talus::cli {
 
 namespace {
 
-// thermo.csv of a 3D run: a row of energies, contacts and list builds, and with
-// output.energy_ledger the ledger's columns, its powers taken in after every step.
+// thermo.csv of a 3D run: a row of energies, contacts and list builds, with
+// output.energy_ledger the ledger's columns, its powers taken in after every step, and with
+// output.stress the box's stress and fabric.
 class Thermo3 {
 public:
   Thermo3(const Scenario3& s, const Book3& book) {
+    if (s.output.stress) stress_box_ = {s.geometry.lo, s.geometry.hi};
     if (!s.output.energy_ledger) return;
     ledger_.emplace();
     if (!book.ledger_state.empty()) ledger_->load(book.ledger_state);
@@ -46,7 +49,7 @@ public:
   std::string header() const {
     return std::string("time,step,kinetic,rotational,potential,elastic,total,contacts,"
                        "coordination,list_builds") +
-           (ledger_ ? ledger_thermo_header : "") + "\n";
+           (ledger_ ? ledger_thermo_header : "") + (stress_box_ ? stress_thermo_header : "") + "\n";
   }
   // throws InstabilityError where the ledger finds energy from nowhere
   std::string row(const Simulation3& sim, double collision_time) {
@@ -62,11 +65,14 @@ public:
       out += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
                          l.wall_work, l.imbalance);
     }
+    if (stress_box_)
+      out += stress_thermo_columns(region_stress(sim, stress_box_->first, stress_box_->second));
     return out + "\n";
   }
 
 private:
   std::optional<EnergyLedger> ledger_;
+  std::optional<std::pair<Vec3, Vec3>> stress_box_; // lo, hi
 };
 
 // A snapshot of the spheres and one of the plates, listed in the book and their collections.

@@ -121,6 +121,7 @@ void check_targets(TableReader& top, const Scenario3& s) {
 void read_output(TableReader& r, Output3Section& o) {
   read_output_intervals(r, o);
   o.energy_ledger = r.boolean("energy_ledger", o.energy_ledger);
+  o.stress = r.boolean("stress", o.stress);
 }
 
 Scenario3 load_root(const toml::table& root, const std::string& file) {
@@ -213,7 +214,8 @@ std::string to_toml(const Scenario3& s) {
       {"output", toml::table{{"thermo_interval", s.output.thermo_interval},
                              {"snapshot_interval", s.output.snapshot_interval},
                              {"checkpoint_interval", s.output.checkpoint_interval},
-                             {"energy_ledger", s.output.energy_ledger}}}};
+                             {"energy_ledger", s.output.energy_ledger},
+                             {"stress", s.output.stress}}}};
   if (!s.drivers.empty()) {
     toml::array drivers;
     for (const Driver3Section& d : s.drivers) drivers.push_back(driver_table(d));

@@ -1,0 +1,126 @@
+#include "analysis/stress3.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "engine3d/contact_visit3.hpp"
+#include "talus/law_table.hpp"
+
+namespace talus {
+
+namespace {
+
+Tensor3 outer(const Vec3& a, const Vec3& b) {
+  Tensor3 t;
+  t << a.x * b.x, a.x * b.y, a.x * b.z, a.y * b.x, a.y * b.y, a.y * b.z, a.z * b.x, a.z * b.y,
+      a.z * b.z;
+  return t;
+}
+
+// Whether sphere i's centre lies in [lo, hi): where it is wrapped into a periodic box (between
+// two list builds a sphere may have crossed the box's side unwrapped).
+bool inside(const Simulation3& sim, std::size_t i, const Vec3& lo, const Vec3& hi) {
+  Image3 crossed{};
+  const Vec3 r = sim.scene().domain.wrap(sim.scene().spheres.position[i], crossed);
+  return r.x >= lo.x && r.x < hi.x && r.y >= lo.y && r.y < hi.y && r.z >= lo.z && r.z < hi.z;
+}
+
+// The contact part and the fabric: each contact's force on i (and -force on j) with its branch.
+void add_contacts(const Simulation3& sim, Vec3 lo, Vec3 hi, RegionStress3& out) {
+  const Scene3& scene = sim.scene();
+  const Spheres& s = scene.spheres;
+  const SphereList& list = sim.list();
+  const Settings3& c = sim.settings();
+  const auto in = [&](std::uint32_t i) { return s.is_free(i) && inside(sim, i, lo, hi); };
+  with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
+    for_each_contact3(
+        scene, list, sim.table(), lever_shares(c.lever_arm),
+        [&](std::uint32_t i, std::uint32_t e, std::uint32_t j, const ContactGeometry3& g,
+            const PairParameters& p) {
+          Vec3 history = list.spring_at(e); // a copy: looking must not advance it
+          const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
+          // the middle of the overlap, from each centre
+          const double half = 0.5 * g.overlap;
+          if (in(i)) out.contact -= outer(f, -(s.radius[i] - half) * g.normal);
+          if (in(j)) out.contact -= outer(-f, (s.radius[j] - half) * g.normal);
+          if (!s.is_free(i) || !s.is_free(j) || (!in(i) && !in(j))) return;
+          out.fabric += outer(g.normal, g.normal);
+          ++out.contacts;
+        },
+        [&](std::uint32_t i, std::uint32_t e, std::uint32_t, const ContactGeometry3& g,
+            const PairParameters& p) {
+          if (!in(i)) return;
+          Vec3 history = list.plate_spring_at(e);
+          const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
+          // the plate's point, nearest the centre
+          out.contact -= outer(f, -(s.radius[i] - g.overlap) * g.normal);
+        });
+  });
+  if (out.contacts > 0) out.fabric /= static_cast<double>(out.contacts);
+}
+
+} // namespace
+
+Principal3 principal(const Tensor3& t) {
+  const Tensor3 symmetric = 0.5 * (t + t.transpose());
+  const Eigen::SelfAdjointEigenSolver<Tensor3> solver(symmetric);
+  // the solver's eigenvalues ascend: the major one is the last
+  Principal3 out;
+  for (int k = 0; k < 3; ++k) {
+    out.values(k) = solver.eigenvalues()(2 - k);
+    out.directions.col(k) = solver.eigenvectors().col(2 - k);
+  }
+  return out;
+}
+
+RegionStress3 region_stress(const Simulation3& sim, Vec3 lo, Vec3 hi) {
+  RegionStress3 out;
+  out.volume = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z);
+  add_contacts(sim, lo, hi, out);
+  // the kinetic part, about the spheres' mean velocity
+  const Spheres& s = sim.scene().spheres;
+  double mass = 0.0;
+  Vec3 momentum{};
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s.is_free(i) && inside(sim, i, lo, hi))
+      mass += s.mass[i], momentum += s.mass[i] * s.velocity[i], ++out.spheres;
+  const Vec3 mean = mass > 0.0 ? (1.0 / mass) * momentum : Vec3{};
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s.is_free(i) && inside(sim, i, lo, hi)) {
+      const Vec3 u = s.velocity[i] - mean;
+      out.kinetic += s.mass[i] * outer(u, u);
+    }
+  if (out.volume > 0.0) out.contact /= out.volume, out.kinetic /= out.volume;
+  return out;
+}
+
+const std::string stress_thermo_header =
+    ",stress_xx,stress_xy,stress_xz,stress_yx,stress_yy,stress_yz,stress_zx,stress_zy,stress_zz,"
+    "kinetic_stress_xx,kinetic_stress_yy,kinetic_stress_zz,kinetic_stress_xy,kinetic_stress_xz,"
+    "kinetic_stress_yz,pressure,stress_major,stress_intermediate,stress_minor,stress_major_x,"
+    "stress_major_y,stress_major_z,fabric_xx,fabric_yy,fabric_zz,fabric_xy,fabric_xz,fabric_yz";
+
+std::string stress_thermo_columns(const RegionStress3& s) {
+  const Tensor3 t = s.total();
+  const Principal3 p = principal(t);
+  Eigen::Vector3d major = p.directions.col(0);
+  // an eigenvector's sign is the solver's choice: the one with its largest component positive
+  Eigen::Index largest = 0;
+  major.cwiseAbs().maxCoeff(&largest);
+  if (major(largest) < 0.0) major = -major;
+  std::string out;
+  const auto add = [&out](double v) { out += fmt::format(",{:.9e}", v); };
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) add(t(a, b));
+  const Tensor3& k = s.kinetic;
+  for (const double v : {k(0, 0), k(1, 1), k(2, 2), k(0, 1), k(0, 2), k(1, 2)}) add(v);
+  add(t.trace() / 3.0);
+  for (int m = 0; m < 3; ++m) add(p.values(m));
+  for (int m = 0; m < 3; ++m) add(major(m));
+  const Tensor3& f = s.fabric;
+  for (const double v : {f(0, 0), f(1, 1), f(2, 2), f(0, 1), f(0, 2), f(1, 2)}) add(v);
+  return out;
+}
+
+} // namespace talus
