@@ -44,6 +44,12 @@ void validate(const Scene3& scene, const Settings3& settings) {
           "the domain needs lo < hi along every axis");
 }
 
+// Whether some material rolls with resistance (a pair rolls with it if either material does:
+// the mixed mu_r is the mean of the two).
+bool rolls_with_resistance(const std::vector<Material>& materials) {
+  return std::ranges::any_of(materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+}
+
 double resolved_skin(const Scene3& scene, const Settings3& settings) {
   return settings.skin > 0.0 ? settings.skin : 0.5 * scene.spheres.max_radius();
 }
@@ -51,10 +57,8 @@ double resolved_skin(const Scene3& scene, const Settings3& settings) {
 } // namespace
 
 bool turns_spheres(const Scene3& scene, const Settings3& settings) {
-  const bool friction =
-      with_tangential_law(settings.tangential_law, []<class T>() { return T::has_friction; });
-  const bool rolling = std::ranges::any_of(
-      scene.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+  const bool friction = has_friction(settings.tangential_law);
+  const bool rolling = rolls_with_resistance(scene.materials);
   const Spheres& s = scene.spheres;
   bool spinning = false;
   for (std::size_t i = 0; i < s.size() && !spinning; ++i)
@@ -67,10 +71,7 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   set_up();
   for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
   drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
-  // rolling springs where some pair of materials rolls with resistance (the mixed mu_r is the
-  // mean of the two: a pair rolls with it if either material does)
-  list_.with_rolling = std::ranges::any_of(
-      scene_.materials, [](const Material& m) { return m.rolling_friction > 0.0; });
+  list_.with_rolling = rolls_with_resistance(scene_.materials); // rolling springs
   list_.with_springs = general_ || keeps_history(settings_.tangential_law);
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
                     resolved_skin(scene_, settings_));
@@ -133,8 +134,7 @@ void Simulation3::fit_springs() {
 // In the 2D engine's words and order (simulation/step_features.hpp, describe).
 std::string Simulation3::step_description() const {
   if (general_) return "general";
-  const bool friction =
-      with_tangential_law(settings_.tangential_law, []<class T>() { return T::has_friction; });
+  const bool friction = has_friction(settings_.tangential_law);
   std::string words;
   const auto add = [&words](bool leaves_out, const char* what) {
     if (leaves_out) words.append(words.empty() ? "" : ", ").append(what);

@@ -132,6 +132,10 @@ inline std::string material_error(NormalLaw n, TangentialLaw t, const Material& 
 inline bool keeps_history(TangentialLaw t) {
   return with_tangential_law(t, []<class T>() { return T::has_history; });
 }
+/// Whether the tangential law has friction (every law but `none`).
+inline bool has_friction(TangentialLaw t) {
+  return with_tangential_law(t, []<class T>() { return T::has_friction; });
+}
 /// The names of the tangential laws without history, as "a, b": what the LAMMPS package allows.
 inline std::string history_free_tangential_names() {
   std::string names;
