@@ -1,6 +1,7 @@
 #include "analysis/rattlers.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "talus/law_table.hpp"
 
@@ -11,6 +12,32 @@ int contacts_needed(const Simulation& sim) {
   const auto& m = sim.world().materials;
   return std::all_of(m.begin(), m.end(), [](const Material& x) { return x.friction == 0.0; }) ? 3
                                                                                               : 2;
+}
+
+Peeled peel_rattlers(const std::vector<std::vector<std::int64_t>>& partners,
+                     const std::vector<bool>& free, int needed) {
+  Peeled out;
+  out.rattler.assign(partners.size(), false);
+  out.count.assign(partners.size(), 0);
+  std::vector<std::uint32_t> pending;
+  for (std::uint32_t i = 0; i < partners.size(); ++i) {
+    if (!free[i]) continue;
+    out.count[i] = static_cast<int>(partners[i].size());
+    if (out.count[i] < needed) pending.push_back(i);
+  }
+  // take out each grain with too few contacts; its partners lose one and may follow it
+  while (!pending.empty()) {
+    const std::uint32_t i = pending.back();
+    pending.pop_back();
+    if (out.rattler[i]) continue;
+    out.rattler[i] = true;
+    for (const std::int64_t j : partners[i]) {
+      if (j < 0 || out.rattler[static_cast<std::size_t>(j)]) continue;
+      if (--out.count[static_cast<std::size_t>(j)] < needed)
+        pending.push_back(static_cast<std::uint32_t>(j));
+    }
+  }
+  return out;
 }
 
 LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
@@ -24,27 +51,12 @@ LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
     if (v.wall < 0 && p.is_free(v.j))
       partners[v.j].push_back(p.is_free(v.i) ? static_cast<std::int64_t>(v.i) : -1);
   });
+  std::vector<bool> free(p.size());
+  for (std::uint32_t i = 0; i < p.size(); ++i) free[i] = p.is_free(i);
+  Peeled peeled = peel_rattlers(partners, free, needed);
   LoadBearing out;
-  out.rattler.assign(p.size(), false);
-  std::vector<int> count(p.size(), 0);
-  std::vector<std::uint32_t> pending;
-  for (std::uint32_t i = 0; i < p.size(); ++i) {
-    if (!p.is_free(i)) continue;
-    count[i] = static_cast<int>(partners[i].size());
-    if (count[i] < needed) pending.push_back(i);
-  }
-  // take out each grain with too few contacts; its partners lose one and may follow it
-  while (!pending.empty()) {
-    const std::uint32_t i = pending.back();
-    pending.pop_back();
-    if (out.rattler[i]) continue;
-    out.rattler[i] = true;
-    for (const std::int64_t j : partners[i]) {
-      if (j < 0 || out.rattler[static_cast<std::size_t>(j)]) continue;
-      if (--count[static_cast<std::size_t>(j)] < needed)
-        pending.push_back(static_cast<std::uint32_t>(j));
-    }
-  }
+  out.rattler = std::move(peeled.rattler);
+  const std::vector<int>& count = peeled.count;
   double contacts = 0.0;
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     // a periodic box's grain where it is: wrapped (it may have crossed since the list's build)

@@ -6,6 +6,7 @@
 // and with walls, until every grain left has enough. The coordination of the grains left is the
 // one the isostatic counting (Z = 2d without friction) compares with.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/vec2.hpp"
@@ -19,6 +20,16 @@ struct LoadBearing {
   std::size_t rattlers = 0;  ///< of those, rattlers
   double coordination = 0.0; ///< mean contacts of the others in the region (walls included)
 };
+
+/// A network's rattlers: partners[i] lists grain i's partners (other grains by index; -1 for what
+/// never leaves: a wall, a fixed grain), free[i] whether i may be taken out. Each grain with
+/// fewer than `needed` contacts is taken out, its partners losing one, until none is left.
+struct Peeled {
+  std::vector<bool> rattler; ///< per grain: taken out
+  std::vector<int> count;    ///< per free grain: its contacts with what is left
+};
+Peeled peel_rattlers(const std::vector<std::vector<std::int64_t>>& partners,
+                     const std::vector<bool>& free, int needed);
 
 /// The load-bearing network of the free grains, with the statistics of those with their centres
 /// in [lo, hi]. `needed`: the contacts a grain needs (3 for frictionless disks, 2 with friction).

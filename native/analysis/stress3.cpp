@@ -1,6 +1,7 @@
 #include "analysis/stress3.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -26,13 +27,15 @@ bool inside(const Simulation3& sim, std::size_t i, const Vec3& lo, const Vec3& h
   return r.x >= lo.x && r.x < hi.x && r.y >= lo.y && r.y < hi.y && r.z >= lo.z && r.z < hi.z;
 }
 
-// The contact part and the fabric: each contact's force on i (and -force on j) with its branch.
-void add_contacts(const Simulation3& sim, Vec3 lo, Vec3 hi, RegionStress3& out) {
+// Every contact's force on a sphere with its branch, as on_side(i, f, l) (a pair calls it for
+// both spheres, a plate for its sphere), and on_pair(i, j, n) once for each sphere-sphere
+// contact. The forces are those the laws give in the state as it is.
+template <class OnSide, class OnPair>
+void visit_contact_forces(const Simulation3& sim, OnSide&& on_side, OnPair&& on_pair) {
   const Scene3& scene = sim.scene();
   const Spheres& s = scene.spheres;
   const SphereList& list = sim.list();
   const Settings3& c = sim.settings();
-  const auto in = [&](std::uint32_t i) { return s.is_free(i) && inside(sim, i, lo, hi); };
   with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
     for_each_contact3(
         scene, list, sim.table(), lever_shares(c.lever_arm),
@@ -42,21 +45,34 @@ void add_contacts(const Simulation3& sim, Vec3 lo, Vec3 hi, RegionStress3& out) 
           const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
           // the middle of the overlap, from each centre
           const double half = 0.5 * g.overlap;
-          if (in(i)) out.contact -= outer(f, -(s.radius[i] - half) * g.normal);
-          if (in(j)) out.contact -= outer(-f, (s.radius[j] - half) * g.normal);
-          if (!s.is_free(i) || !s.is_free(j) || (!in(i) && !in(j))) return;
-          out.fabric += outer(g.normal, g.normal);
-          ++out.contacts;
+          on_side(i, f, -(s.radius[i] - half) * g.normal);
+          on_side(j, -f, (s.radius[j] - half) * g.normal);
+          on_pair(i, j, g.normal);
         },
         [&](std::uint32_t i, std::uint32_t e, std::uint32_t, const ContactGeometry3& g,
             const PairParameters& p) {
-          if (!in(i)) return;
           Vec3 history = list.plate_spring_at(e);
           const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
           // the plate's point, nearest the centre
-          out.contact -= outer(f, -(s.radius[i] - g.overlap) * g.normal);
+          on_side(i, f, -(s.radius[i] - g.overlap) * g.normal);
         });
   });
+}
+
+// The contact part and the fabric of the spheres in [lo, hi).
+void add_contacts(const Simulation3& sim, Vec3 lo, Vec3 hi, RegionStress3& out) {
+  const Spheres& s = sim.scene().spheres;
+  const auto in = [&](std::uint32_t i) { return s.is_free(i) && inside(sim, i, lo, hi); };
+  visit_contact_forces(
+      sim,
+      [&](std::uint32_t i, const Vec3& f, const Vec3& l) {
+        if (in(i)) out.contact -= outer(f, l);
+      },
+      [&](std::uint32_t i, std::uint32_t j, const Vec3& n) {
+        if (!s.is_free(i) || !s.is_free(j) || (!in(i) && !in(j))) return;
+        out.fabric += outer(n, n);
+        ++out.contacts;
+      });
   if (out.contacts > 0) out.fabric /= static_cast<double>(out.contacts);
 }
 
@@ -95,11 +111,30 @@ RegionStress3 region_stress(const Simulation3& sim, Vec3 lo, Vec3 hi) {
   return out;
 }
 
-const std::string stress_thermo_header =
-    ",stress_xx,stress_xy,stress_xz,stress_yx,stress_yy,stress_yz,stress_zx,stress_zy,stress_zz,"
-    "kinetic_stress_xx,kinetic_stress_yy,kinetic_stress_zz,kinetic_stress_xy,kinetic_stress_xz,"
-    "kinetic_stress_yz,pressure,stress_major,stress_intermediate,stress_minor,stress_major_x,"
-    "stress_major_y,stress_major_z,fabric_xx,fabric_yy,fabric_zz,fabric_xy,fabric_xz,fabric_yz";
+std::vector<Tensor3> sphere_stresses(const Simulation3& sim) {
+  const Spheres& s = sim.scene().spheres;
+  std::vector<Tensor3> out(s.size(), Tensor3::Zero());
+  visit_contact_forces(
+      sim, [&](std::uint32_t i, const Vec3& f, const Vec3& l) { out[i] -= outer(f, l); },
+      [](std::uint32_t, std::uint32_t, const Vec3&) {});
+  for (std::size_t i = 0; i < s.size(); ++i)
+    out[i] /= 4.0 / 3.0 * std::numbers::pi * s.radius[i] * s.radius[i] * s.radius[i];
+  return out;
+}
+
+std::string stress_thermo_header(const std::string& prefix) {
+  std::string head;
+  for (const char* name :
+       {"stress_xx",         "stress_xy",           "stress_xz",         "stress_yx",
+        "stress_yy",         "stress_yz",           "stress_zx",         "stress_zy",
+        "stress_zz",         "kinetic_stress_xx",   "kinetic_stress_yy", "kinetic_stress_zz",
+        "kinetic_stress_xy", "kinetic_stress_xz",   "kinetic_stress_yz", "pressure",
+        "stress_major",      "stress_intermediate", "stress_minor",      "stress_major_x",
+        "stress_major_y",    "stress_major_z",      "fabric_xx",         "fabric_yy",
+        "fabric_zz",         "fabric_xy",           "fabric_xz",         "fabric_yz"})
+    head += "," + prefix + name;
+  return head;
+}
 
 std::string stress_thermo_columns(const RegionStress3& s) {
   const Tensor3 t = s.total();

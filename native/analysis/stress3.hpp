@@ -9,6 +9,7 @@
 // fabric tensor (Satake 1982; Oda 1982) is the mean of n n over the contacts between spheres.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -44,11 +45,17 @@ Principal3 principal(const Tensor3& t);
 /// those the laws give in the state as it is (the springs as the last step left them).
 RegionStress3 region_stress(const Simulation3& sim, Vec3 lo, Vec3 hi);
 
+/// Each sphere's stress (Pa): -(1/V_i) sum f l over its contacts, V_i its volume 4/3 pi r^3, the
+/// forces as region_stress takes them. Summed times V_i over the spheres in a region, it is the
+/// region's contact part times the region's volume.
+std::vector<Tensor3> sphere_stresses(const Simulation3& sim);
+
 /// The thermo.csv columns of a region's stress, each name after a comma: the total stress's nine
 /// components (stress_xx, stress_xy, ... row by row), the kinetic part's six, the pressure (a
 /// third of the trace), the principal values (major, intermediate, minor), the major direction
-/// (its largest component positive), and the fabric's six.
-extern const std::string stress_thermo_header;
+/// (its largest component positive), and the fabric's six; each name after `prefix` (a named
+/// region's).
+std::string stress_thermo_header(const std::string& prefix = "");
 /// The values of those columns, each after a comma.
 std::string stress_thermo_columns(const RegionStress3& s);
 

@@ -23,7 +23,7 @@ const char* const header = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" 
 
 } // namespace
 
-std::string vtp_spheres(const Scene3& scene) {
+std::string vtp_spheres(const Scene3& scene, std::span<const Tensor3> stress) {
   const Spheres& s = scene.spheres;
   const std::size_t n = s.size();
   std::string out = header;
@@ -39,9 +39,14 @@ std::string vtp_spheres(const Scene3& scene) {
         [&](std::size_t i) { return fmt::format("{}", static_cast<int>(s.kind[i])); });
   array(out, "material", 1, n, [&](std::size_t i) { return fmt::format("{}", s.material[i]); });
   array(out, "mass", 1, n, [&](std::size_t i) { return fmt::format("{}", s.mass[i]); });
+  if (!stress.empty())
+    array(out, "stress", 9, n, [&](std::size_t i) {
+      const Tensor3& t = stress[i];
+      return fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}", t(0, 0),
+                         t(0, 1), t(0, 2), t(1, 0), t(1, 1), t(1, 2), t(2, 0), t(2, 1), t(2, 2));
+    });
   out += "      </PointData>\n      <Points>\n";
-  array(out, "position", 3, n,
-        [&](std::size_t i) { return triple(s.position[i]); });
+  array(out, "position", 3, n, [&](std::size_t i) { return triple(s.position[i]); });
   out += "      </Points>\n";
   vtk_detail::end_with_verts(out, n);
   return out;

@@ -66,12 +66,29 @@ struct Driver3Section {
   Vec3 angular_velocity{};       ///< rotate: rad/s, along the axis
 };
 
+/// A box of space [lo, hi), m.
+struct Region3 {
+  Vec3 lo{};
+  Vec3 hi{};
+};
+
+/// A named region whose stress thermo.csv records (output.stress_regions), its columns prefixed
+/// with the name and _.
+struct StressRegion3 {
+  std::string name;
+  Region3 region;
+};
+
 struct Output3Section {
   double thermo_interval = 0.01;    ///< s
   double snapshot_interval = 0.1;   ///< s; 0: none
   double checkpoint_interval = 1.0; ///< s; 0: only at the end, at --stop-at and on a signal
   bool energy_ledger = false;       ///< the ledger's columns in thermo.csv (energy_ledger3.hpp)
-  bool stress = false; ///< the box's stress and fabric columns in thermo.csv (stress3.hpp)
+  /// thermo.csv's stress, fabric and structure columns over `stress_region`, and each sphere's
+  /// stress in the snapshots (stress3.hpp, structure3.hpp)
+  bool stress = false;
+  std::optional<Region3> stress_region;      ///< default: the geometry's box
+  std::vector<StressRegion3> stress_regions; ///< more regions, each with its own columns
 };
 
 struct Scenario3 {

@@ -48,6 +48,33 @@ TEST(Scenario3, ThePour3dBuiltinReloadsFromItsResolvedForm) {
   EXPECT_EQ(scenario_dimension(toml::parse(resolved), "resolved"), 3);
 }
 
+TEST(Scenario3, StressRegionsReadAndReloadOrAreRefusedSayingWhy) {
+  const std::string low = "{name='low', region=[0, 0, 0, 0.03, 0.03, 0.01]}";
+  const Scenario3 s = pour3d({"output.stress=true", "output.stress_region=[0,0,0,0.03,0.03,0.06]",
+                              "output.stress_regions=[" + low + "]"});
+  ASSERT_TRUE(s.output.stress_region);
+  EXPECT_EQ(s.output.stress_region->hi.z, 0.06);
+  ASSERT_EQ(s.output.stress_regions.size(), 1u);
+  EXPECT_EQ(s.output.stress_regions[0].name, "low");
+  EXPECT_EQ(s.output.stress_regions[0].region.hi.z, 0.01);
+  const std::string resolved = to_toml(s);
+  EXPECT_EQ(to_toml(load_scenario3(resolved, "resolved")), resolved);
+  const auto says = [](const std::vector<std::string>& set, const std::string& words) {
+    const std::string e = refusal(set);
+    EXPECT_NE(e.find(words), std::string::npos) << set.back() << ": " << e;
+  };
+  says({"output.stress_regions=[" + low + "]"}, "needs output.stress = true");
+  says({"output.stress_region=[0,0,0,1,1,1]"}, "needs output.stress = true");
+  says({"output.stress=true", "output.stress_region=[0,0,0,1,1]"},
+       "[x_min, y_min, z_min, x_max, y_max, z_max]");
+  says({"output.stress=true", "output.stress_regions=[" + low + ", " + low + "]"},
+       "'low' is given twice");
+  says({"output.stress=true", "output.stress_regions=[{name='Low', region=[0,0,0,1,1,1]}]"},
+       "lower-case letters, digits and _");
+  says({"output.stress=true", "output.stress_regions=[{name='low'}]"},
+       "'output.stress_regions.0.region'");
+}
+
 TEST(Scenario3, GearIsTheIntegratorAsked) {
   const Scenario3 s = pour3d({"simulation.integrator=gear"});
   EXPECT_EQ(s.simulation.integrator, Integrator::gear);

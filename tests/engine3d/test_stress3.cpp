@@ -5,6 +5,10 @@
 //   major direction z and the fabric all z z;
 // - spheres apart: the kinetic part is (1/V) sum m u u about their mean velocity, the contact
 //   part 0;
+// - each sphere of that column: -sum f l over its contacts is m g (k r_above + (k + 1) r_below),
+//   k the spheres above it, r_above and r_below its branches (its radius less half the overlap
+//   with its neighbour, or the whole overlap with the floor), and its stresses times the spheres'
+//   volumes sum to the box's contact part times the box's;
 // - the principal values of a tensor and its directions, the major first.
 #include <gtest/gtest.h>
 
@@ -12,6 +16,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "analysis/stress3.hpp"
 #include "support/two_body.hpp"
@@ -75,8 +80,36 @@ TEST(Stress3, AColumnAtRestCarriesTheVirialOfItsWeights) {
   EXPECT_NEAR(std::abs(p.directions(2, 0)), 1.0, 1e-12);
   // and the thermo columns say so: stress_zz the ninth, the major direction's z the 22nd
   const std::string row = stress_thermo_columns(r);
-  EXPECT_EQ(std::count(row.begin(), row.end(), ','),
-            std::count(stress_thermo_header.begin(), stress_thermo_header.end(), ','));
+  EXPECT_EQ(std::ranges::count(row, ','), std::ranges::count(stress_thermo_header(), ','));
+}
+
+TEST(Stress3, EachSphereOfAColumnAtRestCarriesTheWeightAboveIt) {
+  constexpr int count = 10;
+  const Simulation3 sim = resting_column(count);
+  const Spheres& s = sim.scene().spheres;
+  const std::vector<Tensor3> stress = sphere_stresses(sim);
+  ASSERT_EQ(stress.size(), s.size());
+  std::vector<std::size_t> by_height(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) by_height[i] = i;
+  std::ranges::sort(by_height, [&](auto a, auto b) { return s.position[a].z > s.position[b].z; });
+  const double volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  const Domain3& domain = sim.scene().domain;
+  const RegionStress3 whole = region_stress(sim, domain.lo, domain.hi);
+  Tensor3 sum = Tensor3::Zero();
+  for (int k = 0; k < count; ++k) {
+    const std::size_t i = by_height[static_cast<std::size_t>(k)];
+    const double above = k == 0 ? 0.0 : 0.5 * (s.position[by_height[k - 1]].z - s.position[i].z);
+    const double below =
+        k == count - 1 ? s.position[i].z : 0.5 * (s.position[i].z - s.position[by_height[k + 1]].z);
+    const double weight = s.mass[i] * g;
+    const double expected = weight * (k * above + (k + 1) * below) / volume;
+    // the forces balance the weights to rounding at rest, as above: 1e-9
+    EXPECT_NEAR(stress[i](2, 2), expected, 1e-9 * expected) << "sphere " << k << " from the top";
+    EXPECT_NEAR(stress[i](0, 0), 0.0, 1e-12 * expected);
+    sum += volume * stress[i];
+  }
+  // the same forces and branches: to rounding
+  EXPECT_TRUE(sum.isApprox(whole.contact * whole.volume, 1e-12));
 }
 
 TEST(Stress3, SpheresApartCarryTheirMomentumFluxAboutTheMean) {

@@ -3,8 +3,9 @@
 # reader opens (read_vtk3d.py), the spheres come to rest in the box with the energy ledger
 # balanced, a run stopped and resumed is the run that never stopped (its ledger too, and with
 # the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
-# the ledger stops a run whose energy grows, the stress columns weigh the bed, run.json names the
-# step specialised to the scene,
+# the ledger stops a run whose energy grows, the stress columns weigh the bed and agree with the
+# snapshots' sphere stresses, the plates carry the weight, run.json names the step specialised to
+# the scene,
 # and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
@@ -14,7 +15,8 @@ trap 'rm -rf "$dir"' EXIT
 run="$dir/run"
 "$talus" run pour3d --out "$run" --quiet --set particles.count=120 --set simulation.duration=0.3 \
   --set output.snapshot_interval=0.05 --set simulation.timestep_factor=20 \
-  --set output.energy_ledger=true --set output.stress=true
+  --set output.energy_ledger=true --set output.stress=true \
+  --set "output.stress_regions=[{name='low', region=[0, 0, 0, 0.03, 0.03, 0.004]}]"
 for f in thermo.csv run.json scenario.toml particles.pvd walls.pvd; do
   [ -s "$run/$f" ] || { echo "FAIL: no $f"; exit 1; }
 done
@@ -50,6 +52,35 @@ assert abs(s["fabric_xx"] + s["fabric_yy"] + s["fabric_zz"] - 1) < 1e-6, last
 assert s["stress_major"] >= s["stress_intermediate"] >= s["stress_minor"], last
 assert s["stress_major_z"] > 0.9, last["stress_major_z"]
 print(f"{len(rows)} thermo rows; released {fallen:.3e} J; {last['contacts']} contacts at the end")
+PY
+# the last snapshot's sphere stresses against the same moment's thermo row: their sum times the
+# spheres' volumes is the box's contact stress times its volume (to the 9 digits each is written
+# with); the plates carry the weight (the trembling bed's accelerations: a few percent); the
+# spheres lie wholly in the box, so its packing fraction is their volume over the box's; the
+# named region at the bottom has its own columns
+/usr/bin/python3 - "$run" <<'PY'
+import csv, math, sys
+import xml.etree.ElementTree as ET
+run = sys.argv[1]
+last = {k: float(v) for k, v in list(csv.DictReader(open(run + "/thermo.csv")))[-1].items()}
+arrays = {a.get("Name"): [float(x) for x in a.text.split()]
+          for a in ET.parse(run + "/snapshots/spheres_000006.vtp").iter("DataArray")}
+mass, radius, stress = arrays["mass"], arrays["radius"], arrays["stress"]
+assert len(stress) == 9 * len(mass), len(stress)
+volumes = [4 / 3 * math.pi * r ** 3 for r in radius]
+box = 0.03 * 0.03 * 0.12
+summed = sum(v * stress[9 * i + 8] for i, v in enumerate(volumes)) / box
+contact_zz = last["stress_zz"] - last["kinetic_stress_zz"]
+assert abs(summed / contact_zz - 1) < 1e-7, (summed, contact_zz)
+carried = -sum(last[f"force_{s}_z"] for s in ["left", "right", "front", "back", "floor"])
+assert 0.95 < carried / (9.81 * sum(mass)) < 1.05, (carried, 9.81 * sum(mass))
+assert last["force_left_x"] < 0 < last["force_right_x"], last
+assert abs(last["region_packing_fraction"] - sum(volumes) / box) < 2e-9, last
+assert last["low_region_packing_fraction"] > 10 * last["region_packing_fraction"], last
+assert last["low_stress_zz"] > last["stress_zz"] > 0, last
+for p in ["", "low_"]:
+    assert 3 < last[p + "load_bearing_coordination"] < 7, last
+    assert 0 <= last[p + "rattler_fraction"] < 0.5, last
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
 # run.json says what the step left out: one material here; without friction, rotation too

@@ -11,8 +11,8 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include "analysis/energy_ledger3.hpp"
 #include "analysis/stress3.hpp"
+#include "cli/run/thermo3.hpp"
 #include "io/checkpoint3.hpp"
 #include "io/vtk.hpp"
 #include "io/vtk_spheres.hpp"
@@ -26,60 +26,15 @@ namespace talus::cli {
 
 namespace {
 
-// thermo.csv of a 3D run: a row of energies, contacts and list builds, with
-// output.energy_ledger the ledger's columns, its powers taken in after every step, and with
-// output.stress the box's stress and fabric.
-class Thermo3 {
-public:
-  Thermo3(const Scenario3& s, const Book3& book) {
-    if (s.output.stress) stress_box_ = {s.geometry.lo, s.geometry.hi};
-    if (!s.output.energy_ledger) return;
-    ledger_.emplace();
-    if (!book.ledger_state.empty()) ledger_->load(book.ledger_state);
-  }
-  void start(const Simulation3& sim) {
-    if (ledger_) start_ledger(*ledger_, sim);
-  }
-  void look(const Simulation3& sim) {
-    if (ledger_) observe_ledger(*ledger_, sim);
-  }
-  void save(Book3& book) const {
-    if (ledger_) book.ledger_state = ledger_->save();
-  }
-  std::string header() const {
-    return std::string("time,step,kinetic,rotational,potential,elastic,total,contacts,"
-                       "coordination,list_builds") +
-           (ledger_ ? ledger_thermo_header : "") + (stress_box_ ? stress_thermo_header : "") + "\n";
-  }
-  // throws InstabilityError where the ledger finds energy from nowhere
-  std::string row(const Simulation3& sim, double collision_time) {
-    const Energies3 e = sim.energies();
-    std::string out =
-        fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}", sim.time(),
-                    sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
-                    sim.contact_count(), sim.coordination(), sim.list().builds);
-    if (ledger_) {
-      const LedgerRow l = ledger_row(*ledger_, e);
-      if (l.growth > ledger_growth_limit)
-        throw InstabilityError(energy_growth_diagnosis(sim, l, collision_time));
-      out += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
-                         l.wall_work, l.imbalance);
-    }
-    if (stress_box_)
-      out += stress_thermo_columns(region_stress(sim, stress_box_->first, stress_box_->second));
-    return out + "\n";
-  }
-
-private:
-  std::optional<EnergyLedger> ledger_;
-  std::optional<std::pair<Vec3, Vec3>> stress_box_; // lo, hi
-};
-
 // A snapshot of the spheres and one of the plates, listed in the book and their collections.
-void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, Book3& book) {
+// With output.stress, each sphere's stress too.
+void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, bool stress,
+                    Book3& book) {
   const std::string k = fmt::format("{:06d}", book.spheres.size());
   const std::string s = "snapshots/spheres_" + k + ".vtp", p = "snapshots/plates_" + k + ".vtp";
-  write_file_atomically((dir / s).string(), vtp_spheres(sim.scene()));
+  std::vector<Tensor3> stresses;
+  if (stress) stresses = sphere_stresses(sim);
+  write_file_atomically((dir / s).string(), vtp_spheres(sim.scene(), stresses));
   write_file_atomically((dir / p).string(), vtp_plates(sim.scene(), reach));
   book.spheres.emplace_back(sim.time(), s);
   book.plates.emplace_back(sim.time(), p);
@@ -106,7 +61,7 @@ std::string run_json(const Scenario3& s, const Simulation3& sim, double collisio
 void checkpoint(const fs::path& dir, const Simulation3& sim, Book3& book, std::ofstream& thermo,
                 const Thermo3& columns) {
   thermo.flush();
-  columns.save(book);
+  book.ledger_state = columns.save();
   book.thermo_bytes = fs::file_size(dir / "thermo.csv");
   write_file_atomically((dir / "checkpoint.bin").string(),
                         encode_checkpoint3({sim.state(), sim.settings(), book.encode()}));
@@ -200,12 +155,12 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
                       checkpoint_every = every(s.output.checkpoint_interval);
   const double reach = norm(s.geometry.hi - s.geometry.lo);
   const bool fresh = book.spheres.empty() && book.thermo_bytes == 0;
-  Thermo3 columns(s, book);
+  Thermo3 columns(s, book.ledger_state);
   std::ofstream thermo(dir / "thermo.csv", fresh ? std::ios::trunc : std::ios::app);
   if (fresh) {
     columns.start(sim);
     thermo << columns.header() << columns.row(sim, book.collision_time);
-    if (snapshot_every > 0) write_snapshot(dir, sim, reach, book);
+    if (snapshot_every > 0) write_snapshot(dir, sim, reach, s.output.stress, book);
   }
   run::RunProgress progress(o.quiet, s.simulation.duration, s.output.thermo_interval, dt);
   const auto start = std::chrono::steady_clock::now();
@@ -238,7 +193,7 @@ int run_session3(const Scenario3& s, Simulation3& sim, Book3& book, RunFolder& f
       throw;
     }
     if (snapshot_every > 0 && (k % snapshot_every == 0 || k == total))
-      write_snapshot(dir, sim, reach, book);
+      write_snapshot(dir, sim, reach, s.output.stress, book);
     if ((checkpoint_every > 0 && k % checkpoint_every == 0) || k == stop)
       checkpoint(dir, sim, book, thermo, columns);
     if (k % 256 == 0 || k == stop)

@@ -148,12 +148,9 @@ void read_stress_regions(TableReader& r, OutputSection& o) {
   for (std::size_t k = 0; k < tables.size(); ++k) {
     TableReader t(*tables[k], r.file(), r.qualified("stress_regions") + "." + std::to_string(k));
     StressRegion region;
-    region.name = t.text("name", "");
-    if (region.name.empty() ||
-        region.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
-      t.fail("name", "expected a word of lower-case letters, digits and _ (its columns' prefix)");
-    for (const StressRegion& other : o.stress_regions)
-      if (other.name == region.name) t.fail("name", "'" + region.name + "' is given twice");
+    std::vector<std::string> taken;
+    for (const StressRegion& other : o.stress_regions) taken.push_back(other.name);
+    region.name = read_region_name(t, taken);
     if (!t.has("region")) t.fail("region", "missing; expected [x_min, y_min, x_max, y_max] in m");
     region.region = rect(t, "region");
     t.finish();

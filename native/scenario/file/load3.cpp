@@ -26,6 +26,19 @@ Vec3 vec3(TableReader& r, std::string_view key, Vec3 fallback) {
   return {v[0], v[1], v[2]};
 }
 
+// A box of space as [x_min, y_min, z_min, x_max, y_max, z_max].
+Region3 region3(TableReader& r, std::string_view key) {
+  const std::vector<double> v = r.numbers(key, -inf, inf, "finite numbers");
+  if (v.size() != 6 || !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
+    r.fail(key, "expected [x_min, y_min, z_min, x_max, y_max, z_max] in m, each max above its "
+                "min");
+  return {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+}
+
+toml::array region_array(const Region3& b) {
+  return toml::array{b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z};
+}
+
 void read_simulation(TableReader& r, Simulation3Section& s) {
   r.integer("dimension", 3, 3, 3);
   read_clock_and_laws(r, s);
@@ -50,12 +63,9 @@ void read_particles(TableReader& r, Particles3Section& p, const std::string& fil
 void read_geometry(TableReader& r, Box3Section& g) {
   r.choice("builder", "box", {"box"});
   if (r.has("box")) {
-    const std::vector<double> v = r.numbers("box", -inf, inf, "finite numbers");
-    if (v.size() != 6 || !(v[3] > v[0] && v[4] > v[1] && v[5] > v[2]))
-      r.fail("box", "expected [x_min, y_min, z_min, x_max, y_max, z_max] in m, each max above "
-                    "its min");
-    g.lo = {v[0], v[1], v[2]};
-    g.hi = {v[3], v[4], v[5]};
+    const Region3 box = region3(r, "box");
+    g.lo = box.lo;
+    g.hi = box.hi;
   }
   const std::string periodic =
       r.choice("periodic", "none", {"none", "x", "y", "z", "xy", "xz", "yz", "xyz"});
@@ -122,6 +132,23 @@ void read_output(TableReader& r, Output3Section& o) {
   read_output_intervals(r, o);
   o.energy_ledger = r.boolean("energy_ledger", o.energy_ledger);
   o.stress = r.boolean("stress", o.stress);
+  if (r.has("stress_region")) {
+    if (!o.stress) r.fail("stress_region", "needs output.stress = true");
+    o.stress_region = region3(r, "stress_region");
+  }
+  const std::vector<const toml::table*> tables = r.tables("stress_regions");
+  if (!tables.empty() && !o.stress) r.fail("stress_regions", "needs output.stress = true");
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    TableReader t(*tables[k], r.file(), r.qualified("stress_regions") + "." + std::to_string(k));
+    std::vector<std::string> taken;
+    for (const StressRegion3& other : o.stress_regions) taken.push_back(other.name);
+    StressRegion3 region{read_region_name(t, taken), {}};
+    if (!t.has("region"))
+      t.fail("region", "missing; expected [x_min, y_min, z_min, x_max, y_max, z_max] in m");
+    region.region = region3(t, "region");
+    t.finish();
+    o.stress_regions.push_back(std::move(region));
+  }
 }
 
 Scenario3 load_root(const toml::table& root, const std::string& file) {
@@ -176,6 +203,22 @@ toml::table driver_table(const Driver3Section& d) {
   return toml::table{{"type", "translate"}, {"target", d.target}, {"velocity", vec(d.velocity)}};
 }
 
+toml::table output_table(const Output3Section& o) {
+  toml::table out{{"thermo_interval", o.thermo_interval},
+                  {"snapshot_interval", o.snapshot_interval},
+                  {"checkpoint_interval", o.checkpoint_interval},
+                  {"energy_ledger", o.energy_ledger},
+                  {"stress", o.stress}};
+  if (o.stress_region) out.insert("stress_region", region_array(*o.stress_region));
+  if (!o.stress_regions.empty()) {
+    toml::array regions;
+    for (const StressRegion3& r : o.stress_regions)
+      regions.push_back(toml::table{{"name", r.name}, {"region", region_array(r.region)}});
+    out.insert("stress_regions", regions);
+  }
+  return out;
+}
+
 } // namespace
 
 std::uint16_t material_index(const Scenario3& s, const std::string& name, const std::string& key) {
@@ -196,8 +239,7 @@ std::string to_toml(const Scenario3& s) {
   for (std::size_t k = 0; k < 3; ++k)
     if (s.geometry.periodic[k]) periodic += static_cast<char>('x' + k);
   toml::table geometry{{"builder", "box"},
-                       {"box", toml::array{s.geometry.lo.x, s.geometry.lo.y, s.geometry.lo.z,
-                                           s.geometry.hi.x, s.geometry.hi.y, s.geometry.hi.z}},
+                       {"box", region_array({s.geometry.lo, s.geometry.hi})},
                        {"periodic", periodic.empty() ? "none" : periodic},
                        {"wall_material", s.geometry.wall_material}};
   if (!s.geometry.periodic[2]) geometry.insert("open_top", s.geometry.open_top);
@@ -211,11 +253,7 @@ std::string to_toml(const Scenario3& s) {
                                 {"material", s.particles.material},
                                 {"size", size_table(s.particles.size)}}},
       {"geometry", geometry},
-      {"output", toml::table{{"thermo_interval", s.output.thermo_interval},
-                             {"snapshot_interval", s.output.snapshot_interval},
-                             {"checkpoint_interval", s.output.checkpoint_interval},
-                             {"energy_ledger", s.output.energy_ledger},
-                             {"stress", s.output.stress}}}};
+      {"output", output_table(s.output)}};
   if (!s.drivers.empty()) {
     toml::array drivers;
     for (const Driver3Section& d : s.drivers) drivers.push_back(driver_table(d));

@@ -140,6 +140,16 @@ std::string read_name(TableReader& top, std::string fallback) {
   return name;
 }
 
+std::string read_region_name(TableReader& r, const std::vector<std::string>& taken) {
+  const std::string name = r.text("name", "");
+  if (name.empty() ||
+      name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+    r.fail("name", "expected a word of lower-case letters, digits and _ (its columns' prefix)");
+  for (const std::string& other : taken)
+    if (other == name) r.fail("name", "'" + name + "' is given twice");
+  return name;
+}
+
 Material read_material(TableReader& r, std::size_t index) {
   Material m;
   m.name = r.text("name", "material" + std::to_string(index));

@@ -44,6 +44,10 @@ std::vector<Material> read_materials(TableReader& top, const std::string& file);
 /// A [particles.size] table.
 void read_size(TableReader& r, SizeSpec& s);
 
+/// An [[output.stress_regions]] entry's name: a word of lower-case letters, digits and _ (its
+/// thermo.csv columns' prefix), none of `taken`.
+std::string read_region_name(TableReader& r, const std::vector<std::string>& taken);
+
 /// The same sections written back, for a resolved scenario.
 toml::array materials_array(const std::vector<Material>& materials);
 toml::table size_table(const SizeSpec& s);

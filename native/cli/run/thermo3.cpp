@@ -1,0 +1,92 @@
+#include "cli/run/thermo3.hpp"
+
+#include <array>
+
+#include <fmt/format.h>
+
+#include "analysis/energy_ledger3.hpp"
+#include "analysis/stress3.hpp"
+#include "analysis/structure3.hpp"
+#include "scenario3d/box3.hpp"
+
+namespace talus::cli {
+
+namespace {
+
+constexpr std::array<const char*, 3> structure_names{
+    "region_packing_fraction", "load_bearing_coordination", "rattler_fraction"};
+
+// A region's stress, fabric and structure columns.
+std::string region_columns(const Simulation3& sim, const Region3& r, int needed) {
+  const LoadBearing3 network = load_bearing(sim, r.lo, r.hi, needed);
+  const double rattlers = network.spheres > 0 ? static_cast<double>(network.rattlers) /
+                                                    static_cast<double>(network.spheres)
+                                              : 0.0;
+  return stress_thermo_columns(region_stress(sim, r.lo, r.hi)) +
+         fmt::format(",{:.9f},{:.6f},{:.6f}", packing_fraction(sim, r.lo, r.hi),
+                     network.coordination, rattlers);
+}
+
+} // namespace
+
+Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
+  for (const BoxSide& side : box3_sides(s.geometry)) plate_names_.push_back(side.name);
+  if (s.output.stress) {
+    regions_.emplace_back("",
+                          s.output.stress_region.value_or(Region3{s.geometry.lo, s.geometry.hi}));
+    for (const StressRegion3& r : s.output.stress_regions)
+      regions_.emplace_back(r.name + "_", r.region);
+  }
+  if (!s.output.energy_ledger) return;
+  ledger_.emplace();
+  if (!ledger_state.empty()) ledger_->load(ledger_state);
+}
+
+void Thermo3::start(const Simulation3& sim) {
+  if (ledger_) start_ledger(*ledger_, sim);
+}
+
+void Thermo3::look(const Simulation3& sim) {
+  if (ledger_) observe_ledger(*ledger_, sim);
+}
+
+std::vector<double> Thermo3::save() const {
+  return ledger_ ? ledger_->save() : std::vector<double>{};
+}
+
+std::string Thermo3::header() const {
+  std::string head = "time,step,kinetic,rotational,potential,elastic,total,contacts,"
+                     "coordination,list_builds";
+  for (const std::string& name : plate_names_)
+    head += fmt::format(",force_{0}_x,force_{0}_y,force_{0}_z", name);
+  if (ledger_) head += ledger_thermo_header;
+  for (const auto& [prefix, region] : regions_) {
+    head += stress_thermo_header(prefix);
+    for (const char* name : structure_names) head += "," + prefix + name;
+  }
+  return head + "\n";
+}
+
+std::string Thermo3::row(const Simulation3& sim, double collision_time) {
+  const Energies3 e = sim.energies();
+  std::string out =
+      fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.6g},{}", sim.time(),
+                  sim.step_count(), e.kinetic, e.rotational, e.potential, e.elastic, e.total(),
+                  sim.contact_count(), sim.coordination(), sim.list().builds);
+  for (const Plane& p : sim.scene().plates)
+    out += fmt::format(",{:.9e},{:.9e},{:.9e}", p.force.x, p.force.y, p.force.z);
+  if (ledger_) {
+    const LedgerRow l = ledger_row(*ledger_, e);
+    if (l.growth > ledger_growth_limit)
+      throw InstabilityError(energy_growth_diagnosis(sim, l, collision_time));
+    out += fmt::format(",{:.9e},{:.9e},{:.9e},{:.9e}", l.dissipated_damper, l.dissipated_friction,
+                       l.wall_work, l.imbalance);
+  }
+  if (!regions_.empty()) {
+    const int needed = contacts_needed(sim);
+    for (const auto& [prefix, region] : regions_) out += region_columns(sim, region, needed);
+  }
+  return out + "\n";
+}
+
+} // namespace talus::cli
