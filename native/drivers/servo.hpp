@@ -25,6 +25,10 @@ struct ServoReading {
 /// contact the wall moves at max_speed towards the grains (or away, for a negative target).
 /// Never faster than max_speed either way.
 double servo_speed(const Servo& s, const ServoReading& r, double dt);
+/// The same rule for any wall (a 3D plate's servo too): `target` the load wanted (N),
+/// `last_speed` the speed chosen after the step before.
+double servo_speed(double target, double relaxation, double max_speed, double last_speed,
+                   const ServoReading& r, double dt);
 
 /// Takes the speed for the next step and moves the controller's displacement by it.
 void servo_advance(Servo& s, const ServoReading& r, double dt);

@@ -6,14 +6,17 @@
 
 namespace talus {
 
+void require_plate(const std::string& which, std::uint32_t plate, std::size_t plates) {
+  require(plate < plates, which + ": plate " + std::to_string(plate) +
+                              " does not exist; allowed: 0 to " + std::to_string(plates) + " - 1");
+}
+
 void validate(const std::vector<PlateDriver>& drivers, std::size_t plates) {
   std::vector<bool> driven(plates, false);
   for (std::size_t k = 0; k < drivers.size(); ++k) {
     const PlateDriver& d = drivers[k];
     const std::string which = "plate driver " + std::to_string(k);
-    require(d.plate < plates, which + ": plate " + std::to_string(d.plate) +
-                                  " does not exist; allowed: 0 to " + std::to_string(plates) +
-                                  " - 1");
+    require_plate(which, d.plate, plates);
     require(!driven[d.plate], which + ": plate " + std::to_string(d.plate) +
                                   " has a driver already; allowed: one driver a plate");
     driven[d.plate] = true;

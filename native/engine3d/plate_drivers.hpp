@@ -3,11 +3,15 @@
 // their checks, and every driven plate placed at a time. One plate's motion is the kernel's
 // (talus/plate.hpp: translating, vibrating along a direction, turning about an axis).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine3d/planes.hpp"
 
 namespace talus {
+
+/// Throws InvalidArgument naming `which` (a driver, a servo) when `plate` is not one of `plates`.
+void require_plate(const std::string& which, std::uint32_t plate, std::size_t plates);
 
 /// Throws InvalidArgument naming the driver and what is wrong (a plate that does not exist or
 /// has two drivers, a zero direction, a negative amplitude or frequency).

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "engine3d/plate_drivers.hpp"
+#include "engine3d/plate_servo.hpp"
 #include "engine3d/spheres.hpp"
 #include "integrate/integrator.hpp"
 #include "materials/material.hpp"
@@ -15,6 +16,7 @@ struct Scene3 {
   Spheres spheres;
   std::vector<Plane> plates;
   std::vector<PlateDriver> drivers; ///< the plates' prescribed motions, from the run's start
+  std::vector<PlateServo> servos;   ///< plates held at a load, each moved by its controller
   Domain3 domain;
   std::vector<Material> materials{Material{}};
   Vec3 gravity{}; ///< m/s^2

@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "core/capacity_bytes.hpp"
+#include "engine3d/contact_visit3.hpp"
 #include "engine3d/renumber3.hpp"
 #include "talus/error.hpp"
 #include "talus/law_table.hpp"
@@ -39,6 +40,7 @@ void validate(const Scene3& scene, const Settings3& settings) {
                                                  std::to_string(scene.plates[w].material) +
                                                  ", which is not defined");
   validate(scene.drivers, scene.plates.size());
+  validate(scene.servos, scene.drivers, scene.plates.size());
   const Domain3& d = scene.domain;
   require(d.lo.x < d.hi.x && d.lo.y < d.hi.y && d.lo.z < d.hi.z,
           "the domain needs lo < hi along every axis");
@@ -71,6 +73,7 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   set_up();
   for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
   drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
+  place_servo_plates(scene_.plates, scene_.servos, start_);
   list_.with_rolling = rolls_with_resistance(scene_.materials); // rolling springs
   list_.with_springs = general_ || keeps_history(settings_.tangential_law);
   build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
@@ -195,6 +198,7 @@ void Simulation3::sort_spheres() {
 void Simulation3::forces_after_the_move() {
   const double dt = settings_.timestep;
   drive_plates(scene_.plates, scene_.drivers, start_, static_cast<double>(steps_ + 1) * dt);
+  place_servo_plates(scene_.plates, scene_.servos, start_);
   if (list_is_stale(list_, scene_.spheres, scene_.plates)) {
     guard();
     build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
@@ -202,6 +206,38 @@ void Simulation3::forces_after_the_move() {
     force_pass_.list_changed();
   }
   compute_forces();
+  drive_servos();
+}
+
+// Each servo reads its plate after the force pass: the spheres' push against its direction and
+// the normal law's tangent stiffness and damping coefficient summed over the plate's touching
+// contacts (both laws are linear in the overlap rate: the force at rate 1 less that at rate 0
+// is the damping coefficient), then takes its speed for the next step.
+void Simulation3::drive_servos() {
+  if (scene_.servos.empty()) return;
+  std::vector<ServoReading> reading(scene_.servos.size());
+  std::vector<std::int32_t> owner(scene_.plates.size(), -1);
+  for (std::size_t k = 0; k < scene_.servos.size(); ++k) {
+    const PlateServo& servo = scene_.servos[k];
+    owner[servo.plate] = static_cast<std::int32_t>(k);
+    reading[k].load = -dot(scene_.plates[servo.plate].force, servo.direction);
+  }
+  with_normal_law(settings_.normal_law, [&]<class N>() {
+    for_each_plate_contact3(scene_, list_, table_, lever_shares(settings_.lever_arm),
+                            [&](std::uint32_t, std::uint32_t, std::uint32_t plate,
+                                ContactGeometry3 g, const PairParameters& p) {
+                              const std::int32_t k = owner[plate];
+                              if (k < 0) return;
+                              ServoReading& r = reading[static_cast<std::size_t>(k)];
+                              r.stiffness += N::stiffness(p, g);
+                              g.v_normal = 0.0;
+                              const double resting = N::force(p, g);
+                              g.v_normal = -1.0;
+                              r.damping += N::force(p, g) - resting;
+                            });
+  });
+  for (std::size_t k = 0; k < scene_.servos.size(); ++k)
+    servo_advance(scene_.servos[k], reading[k], settings_.timestep);
 }
 
 // Gear as the 2D engine's: the contact laws see the predicted positions, velocities and spins.

@@ -94,6 +94,7 @@ private:
   void set_up();
   void compute_forces();
   void forces_after_the_move(); ///< the plates to the step's end, the list if stale, the forces
+  void drive_servos();          ///< each servo's speed and displacement for the next step
   void gear_step();
   void fit_springs();  ///< springs per entry where the law or the general step keeps them
   void sort_spheres(); ///< renumbers the spheres in the order of their cells (renumber3.hpp)

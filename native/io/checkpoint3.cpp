@@ -25,6 +25,10 @@ template <class D, class F> void driver_fields(D& d, F&& f) {
   f(d.plate, d.motion, d.velocity, d.direction, d.amplitude, d.frequency, d.phase, d.pivot,
     d.angular_velocity);
 }
+// Version 4's: the servos, with their controllers' state.
+template <class S, class F> void servo_fields(S& s, F&& f) {
+  f(s.plate, s.direction, s.force, s.max_speed, s.relaxation, s.displacement, s.speed);
+}
 template <class C, class F> void settings_fields(C& c, F&& f) {
   f(c.timestep, c.normal_law, c.tangential_law, c.verlet_velocity, c.skin, c.impact_speed,
     c.lever_arm, c.linear_damping, c.max_overlap_fraction, c.threads);
@@ -61,6 +65,9 @@ void write_state(Writer& w, const SimulationState3& st) {
   w.vec(st.start);
   gear_fields(st.gear, [&](const auto& v) { w.vec(v); });
   write_fields(w, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
+  w.pod<std::uint64_t>(sc.servos.size());
+  for (const PlateServo& servo : sc.servos)
+    servo_fields(servo, [&](const auto&... v) { write_fields(w, v...); });
 }
 
 // Every array read is checked against the others, and every index against what it points
@@ -100,6 +107,8 @@ void check_state(Reader& r, const SimulationState3& st) {
     if (e >= l.neighbour.size()) r.fail("a list entry's index is out of range");
   for (const std::uint32_t w : l.plate)
     if (w >= st.scene.plates.size()) r.fail("a list entry names a plate that does not exist");
+  for (const PlateServo& servo : st.scene.servos)
+    if (servo.plate >= st.scene.plates.size()) r.fail("a servo names a plate that does not exist");
   gear_fields(st.gear, [&](const auto& v) {
     if (v.size() != 0 && v.size() != n) r.fail("Gear's derivatives are not one per sphere");
   });
@@ -130,6 +139,11 @@ SimulationState3 read_state(Reader& r, std::uint32_t version) {
   r.vec(st.start);
   if (version >= 2) gear_fields(st.gear, [&](auto& v) { r.vec(v); });
   read_fields(r, st.last.contacts, st.last.on_plates, st.last.deepest, st.time, st.steps);
+  if (version >= 4) { // an older run had no servo
+    sc.servos.resize(r.count(sizeof(std::uint32_t)));
+    for (PlateServo& servo : sc.servos)
+      servo_fields(servo, [&](auto&... v) { read_fields(r, v...); });
+  }
   check_state(r, st);
   return st;
 }

@@ -196,6 +196,15 @@ void check_lammps_export(const Scenario3& s) {
     if (s.simulation.linear_damping != LinearDamping::never_attractive)
       return "key 'simulation.linear_damping': pair_style granthesis derives the linear dashpot "
              "as never_attractive; allowed: never_attractive";
+    if (s.geometry.rough_floor)
+      return "key 'geometry.rough_floor': the case does not freeze glued spheres yet; allowed: "
+             "false";
+    for (std::size_t k = 0; k < s.drivers.size(); ++k)
+      if (s.drivers[k].servo)
+        return "key 'drivers." + std::to_string(k) +
+               ".type': a servo plate has no fix granthesis/wall motion (LAMMPS holds a load with "
+               "a wall of particles under fix aveforce, LIGGGHTS with fix "
+               "mesh/surface/stress/servo: docs/lammps.md); allowed: vibrate, translate, rotate";
     for (const Material& m : s.materials)
       if (m.rigid)
         return "key 'materials': material '" + m.name +

@@ -49,12 +49,15 @@ struct Box3Section {
   Vec3 hi{0.05, 0.05, 0.1};
   std::array<bool, 3> periodic{false, false, false};
   bool open_top = true;
+  /// a layer of fixed spheres glued on the floor (a rough base; not with periodic z)
+  bool rough_floor = false;
   std::string wall_material;
 };
 
 /// A [[drivers]] entry: a prescribed motion of a group of the box's plates, each plate from
 /// where it stands at the run's start (talus/plate.hpp moves it).
 struct Driver3Section {
+  bool servo = false; ///< a servo holding its plate at a load (the keys below); else `motion`
   PlateDriver::Motion motion = PlateDriver::Motion::translate;
   std::string target = "walls";  ///< "walls" (every plate) or one side: box3_sides() names them
   double amplitude = 0.0;        ///< vibrate: m
@@ -64,6 +67,10 @@ struct Driver3Section {
   Vec3 velocity{};               ///< translate: m/s
   Vec3 centre{};                 ///< rotate: a point of the axis, m
   Vec3 angular_velocity{};       ///< rotate: rad/s, along the axis
+  double force = 0.0;            ///< servo: N, the load wanted (or 0 with a stress)
+  double stress = 0.0;           ///< servo: Pa, the load per area of the box's face (or 0)
+  double max_speed = 0.0;        ///< servo: m/s, its fastest either way (simulation.impact_speed)
+  double relaxation = 0.5;       ///< servo: the fraction of the error closed per step
 };
 
 /// A box of space [lo, hi), m.

@@ -114,7 +114,7 @@ TEST(Drivers3, WhatADriverCannotDoIsRefusedByKey) {
        {"geometry.periodic=x"});
   says(std::string(shaken_floor) + "[[drivers]]\ntype = 'translate'\n",
        "'drivers.1.target': the floor is moved by drivers.0 already");
-  says("[[drivers]]\ntype = 'servo'\nforce = 1.0\n", "a servo driver is not there yet in 3D");
+  says("[[drivers]]\ntype = 'cell'\n", "a cell driver is not there yet in 3D");
   says("[[drivers]]\ntype = 'cell'\n", "a cell driver is not there yet in 3D");
   says("[[drivers]]\ntype = 'shake'\n", "'shake' is not one of the allowed values");
   says("[[drivers]]\ntype = 'translate'\namplitude = 1e-3\n",

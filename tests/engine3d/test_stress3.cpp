@@ -28,7 +28,7 @@ namespace {
 
 using testing::elastic_material;
 
-constexpr double radius = 1e-3, g = 9.81;
+constexpr double radius = 1e-3, g_earth = 9.81;
 
 // Ten spheres stacked on a floor, frictionless, let come to rest.
 Simulation3 resting_column(int spheres) {
@@ -37,7 +37,7 @@ Simulation3 resting_column(int spheres) {
   m.friction = 0.0;
   Scene3 scene;
   scene.materials = {m};
-  scene.gravity = {0.0, 0.0, -g};
+  scene.gravity = {0.0, 0.0, -g_earth};
   scene.domain = {.lo = {-0.01, -0.01, 0.0}, .hi = {0.01, 0.01, 0.05}};
   scene.plates.push_back(make_plane({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}));
   for (int k = 0; k < spheres; ++k)
@@ -57,7 +57,7 @@ TEST(Stress3, AColumnAtRestCarriesTheVirialOfItsWeights) {
   double kinetic = 0.0, virial = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     kinetic += 0.5 * s.mass[i] * norm2(s.velocity[i]);
-    virial += s.mass[i] * g * s.position[i].z;
+    virial += s.mass[i] * g_earth * s.position[i].z;
   }
   const Domain3& domain = sim.scene().domain;
   const RegionStress3 r = region_stress(sim, domain.lo, domain.hi);
@@ -101,7 +101,7 @@ TEST(Stress3, EachSphereOfAColumnAtRestCarriesTheWeightAboveIt) {
     const double above = k == 0 ? 0.0 : 0.5 * (s.position[by_height[k - 1]].z - s.position[i].z);
     const double below =
         k == count - 1 ? s.position[i].z : 0.5 * (s.position[i].z - s.position[by_height[k + 1]].z);
-    const double weight = s.mass[i] * g;
+    const double weight = s.mass[i] * g_earth;
     const double expected = weight * (k * above + (k + 1) * below) / volume;
     // the forces balance the weights to rounding at rest, as above: 1e-9
     EXPECT_NEAR(stress[i](2, 2), expected, 1e-9 * expected) << "sphere " << k << " from the top";

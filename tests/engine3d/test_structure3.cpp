@@ -33,7 +33,7 @@ double ball(double r) {
 // corner through its centre). A side that cuts the slices makes the area rise as a power 3/2 of
 // the height where a slice first reaches it; the smoothing map leaves a few 1e-12 of the sphere
 // there: 1e-11.
-constexpr double exact = 1e-13, cut = 1e-11;
+constexpr double polynomial = 1e-13, cut = 1e-11;
 
 TEST(Structure3, ASphereInABoxHasTheVolumeOfWhatTheBoxHolds) {
   const double r = 0.3;
@@ -46,11 +46,11 @@ TEST(Structure3, ASphereInABoxHasTheVolumeOfWhatTheBoxHolds) {
     EXPECT_NEAR(sphere_box_volume(c, r, {-1, -1, -1}, {r - h, 1, 1}), ball(r) - cap, cut * ball(r));
     EXPECT_NEAR(sphere_box_volume(c, r, {-1, r - h, -1}, {1, 1, 1}), cap, cut * ball(r));
     EXPECT_NEAR(sphere_box_volume(c, r, {-1, -1, -1}, {1, 1, r - h}), ball(r) - cap,
-                exact * ball(r));
+                polynomial * ball(r));
   }
-  EXPECT_NEAR(sphere_box_volume(c, r, {0, 0, -1}, {1, 1, 1}), ball(r) / 4, exact * ball(r));
-  EXPECT_NEAR(sphere_box_volume(c, r, {0, -1, 0}, {1, 1, 1}), ball(r) / 4, exact * ball(r));
-  EXPECT_NEAR(sphere_box_volume(c, r, {0, 0, 0}, {1, 1, 1}), ball(r) / 8, exact * ball(r));
+  EXPECT_NEAR(sphere_box_volume(c, r, {0, 0, -1}, {1, 1, 1}), ball(r) / 4, polynomial * ball(r));
+  EXPECT_NEAR(sphere_box_volume(c, r, {0, -1, 0}, {1, 1, 1}), ball(r) / 4, polynomial * ball(r));
+  EXPECT_NEAR(sphere_box_volume(c, r, {0, 0, 0}, {1, 1, 1}), ball(r) / 8, polynomial * ball(r));
 }
 
 TEST(Structure3, BoxesCuttingASphereAnyhowAgreeWithAMonteCarloCount) {

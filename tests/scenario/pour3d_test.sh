@@ -4,8 +4,8 @@
 # balanced, a run stopped and resumed is the run that never stopped (its ledger too, and with
 # the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
 # the ledger stops a run whose energy grows, the stress columns weigh the bed and agree with the
-# snapshots' sphere stresses, the plates carry the weight, run.json names the step specialised to
-# the scene,
+# snapshots' sphere stresses, the plates carry the weight, a servo lid carries its load, a chute's
+# flow drags its rough floor, run.json names the step specialised to the scene,
 # and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
@@ -83,6 +83,27 @@ for p in ["", "low_"]:
     assert 0 <= last[p + "rattler_fraction"] < 0.5, last
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
+# a lid held at 100 Pa by a servo comes down to the bed and carries 100 Pa times its face
+"$talus" run pour3d --out "$dir/servo" --quiet --set particles.count=40 --set simulation.duration=0.15 \
+  --set "geometry.box=[0, 0, 0, 0.03, 0.03, 0.02]" --set geometry.open_top=false \
+  --set "drivers=[{type='servo', target='lid', stress=100.0}]" --set output.snapshot_interval=0
+/usr/bin/python3 - "$dir/servo/thermo.csv" <<'PY'
+import csv, sys
+last = {k: float(v) for k, v in list(csv.DictReader(open(sys.argv[1])))[-1].items()}
+assert abs(last["force_lid_z"] / (100.0 * 0.03 * 0.03) - 1) < 1e-2, last["force_lid_z"]
+assert 0.01 < last["servo_lid_displacement"] < 0.02, last["servo_lid_displacement"]  # down
+PY
+# a chute: gravity tilted down x over a rough floor of glued spheres, periodic across; the flow
+# drags the glued spheres down the slope and weighs on them
+"$talus" run pour3d --out "$dir/chute" --quiet --set particles.count=100 --set simulation.duration=0.1 \
+  --set geometry.periodic=xy --set geometry.rough_floor=true --set "simulation.gravity=[4.3, 0, -8.8]" \
+  --set output.snapshot_interval=0
+/usr/bin/python3 - "$dir/chute/thermo.csv" <<'PY'
+import csv, sys
+last = {k: float(v) for k, v in list(csv.DictReader(open(sys.argv[1])))[-1].items()}
+assert last["force_fixed_x"] > 0 > last["force_fixed_z"], last
+assert last["kinetic"] > 0, last
+PY
 # run.json says what the step left out: one material here; without friction, rotation too
 grep -q '"step": "one material"' "$run/run.json" || { echo "FAIL: run.json's step"; exit 1; }
 "$talus" run pour3d --out "$dir/frictionless" --quiet --set particles.count=30 \

@@ -31,6 +31,9 @@ std::string region_columns(const Simulation3& sim, const Region3& r, int needed)
 
 Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
   for (const BoxSide& side : box3_sides(s.geometry)) plate_names_.push_back(side.name);
+  for (const Driver3Section& d : s.drivers)
+    if (d.servo) servo_names_.push_back(d.target);
+  fixed_spheres_ = s.geometry.rough_floor;
   if (s.output.stress) {
     regions_.emplace_back("",
                           s.output.stress_region.value_or(Region3{s.geometry.lo, s.geometry.hi}));
@@ -59,6 +62,8 @@ std::string Thermo3::header() const {
                      "coordination,list_builds";
   for (const std::string& name : plate_names_)
     head += fmt::format(",force_{0}_x,force_{0}_y,force_{0}_z", name);
+  if (fixed_spheres_) head += ",force_fixed_x,force_fixed_y,force_fixed_z";
+  for (const std::string& name : servo_names_) head += ",servo_" + name + "_displacement";
   if (ledger_) head += ledger_thermo_header;
   for (const auto& [prefix, region] : regions_) {
     head += stress_thermo_header(prefix);
@@ -75,6 +80,15 @@ std::string Thermo3::row(const Simulation3& sim, double collision_time) {
                   sim.contact_count(), sim.coordination(), sim.list().builds);
   for (const Plane& p : sim.scene().plates)
     out += fmt::format(",{:.9e},{:.9e},{:.9e}", p.force.x, p.force.y, p.force.z);
+  if (fixed_spheres_) {
+    const Spheres& spheres = sim.scene().spheres;
+    Vec3 f{};
+    for (std::size_t i = 0; i < spheres.size(); ++i)
+      if (!spheres.is_free(i)) f += spheres.force[i];
+    out += fmt::format(",{:.9e},{:.9e},{:.9e}", f.x, f.y, f.z);
+  }
+  for (const PlateServo& servo : sim.scene().servos)
+    out += fmt::format(",{:.9e}", servo.displacement);
   if (ledger_) {
     const LedgerRow l = ledger_row(*ledger_, e);
     if (l.growth > ledger_growth_limit)

@@ -1,8 +1,8 @@
 #pragma once
 // thermo.csv of a 3D run: a row of energies, contacts and list builds, then the force on each of
-// the box's plates; with output.energy_ledger the ledger's columns (its powers taken in after
-// every step), and with output.stress the stress, fabric and structure of the stress region and
-// of each named region.
+// the box's plates and on the fixed spheres of a rough floor, and each servo's displacement; with
+// output.energy_ledger the ledger's columns (its powers taken in after every step), and with
+// output.stress the stress, fabric and structure of the stress region and of each named region.
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +29,8 @@ public:
 private:
   std::optional<EnergyLedger> ledger_;
   std::vector<std::string> plate_names_; // the box's sides, the scene's plates' order
+  std::vector<std::string> servo_names_; // the servos' sides, the scene's servos' order
+  bool fixed_spheres_ = false;           // a rough floor's: the force on them all
   std::vector<std::pair<std::string, Region3>> regions_; // column prefix, region
 };
 

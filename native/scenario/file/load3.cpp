@@ -74,17 +74,22 @@ void read_geometry(TableReader& r, Box3Section& g) {
   g.open_top = r.boolean("open_top", g.open_top);
   if (g.periodic[2] && r.has("open_top"))
     r.fail("open_top", "a box periodic along z has no top or floor");
+  g.rough_floor = r.boolean("rough_floor", g.rough_floor);
+  if (g.rough_floor && g.periodic[2])
+    r.fail("rough_floor", "a box periodic along z has no floor to glue spheres on");
   g.wall_material = r.text("wall_material", "");
 }
 
 // A [[drivers]] entry's keys: its motion's own, the others refused naming the motion that has
 // them. Its target is checked against the box by check_targets.
-Driver3Section read_driver(TableReader& r) {
+Driver3Section read_driver3(TableReader& r, double impact_speed) {
   Driver3Section d;
   const std::string type =
       r.choice("type", "", {"vibrate", "translate", "rotate", "servo", "cell"});
-  if (type == "servo" || type == "cell")
-    r.fail("type", "a " + type + " driver" + not_in_3d + "; allowed: vibrate, translate, rotate");
+  if (type == "cell")
+    r.fail("type", "a cell driver" + std::string(not_in_3d) +
+                       "; allowed: vibrate, translate, rotate, servo");
+  d.servo = type == "servo";
   using Motion = PlateDriver::Motion;
   d.motion =
       type == "vibrate" ? Motion::vibrate : (type == "rotate" ? Motion::rotate : Motion::translate);
@@ -97,6 +102,15 @@ Driver3Section read_driver(TableReader& r) {
   only({"amplitude", "frequency", "phase", "direction"}, "vibrate");
   only({"velocity"}, "translate");
   only({"centre", "angular_velocity"}, "rotate");
+  only({"force", "stress", "max_speed", "relaxation"}, "servo");
+  if (d.servo) {
+    if (r.has("force") == r.has("stress"))
+      r.fail("force", "a servo needs one target: force (N) or stress (Pa), not both");
+    d.force = r.number("force", 0.0, -inf, inf, "N (negative: a pull)");
+    d.stress = r.number("stress", 0.0, -inf, inf, "Pa (negative: a pull)");
+    d.max_speed = r.number("max_speed", impact_speed, 1e-12, inf, "> 0 m/s");
+    d.relaxation = r.number("relaxation", d.relaxation, 1e-9, 1.0, "in (0, 1]");
+  }
   d.amplitude = r.number("amplitude", d.amplitude, 0.0, inf, ">= 0 m");
   d.frequency = r.number("frequency", d.frequency, 0.0, inf, ">= 0 Hz");
   d.phase = r.number("phase", d.phase, -inf, inf, "rad");
@@ -115,6 +129,12 @@ void check_targets(TableReader& top, const Scenario3& s) {
   for (std::size_t k = 0; k < s.drivers.size(); ++k) {
     TableReader r(*tables[k], top.file(), "drivers." + std::to_string(k));
     const std::vector<std::uint32_t> plates = box3_target(s.geometry, s.drivers[k].target);
+    if (s.drivers[k].servo && s.drivers[k].target == "walls") {
+      std::string sides;
+      for (const BoxSide& side : box3_sides(s.geometry))
+        sides += (sides.empty() ? "" : ", ") + side.name;
+      r.fail("target", "a servo holds one plate at a load; allowed: " + sides);
+    }
     if (plates.empty())
       r.fail("target", "'" + s.drivers[k].target +
                            "' is not a plate of this box; allowed: " + box3_targets(s.geometry));
@@ -163,7 +183,7 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
   std::size_t k = 0;
   for (const toml::table* t : top.tables("drivers")) {
     TableReader r(*t, file, "drivers." + std::to_string(k++));
-    s.drivers.push_back(read_driver(r));
+    s.drivers.push_back(read_driver3(r, s.simulation.impact_speed));
     r.finish();
   }
   check_targets(top, s);
@@ -187,6 +207,17 @@ toml::array vec(const Vec3& v) {
 // A driver with its motion's keys alone, as read_driver takes them.
 toml::table driver_table(const Driver3Section& d) {
   using Motion = PlateDriver::Motion;
+  if (d.servo) {
+    toml::table t{{"type", "servo"},
+                  {"target", d.target},
+                  {"max_speed", d.max_speed},
+                  {"relaxation", d.relaxation}};
+    if (d.stress != 0.0)
+      t.insert("stress", d.stress);
+    else
+      t.insert("force", d.force);
+    return t;
+  }
   switch (d.motion) {
   case Motion::vibrate:
     return toml::table{{"type", "vibrate"},        {"target", d.target},
@@ -242,7 +273,10 @@ std::string to_toml(const Scenario3& s) {
                        {"box", region_array({s.geometry.lo, s.geometry.hi})},
                        {"periodic", periodic.empty() ? "none" : periodic},
                        {"wall_material", s.geometry.wall_material}};
-  if (!s.geometry.periodic[2]) geometry.insert("open_top", s.geometry.open_top);
+  if (!s.geometry.periodic[2]) {
+    geometry.insert("open_top", s.geometry.open_top);
+    geometry.insert("rough_floor", s.geometry.rough_floor);
+  }
   toml::table root{
       {"name", s.name},
       {"description", s.description},
