@@ -83,15 +83,26 @@ for p in ["", "low_"]:
     assert 0 <= last[p + "rattler_fraction"] < 0.5, last
 PY
 /usr/bin/python3 "$here/read_vtk3d.py" "$run" 0.03,0.03,0.12 || [ $? -eq 77 ]
-# a lid held at 100 Pa by a servo comes down to the bed and carries 100 Pa times its face
+# a lid held at 100 Pa by a servo comes down to the bed and carries 100 Pa times its face; the
+# default stress region ends at the lid, so its packing fraction is the spheres' volume over the
+# box below the lid
 "$talus" run pour3d --out "$dir/servo" --quiet --set particles.count=40 --set simulation.duration=0.15 \
   --set "geometry.box=[0, 0, 0, 0.03, 0.03, 0.02]" --set geometry.open_top=false \
-  --set "drivers=[{type='servo', target='lid', stress=100.0}]" --set output.snapshot_interval=0
-/usr/bin/python3 - "$dir/servo/thermo.csv" <<'PY'
-import csv, sys
-last = {k: float(v) for k, v in list(csv.DictReader(open(sys.argv[1])))[-1].items()}
+  --set "drivers=[{type='servo', target='lid', stress=100.0}]" --set output.snapshot_interval=0.15 \
+  --set output.stress=true
+/usr/bin/python3 - "$dir/servo" <<'PY'
+import csv, math, sys
+import xml.etree.ElementTree as ET
+run = sys.argv[1]
+last = {k: float(v) for k, v in list(csv.DictReader(open(run + "/thermo.csv")))[-1].items()}
 assert abs(last["force_lid_z"] / (100.0 * 0.03 * 0.03) - 1) < 1e-2, last["force_lid_z"]
-assert 0.01 < last["servo_lid_displacement"] < 0.02, last["servo_lid_displacement"]  # down
+down = last["servo_lid_displacement"]
+assert 0.01 < down < 0.02, down
+radius = [[float(x) for x in a.text.split()]
+          for a in ET.parse(run + "/snapshots/spheres_000001.vtp").iter("DataArray")
+          if a.get("Name") == "radius"][0]
+below = sum(4 / 3 * math.pi * r ** 3 for r in radius) / (0.03 * 0.03 * (0.02 - down))
+assert abs(last["region_packing_fraction"] - below) < 1e-6, (last["region_packing_fraction"], below)
 PY
 # a chute: gravity tilted down x over a rough floor of glued spheres, periodic across; the flow
 # drags the glued spheres down the slope and weighs on them

@@ -27,6 +27,21 @@ std::string region_columns(const Simulation3& sim, const Region3& r, int needed)
                      network.coordination, rattlers);
 }
 
+// The box with each servo plate's side where the plate stands now: the default stress region of
+// a box a servo presses, so that its packing fraction is of the packing, not of the space the
+// plate has left behind it.
+Region3 up_to_servo_plates(const Simulation3& sim, Region3 box) {
+  for (const PlateServo& servo : sim.scene().servos) {
+    const Vec3 n = servo.direction; // inward: +axis for a lo side, -axis for a hi side
+    const Vec3& at = sim.scene().plates[servo.plate].centre;
+    for (int k = 0; k < 3; ++k) {
+      if (component(n, k) > 0.5) component(box.lo, k) = component(at, k);
+      if (component(n, k) < -0.5) component(box.hi, k) = component(at, k);
+    }
+  }
+  return box;
+}
+
 } // namespace
 
 Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
@@ -37,6 +52,7 @@ Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
   if (s.output.stress) {
     regions_.emplace_back("",
                           s.output.stress_region.value_or(Region3{s.geometry.lo, s.geometry.hi}));
+    follows_servos_ = !s.output.stress_region;
     for (const StressRegion3& r : s.output.stress_regions)
       regions_.emplace_back(r.name + "_", r.region);
   }
@@ -98,7 +114,11 @@ std::string Thermo3::row(const Simulation3& sim, double collision_time) {
   }
   if (!regions_.empty()) {
     const int needed = contacts_needed(sim);
-    for (const auto& [prefix, region] : regions_) out += region_columns(sim, region, needed);
+    for (std::size_t k = 0; k < regions_.size(); ++k) {
+      Region3 region = regions_[k].second;
+      if (k == 0 && follows_servos_) region = up_to_servo_plates(sim, region);
+      out += region_columns(sim, region, needed);
+    }
   }
   return out + "\n";
 }

@@ -31,6 +31,7 @@ private:
   std::vector<std::string> plate_names_; // the box's sides, the scene's plates' order
   std::vector<std::string> servo_names_; // the servos' sides, the scene's servos' order
   bool fixed_spheres_ = false;           // a rough floor's: the force on them all
+  bool follows_servos_ = false;          // the default stress region: its sides at the servo plates
   std::vector<std::pair<std::string, Region3>> regions_; // column prefix, region
 };
 
