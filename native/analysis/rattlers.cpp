@@ -1,7 +1,6 @@
 #include "analysis/rattlers.hpp"
 
 #include <algorithm>
-#include <utility>
 
 #include "talus/law_table.hpp"
 
@@ -53,24 +52,10 @@ LoadBearing load_bearing(const Simulation& sim, Vec2 lo, Vec2 hi, int needed) {
   });
   std::vector<bool> free(p.size());
   for (std::uint32_t i = 0; i < p.size(); ++i) free[i] = p.is_free(i);
-  Peeled peeled = peel_rattlers(partners, free, needed);
-  LoadBearing out;
-  out.rattler = std::move(peeled.rattler);
-  const std::vector<int>& count = peeled.count;
-  double contacts = 0.0;
-  for (std::uint32_t i = 0; i < p.size(); ++i) {
-    // a periodic box's grain where it is: wrapped (it may have crossed since the list's build)
-    if (!p.is_free(i) || !inside_box(sim.world().domain.wrap(p.position[i]), lo, hi)) continue;
-    ++out.grains;
-    if (out.rattler[i]) {
-      ++out.rattlers;
-      continue;
-    }
-    contacts += count[i];
-  }
-  const std::size_t held = out.grains - out.rattlers;
-  out.coordination = held > 0 ? contacts / static_cast<double>(held) : 0.0;
-  return out;
+  // a periodic box's grain where it is: wrapped (it may have crossed since the list's build)
+  return load_bearing_of(partners, free, needed, [&](std::uint32_t i) {
+    return inside_box(sim.world().domain.wrap(p.position[i]), lo, hi);
+  });
 }
 
 } // namespace talus

@@ -7,6 +7,7 @@
 // one the isostatic counting (Z = 2d without friction) compares with.
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/vec2.hpp"
@@ -30,6 +31,29 @@ struct Peeled {
 };
 Peeled peel_rattlers(const std::vector<std::vector<std::int64_t>>& partners,
                      const std::vector<bool>& free, int needed);
+
+/// The network peeled as peel_rattlers does, with the statistics of the free grains for which
+/// in_region(i) holds (disks in 2D, spheres in 3D).
+template <class InRegion>
+LoadBearing load_bearing_of(const std::vector<std::vector<std::int64_t>>& partners,
+                            const std::vector<bool>& free, int needed, InRegion&& in_region) {
+  Peeled peeled = peel_rattlers(partners, free, needed);
+  LoadBearing out;
+  out.rattler = std::move(peeled.rattler);
+  double contacts = 0.0;
+  for (std::uint32_t i = 0; i < partners.size(); ++i) {
+    if (!free[i] || !in_region(i)) continue;
+    ++out.grains;
+    if (out.rattler[i]) {
+      ++out.rattlers;
+      continue;
+    }
+    contacts += peeled.count[i];
+  }
+  const std::size_t held = out.grains - out.rattlers;
+  out.coordination = held > 0 ? contacts / static_cast<double>(held) : 0.0;
+  return out;
+}
 
 /// The load-bearing network of the free grains, with the statistics of those with their centres
 /// in [lo, hi]. `needed`: the contacts a grain needs (3 for frictionless disks, 2 with friction).

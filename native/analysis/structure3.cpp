@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <utility>
 
 #include <Eigen/Dense>
 
@@ -117,7 +116,7 @@ int contacts_needed(const Simulation3& sim) {
                                                                                               : 3;
 }
 
-LoadBearing3 load_bearing(const Simulation3& sim, Vec3 lo, Vec3 hi, int needed) {
+LoadBearing load_bearing(const Simulation3& sim, Vec3 lo, Vec3 hi, int needed) {
   const Scene3& scene = sim.scene();
   const Spheres& s = scene.spheres;
   // each free sphere's partners: other free spheres by index, plates and fixed spheres as -1
@@ -138,24 +137,11 @@ LoadBearing3 load_bearing(const Simulation3& sim, Vec3 lo, Vec3 hi, int needed) 
       });
   std::vector<bool> free(s.size());
   for (std::uint32_t i = 0; i < s.size(); ++i) free[i] = s.is_free(i);
-  Peeled peeled = peel_rattlers(partners, free, needed);
-  LoadBearing3 out;
-  out.rattler = std::move(peeled.rattler);
-  const std::vector<int>& count = peeled.count;
-  double contacts = 0.0;
-  for (std::uint32_t i = 0; i < s.size(); ++i) {
+  // a periodic box's sphere where it is: wrapped (it may have crossed since the list's build)
+  return load_bearing_of(partners, free, needed, [&](std::uint32_t i) {
     Image3 crossed{};
-    if (!s.is_free(i) || !inside_box(scene.domain.wrap(s.position[i], crossed), lo, hi)) continue;
-    ++out.spheres;
-    if (out.rattler[i]) {
-      ++out.rattlers;
-      continue;
-    }
-    contacts += count[i];
-  }
-  const std::size_t held = out.spheres - out.rattlers;
-  out.coordination = held > 0 ? contacts / static_cast<double>(held) : 0.0;
-  return out;
+    return inside_box(scene.domain.wrap(s.position[i], crossed), lo, hi);
+  });
 }
 
 } // namespace talus

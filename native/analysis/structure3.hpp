@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "analysis/rattlers.hpp"
 #include "core/vec3.hpp"
 #include "engine3d/simulation3.hpp"
 
@@ -21,19 +22,13 @@ double sphere_box_volume(Vec3 c, double r, Vec3 lo, Vec3 hi);
 /// wrapped and its images, so the parts past the domain's sides count through them.
 double packing_fraction(const Simulation3& sim, Vec3 lo, Vec3 hi);
 
-struct LoadBearing3 {
-  std::vector<bool> rattler; ///< per sphere: a free sphere taken out (false for fixed ones)
-  std::size_t spheres = 0;   ///< free spheres with their centres in the box
-  std::size_t rattlers = 0;  ///< of those, rattlers
-  double coordination = 0.0; ///< mean contacts of the others in the box (plates included)
-};
-
 /// The contacts a sphere needs to be held in the run's model: 4 without friction (the tangential
 /// law `none` or every material with friction 0), else 3.
 int contacts_needed(const Simulation3& sim);
 
 /// The load-bearing network of the free spheres, with the statistics of those with their
-/// centres in [lo, hi). A contact with a plate or a fixed sphere holds as one that never leaves.
-LoadBearing3 load_bearing(const Simulation3& sim, Vec3 lo, Vec3 hi, int needed);
+/// centres in [lo, hi) (LoadBearing's grains are spheres here). A contact with a plate or a
+/// fixed sphere holds as one that never leaves.
+LoadBearing load_bearing(const Simulation3& sim, Vec3 lo, Vec3 hi, int needed);
 
 } // namespace talus

@@ -215,8 +215,10 @@ void Simulation3::forces_after_the_move() {
 // is the damping coefficient), then takes its speed for the next step.
 void Simulation3::drive_servos() {
   if (scene_.servos.empty()) return;
-  std::vector<ServoReading> reading(scene_.servos.size());
-  std::vector<std::int32_t> owner(scene_.plates.size(), -1);
+  std::vector<ServoReading>& reading = servo_reading_; // kept: no allocation a step
+  std::vector<std::int32_t>& owner = servo_owner_;
+  reading.assign(scene_.servos.size(), ServoReading{});
+  owner.assign(scene_.plates.size(), -1);
   for (std::size_t k = 0; k < scene_.servos.size(); ++k) {
     const PlateServo& servo = scene_.servos[k];
     owner[servo.plate] = static_cast<std::int32_t>(k);

@@ -108,6 +108,8 @@ private:
   ForcePass3 force_pass_;
   ContactPass3 last_;
   GearState3 gear_;
+  std::vector<ServoReading> servo_reading_; ///< drive_servos' buffers: each servo's reading
+  std::vector<std::int32_t> servo_owner_;   ///< and each plate's servo (-1: none)
   int threads_ = 1;
   bool rotation_ = true; ///< false: the step leaves the torques and spins out (turns_spheres)
   bool general_ = false;

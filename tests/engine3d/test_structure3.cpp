@@ -108,8 +108,8 @@ TEST(Structure3, ALatticeHoldsItsSpheresAndALooseOneRattles) {
   const double r = 0.01;
   const Simulation3 sim = lattice(4, r, 1e-5, {r, r, r});
   const Domain3& domain = sim.scene().domain;
-  LoadBearing3 held = load_bearing(sim, domain.lo, domain.hi, 4);
-  EXPECT_EQ(held.spheres, 64u);
+  LoadBearing held = load_bearing(sim, domain.lo, domain.hi, 4);
+  EXPECT_EQ(held.grains, 64u);
   EXPECT_EQ(held.rattlers, 0u);
   EXPECT_DOUBLE_EQ(held.coordination, 6.0);
   // six contacts each: with 7 needed, every one goes
@@ -131,8 +131,8 @@ TEST(Structure3, TakingOutRattlersGoesOnDownAnOpenChain) {
     for (int k = 0; k < 5; ++k)
       scene.add_sphere({.position = {r + k * a, 0.05, 0.05}, .radius = r});
     const Simulation3 sim(std::move(scene), {.timestep = 1e-6, .threads = 1});
-    const LoadBearing3 held = load_bearing(sim, sim.scene().domain.lo, sim.scene().domain.hi, 2);
-    EXPECT_EQ(held.spheres, 5u);
+    const LoadBearing held = load_bearing(sim, sim.scene().domain.lo, sim.scene().domain.hi, 2);
+    EXPECT_EQ(held.grains, 5u);
     EXPECT_EQ(held.rattlers, ring ? 0u : 5u) << (ring ? "ring" : "chain");
     EXPECT_DOUBLE_EQ(held.coordination, ring ? 2.0 : 0.0);
   }

@@ -18,10 +18,10 @@ constexpr std::array<const char*, 3> structure_names{
 
 // A region's stress, fabric and structure columns.
 std::string region_columns(const Simulation3& sim, const Region3& r, int needed) {
-  const LoadBearing3 network = load_bearing(sim, r.lo, r.hi, needed);
-  const double rattlers = network.spheres > 0 ? static_cast<double>(network.rattlers) /
-                                                    static_cast<double>(network.spheres)
-                                              : 0.0;
+  const LoadBearing network = load_bearing(sim, r.lo, r.hi, needed);
+  const double rattlers = network.grains > 0 ? static_cast<double>(network.rattlers) /
+                                                   static_cast<double>(network.grains)
+                                             : 0.0;
   return stress_thermo_columns(region_stress(sim, r.lo, r.hi)) +
          fmt::format(",{:.9f},{:.6f},{:.6f}", packing_fraction(sim, r.lo, r.hi),
                      network.coordination, rattlers);
