@@ -94,17 +94,26 @@ RegionStress3 region_stress(const Simulation3& sim, Vec3 lo, Vec3 hi) {
   RegionStress3 out;
   out.volume = (hi.x - lo.x) * (hi.y - lo.y) * (hi.z - lo.z);
   add_contacts(sim, lo, hi, out);
-  // the kinetic part, about the spheres' mean velocity
+  // the kinetic part, about the spheres' mean velocity and, in a sheared cell, the shear's flow
+  // gamma_dot (y - <y>) along x: the spheres' fluctuations, not the flow (as in 2D). The height
+  // is where the sphere is held, not wrapped: a sphere past the upper side keeps the velocity of
+  // the flow there until the list's build wraps both
   const Spheres& s = sim.scene().spheres;
-  double mass = 0.0;
+  const double shear = sim.scene().cell ? sim.scene().cell->shear_rate : 0.0;
+  const auto height = [&](std::size_t i) { return s.position[i].y; };
+  double mass = 0.0, y_sum = 0.0;
   Vec3 momentum{};
   for (std::size_t i = 0; i < s.size(); ++i)
-    if (s.is_free(i) && inside(sim, i, lo, hi))
+    if (s.is_free(i) && inside(sim, i, lo, hi)) {
       mass += s.mass[i], momentum += s.mass[i] * s.velocity[i], ++out.spheres;
+      if (shear != 0.0) y_sum += s.mass[i] * height(i);
+    }
   const Vec3 mean = mass > 0.0 ? (1.0 / mass) * momentum : Vec3{};
+  const double y_mean = mass > 0.0 ? y_sum / mass : 0.0;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.is_free(i) && inside(sim, i, lo, hi)) {
-      const Vec3 u = s.velocity[i] - mean;
+      Vec3 u = s.velocity[i] - mean;
+      if (shear != 0.0) u.x -= shear * (height(i) - y_mean);
       out.kinetic += s.mass[i] * outer(u, u);
     }
   if (out.volume > 0.0) out.contact /= out.volume, out.kinetic /= out.volume;

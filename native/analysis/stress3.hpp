@@ -24,11 +24,13 @@ using Tensor3 = Eigen::Matrix3d;
 /// The stress and structure of the spheres with their centres in a box.
 struct RegionStress3 {
   Tensor3 contact = Tensor3::Zero(); ///< Pa: -(1/V) sum f l over the spheres' contacts
-  Tensor3 kinetic = Tensor3::Zero(); ///< Pa: (1/V) sum m u u, u about the spheres' mean velocity
-  Tensor3 fabric = Tensor3::Zero();  ///< mean n n over the sphere-sphere contacts (trace 1)
-  std::size_t spheres = 0;           ///< free spheres with their centres in the box
-  std::size_t contacts = 0;          ///< sphere-sphere contacts with a sphere in it (each once)
-  double volume = 0.0;               ///< m^3
+  /// Pa: (1/V) sum m u u, u about the spheres' mean velocity (and, in a sheared cell, less the
+  /// shear's flow gamma_dot (y - <y>) along x)
+  Tensor3 kinetic = Tensor3::Zero();
+  Tensor3 fabric = Tensor3::Zero(); ///< mean n n over the sphere-sphere contacts (trace 1)
+  std::size_t spheres = 0;          ///< free spheres with their centres in the box
+  std::size_t contacts = 0;         ///< sphere-sphere contacts with a sphere in it (each once)
+  double volume = 0.0;              ///< m^3
   Tensor3 total() const { return contact + kinetic; }
 };
 

@@ -93,9 +93,9 @@ double packing_fraction(const Simulation3& sim, Vec3 lo, Vec3 hi) {
   if (!(region > 0.0)) return 0.0;
   const Spheres& s = sim.scene().spheres;
   const Domain3& box = sim.scene().domain;
-  const Vec3 l = box.size();
-  const int nx = box.periodic[0] ? 1 : 0, ny = box.periodic[1] ? 1 : 0,
-            nz = box.periodic[2] ? 1 : 0;
+  // across a Lees-Edwards side the images sit an offset along x: one more width each way
+  const int nx = box.periodic[0] ? (box.shear_offset != 0.0 ? 2 : 1) : 0,
+            ny = box.periodic[1] ? 1 : 0, nz = box.periodic[2] ? 1 : 0;
   double covered = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!s.is_free(i)) continue;
@@ -104,7 +104,7 @@ double packing_fraction(const Simulation3& sim, Vec3 lo, Vec3 hi) {
     for (int a = -nx; a <= nx; ++a)
       for (int b = -ny; b <= ny; ++b)
         for (int k = -nz; k <= nz; ++k)
-          covered += sphere_box_volume(r + Vec3{a * l.x, b * l.y, k * l.z}, s.radius[i], lo, hi);
+          covered += sphere_box_volume(r + box.image_shift(a, b, k), s.radius[i], lo, hi);
   }
   return covered / region;
 }

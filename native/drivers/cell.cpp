@@ -4,10 +4,22 @@
 #include <cmath>
 #include <string>
 
+#include "core/vec3.hpp"
 #include "simulation/world.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
+
+template <class V> void require_controller_keys(const CellOf<V>& c) {
+  require(std::isfinite(c.max_strain_rate) && c.max_strain_rate > 0.0,
+          "cell driver: a pressure needs max_strain_rate > 0 (1/s)");
+  require(c.relaxation > 0.0 && c.relaxation <= 1.0,
+          "cell driver: relaxation must be in (0, 1] (the fraction of the stress' error closed "
+          "per step: above 1 the cell overshoots)");
+}
+
+template void require_controller_keys(const CellOf<Vec2>&);
+template void require_controller_keys(const CellOf<Vec3>&);
 
 void attach_cell(Cell& c, const Domain& d) {
   require(std::isfinite(c.strain_rate.x) && std::isfinite(c.strain_rate.y),
@@ -22,11 +34,7 @@ void attach_cell(Cell& c, const Domain& d) {
             "cell driver: a pressure needs a box periodic in x and y (geometry.periodic = \"xy\")");
     require(c.strain_rate.x == 0.0 && c.strain_rate.y == 0.0,
             "cell driver: give strain_rate or pressure, not both");
-    require(std::isfinite(c.max_strain_rate) && c.max_strain_rate > 0.0,
-            "cell driver: a pressure needs max_strain_rate > 0 (1/s)");
-    require(c.relaxation > 0.0 && c.relaxation <= 1.0,
-            "cell driver: relaxation must be in (0, 1] (the fraction of the stress' error "
-            "closed per step: above 1 the cell overshoots)");
+    require_controller_keys(c);
   }
   require(std::isfinite(c.shear_rate), "cell driver: shear_rate must be finite (1/s)");
   if (c.shear_rate != 0.0) {
@@ -63,11 +71,14 @@ Vec2 cell_strain_rate(const Cell& c, const Domain& d) {
   return {d.periodic_x ? c.rate : 0.0, d.periodic_y ? c.rate : 0.0};
 }
 
-double cell_rate(const Cell& c, const CellReading& r, double dt) {
+template <class V> double cell_rate(const CellOf<V>& c, const CellReading& r, double dt) {
   const double error = r.pressure - c.pressure; // > 0: the grains push too hard, expand
   const double rate = r.stiffness > 0.0 ? c.relaxation * error / (r.stiffness * dt)
                                         : std::copysign(c.max_strain_rate, error);
   return std::clamp(rate, -c.max_strain_rate, c.max_strain_rate);
 }
+
+template double cell_rate(const CellOf<Vec2>&, const CellReading&, double);
+template double cell_rate(const CellOf<Vec3>&, const CellReading&, double);
 
 } // namespace talus

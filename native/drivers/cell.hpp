@@ -19,9 +19,13 @@ namespace talus {
 /// normal stress across the shear, sigma_yy = (1/A)(sum_c F_y d_y + sum m u_y^2), with the
 /// stiffness against a strain of y alone, (1/A) sum_c k_c d_y^4 / |d_c|^2.
 struct CellReading {
-  double pressure = 0.0;  ///< N/m
-  double stiffness = 0.0; ///< N/m
+  double pressure = 0.0;  ///< N/m (Pa in 3D)
+  double stiffness = 0.0; ///< N/m (Pa in 3D)
 };
+
+/// Throws InvalidArgument for a pressure mode's fastest rate or relaxation out of range (in words,
+/// naming the key): for a cell of disks or of spheres.
+template <class V> void require_controller_keys(const CellOf<V>& c);
 
 /// Checks a cell's keys against the box it deforms (in words, naming the key), and starts its
 /// state at rest.
@@ -40,7 +44,8 @@ Vec2 cell_strain_rate(const Cell& c, const Domain& d);
 /// The pressure mode's rate for the next step, from the reading after this one:
 ///   rate = relaxation (P - P_target) / (K dt),
 /// which compresses (rate < 0) below the target; with no stiffness (no contact) the fastest
-/// towards the target. Never faster than max_strain_rate either way.
-double cell_rate(const Cell& c, const CellReading& r, double dt);
+/// towards the target. Never faster than max_strain_rate either way. For a cell of disks or of
+/// spheres (engine3d/cell3.hpp).
+template <class V> double cell_rate(const CellOf<V>& c, const CellReading& r, double dt);
 
 } // namespace talus

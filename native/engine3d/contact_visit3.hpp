@@ -43,9 +43,10 @@ void for_each_contact3(const Scene3& scene, const SphereList& list, const PairTa
       const double reach = s.radius[i] + s.radius[j];
       const double dist2 = norm2(d);
       if (dist2 >= reach * reach || dist2 == 0.0) continue;
-      const ContactGeometry3 g = pair_geometry(
-          d, std::sqrt(dist2), s.radius[i], s.radius[j], s.mass[i], s.mass[j], s.velocity[i],
-          s.velocity[j], s.angular_velocity[i], s.angular_velocity[j], true, shares);
+      const ContactGeometry3 g =
+          pair_geometry(d, std::sqrt(dist2), s.radius[i], s.radius[j], s.mass[i], s.mass[j],
+                        s.velocity[i], s.velocity[j] + list.image_velocity(e, scene.domain),
+                        s.angular_velocity[i], s.angular_velocity[j], true, shares);
       on_pair(i, e, j, g, table(s.material[i], s.material[j]));
     }
     for_each_plate_contact_of(scene, list, table, shares, i, on_plate);

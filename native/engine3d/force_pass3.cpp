@@ -78,7 +78,12 @@ ContactPass3 ForcePass3::compute_with(Scene3& scene, SphereList& list, const Pai
       s.force[i] = s.is_free(i) ? s.mass[i] * scene.gravity : Vec3{};
       if constexpr (Rotation) s.torque[i] = {};
     }
-    const BlockSums3 sums{s, first, last, deferred_force_.data(), deferred_torque_j_.data()};
+    const BlockSums3 sums{s,
+                          first,
+                          last,
+                          deferred_force_.data(),
+                          deferred_torque_j_.data(),
+                          scene.domain.shear_velocity};
     std::vector<Touching3>& found = found_[static_cast<std::size_t>(omp_get_thread_num())];
     // by stretches of rows, so that the touching entries written down are still in the cache
     // when their forces are computed

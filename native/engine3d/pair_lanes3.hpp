@@ -75,6 +75,7 @@ struct BlockSums3 {
   std::uint32_t first, last;
   Vec3* deferred_force;
   Vec3* deferred_torque_j;
+  double slide = 0.0; ///< m/s: the Lees-Edwards images' velocity along x (Domain3::shear_velocity)
 };
 
 /// Tests every entry of rows [r0, r1) of the block: a touching one is written down in `found`
@@ -95,7 +96,6 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
   const Shift3* const shift = list.shift.data();
   Vec3* const spring = list.spring.data();
   Vec3* const rolling = list.rolling.data();
-  const Vec3 box = domain.size();
   std::size_t count = 0;
   for (std::uint32_t i = r0; i < r1; ++i) {
     const Vec3 ri = position[i];
@@ -106,7 +106,7 @@ std::size_t touching_entries(const Spheres& s, SphereList& list, const Domain3& 
       Vec3 rj = position[j];
       const Shift3 image = shift[e];
       if (image.x != 0 || image.y != 0 || image.z != 0) [[unlikely]] // a periodic image
-        rj += Vec3{image.x * box.x, image.y * box.y, image.z * box.z};
+        rj += domain.image_shift(image.x, image.y, image.z);
       const Vec3 d = ri - rj;
       const double dist2 = norm2(d);
       const double reach = radius_i + radius[j];
@@ -203,7 +203,12 @@ template <class N, class T, bool Rotation, class L>
     const ContactGeometry3Of<L> g =
         pair_geometry(d, square_root(dot(d, d)), ri, rj, lanes_from<L>(each(s.mass)),
                       lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)),
-                      vec3_lanes_from<L>(each_j(s.velocity)),
+                      vec3_lanes_from<L>([&](int k) {
+                        Vec3 v = s.velocity[j[k]];
+                        if (b.slide != 0.0) [[unlikely]] // a Lees-Edwards image slides
+                          v.x += list.shift[entry[k]].y * b.slide;
+                        return v;
+                      }),
                       vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, i[k]); }),
                       vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, j[k]); }),
                       N::uses_r_eff || T::uses_r_eff || list.with_rolling, shares);

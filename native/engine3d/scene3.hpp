@@ -1,6 +1,10 @@
 #pragma once
 // A scene of spheres in 3D and the settings of its run: what Simulation3 is built from.
+#include <optional>
 #include <vector>
+
+#include "core/vec3.hpp"
+#include "drivers/cell_of.hpp"
 
 #include "engine3d/plate_drivers.hpp"
 #include "engine3d/plate_servo.hpp"
@@ -17,6 +21,8 @@ struct Scene3 {
   std::vector<Plane> plates;
   std::vector<PlateDriver> drivers; ///< the plates' prescribed motions, from the run's start
   std::vector<PlateServo> servos;   ///< plates held at a load, each moved by its controller
+  /// the periodic box deforming, its state with it (engine3d/cell3.hpp); none: a box that stays
+  std::optional<CellOf<Vec3>> cell;
   Domain3 domain;
   std::vector<Material> materials{Material{}};
   Vec3 gravity{}; ///< m/s^2

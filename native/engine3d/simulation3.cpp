@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include "core/capacity_bytes.hpp"
+#include "engine3d/cell3.hpp"
 #include "engine3d/contact_visit3.hpp"
 #include "engine3d/renumber3.hpp"
 #include "talus/error.hpp"
@@ -44,6 +45,11 @@ void validate(const Scene3& scene, const Settings3& settings) {
   const Domain3& d = scene.domain;
   require(d.lo.x < d.hi.x && d.lo.y < d.hi.y && d.lo.z < d.hi.z,
           "the domain needs lo < hi along every axis");
+  require(std::isfinite(d.shear_offset) && std::isfinite(d.shear_velocity),
+          "the domain's Lees-Edwards offset and slide must be finite");
+  require(!d.sheared() || (d.periodic[0] && d.periodic[1]),
+          "Lees-Edwards images need a box periodic in x and y");
+  if (scene.cell) validate(*scene.cell, d, scene.plates.size());
 }
 
 // Whether some material rolls with resistance (a pair rolls with it if either material does:
@@ -74,11 +80,15 @@ Simulation3::Simulation3(Scene3 scene, Settings3 settings)
   for (const Plane& p : scene_.plates) start_.push_back({p.centre, p.normal, p.axis_u});
   drive_plates(scene_.plates, scene_.drivers, start_, 0.0);
   place_servo_plates(scene_.plates, scene_.servos, start_);
+  if (scene_.cell) {
+    attach_cell(*scene_.cell, scene_.domain, scene_.plates.size());
+    set_shear_velocity(&*scene_.cell, scene_.domain);
+  }
   list_.with_rolling = rolls_with_resistance(scene_.materials); // rolling springs
   list_.with_springs = general_ || keeps_history(settings_.tangential_law);
-  build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
-                    resolved_skin(scene_, settings_));
+  rebuild_list();
   compute_forces();
+  drive_cell();
   if (settings_.integrator == Integrator::gear) gear_initialise(gear_, scene_.spheres);
   guard();
 }
@@ -197,16 +207,39 @@ void Simulation3::sort_spheres() {
 
 void Simulation3::forces_after_the_move() {
   const double dt = settings_.timestep;
+  if (scene_.cell) deform_cell(*scene_.cell, scene_.domain, scene_.spheres, list_, dt, threads_);
   drive_plates(scene_.plates, scene_.drivers, start_, static_cast<double>(steps_ + 1) * dt);
   place_servo_plates(scene_.plates, scene_.servos, start_);
-  if (list_is_stale(list_, scene_.spheres, scene_.plates)) {
+  if (list_is_stale(list_, scene_.spheres, scene_.plates, scene_.domain)) {
     guard();
-    build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
-                      resolved_skin(scene_, settings_));
-    force_pass_.list_changed();
+    rebuild_list();
   }
   compute_forces();
   drive_servos();
+  drive_cell();
+}
+
+void Simulation3::rebuild_list() {
+  reduce_shear_offset(scene_.domain);
+  try {
+    build_sphere_list(list_, scene_.spheres, scene_.plates, scene_.domain,
+                      resolved_skin(scene_, settings_));
+  } catch (const InvalidArgument& e) { // a box too small for the grid: say who made it so
+    if (!scene_.cell || steps_ == 0) throw;
+    std::ostringstream msg;
+    msg << e.what() << " at t = " << time_
+        << " s: the deforming cell shrank the box to this; end it sooner or hold it at a "
+           "pressure";
+    throw InvalidArgument(msg.str());
+  }
+  force_pass_.list_changed();
+}
+
+// The cell's controller takes its rate for the next step from the reading after this one.
+void Simulation3::drive_cell() {
+  if (!scene_.cell || scene_.cell->pressure <= 0.0) return;
+  Cell3& c = *scene_.cell;
+  c.rate = cell_rate(c, cell_reading(c, scene_, list_, table_, settings_), settings_.timestep);
 }
 
 // Each servo reads its plate after the force pass: the spheres' push against its direction and

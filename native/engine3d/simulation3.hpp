@@ -2,7 +2,8 @@
 // The 3D engine's facade: owns a scene of spheres and runs its steps with velocity Verlet.
 //
 // What it has: spheres (free or fixed), plates (fixed or driven: translating, vibrating,
-// turning), gravity, periodic axes, every law pair of the table and rolling resistance, the
+// turning, or held at a load), gravity, periodic axes, a deforming periodic cell with Lees-Edwards
+// shear (cell3.hpp, Scene3::cell), every law pair of the table and rolling resistance, the
 // Verlet list with its springs, velocity Verlet and Gear, the stability guard. What it does not
 // have yet is refused where it is set (Spheres::add): moved spheres. Its results are
 // bit-identical for any thread count.
@@ -95,6 +96,8 @@ private:
   void compute_forces();
   void forces_after_the_move(); ///< the plates to the step's end, the list if stale, the forces
   void drive_servos();          ///< each servo's speed and displacement for the next step
+  void drive_cell();            ///< a cell's rate for the next step, held at a pressure
+  void rebuild_list();          ///< the Lees-Edwards offset brought back, then the list built
   void gear_step();
   void fit_springs();  ///< springs per entry where the law or the general step keeps them
   void sort_spheres(); ///< renumbers the spheres in the order of their cells (renumber3.hpp)

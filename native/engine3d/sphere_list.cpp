@@ -95,41 +95,53 @@ struct Candidate {
   Shift3 shift;
 };
 
+// The cell next to `home` along axis k by `step` with the periodic image it takes (c and shift
+// set), or false where the grid ends along an open axis.
+bool neighbour_cell(const Grid3& g, const Domain3& d, int k, int cell, int& c, std::int8_t& shift) {
+  c = cell;
+  shift = 0;
+  if (c >= 0 && c < g.cells[k]) return true;
+  if (!d.periodic[k]) return false;
+  // beyond one width only across a Lees-Edwards side, whose offset moves the row of cells
+  const int widths = c >= 0 ? c / g.cells[k] : -((-c - 1) / g.cells[k] + 1);
+  shift = static_cast<std::int8_t>(widths);
+  c -= widths * g.cells[k];
+  return true;
+}
+
 // The pairs (i, j > i) within reach of sphere i, ascending in j.
 void row_of(std::size_t i, const Spheres& s, const Grid3& g, const Domain3& d, double skin,
             std::vector<Candidate>& row) {
   row.clear();
   const Vec3& p = s.position[i];
   const std::array<int, 3> home{g.cell_along(0, p.x), g.cell_along(1, p.y), g.cell_along(2, p.z)};
-  const Vec3 l = d.size();
   for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
+    for (int dy = -1; dy <= 1; ++dy) {
+      int cy = 0, cz = 0;
+      std::int8_t sy = 0, sz = 0;
+      if (!neighbour_cell(g, d, 1, home[1] + dy, cy, sy) ||
+          !neighbour_cell(g, d, 2, home[2] + dz, cz, sz))
+        continue;
+      // across a Lees-Edwards side the row of cells is offset along x: its three columns are
+      // those around i's place less the offset (the cells are at least the range wide)
+      const int mx =
+          sy == 0 || d.shear_offset == 0.0
+              ? home[0]
+              : static_cast<int>(std::floor((p.x - sy * d.shear_offset - g.lo[0]) / g.size[0]));
       for (int dx = -1; dx <= 1; ++dx) {
-        const std::array<int, 3> step{dx, dy, dz};
-        std::array<int, 3> c{};
-        std::array<std::int8_t, 3> shift{};
-        bool inside = true;
-        for (int k = 0; k < 3; ++k) {
-          c[k] = home[k] + step[k];
-          if (c[k] >= 0 && c[k] < g.cells[k]) continue;
-          if (!d.periodic[k] || g.cells[k] < 3) {
-            inside = false;
-            break;
-          }
-          shift[k] = static_cast<std::int8_t>(c[k] < 0 ? -1 : 1);
-          c[k] += c[k] < 0 ? g.cells[k] : -g.cells[k];
-        }
-        if (!inside) continue;
-        const Vec3 offset{shift[0] * l.x, shift[1] * l.y, shift[2] * l.z};
-        const std::size_t cell = g.index(c[0], c[1], c[2]);
+        int cx = 0;
+        std::int8_t sx = 0;
+        if (!neighbour_cell(g, d, 0, mx + dx, cx, sx)) continue;
+        const Vec3 offset = d.image_shift(sx, sy, sz);
+        const std::size_t cell = g.index(cx, cy, cz);
         for (std::uint32_t k = g.start[cell]; k < g.start[cell + 1]; ++k) {
           const std::uint32_t j = g.items[k];
           if (j <= i || (!s.is_free(i) && !s.is_free(j))) continue;
           const double reach = s.radius[i] + s.radius[j] + skin;
-          if (norm2(p - (s.position[j] + offset)) < reach * reach)
-            row.push_back({j, {shift[0], shift[1], shift[2]}});
+          if (norm2(p - (s.position[j] + offset)) < reach * reach) row.push_back({j, {sx, sy, sz}});
         }
       }
+    }
   std::sort(row.begin(), row.end(),
             [](const Candidate& a, const Candidate& b) { return a.j < b.j; });
 }
@@ -163,9 +175,19 @@ std::vector<std::uint32_t> spheres_by_cell(const Spheres& s, const Domain3& doma
 void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& plates,
                        const Domain3& domain, double skin) {
   require(skin >= 0.0 && std::isfinite(skin), "the skin must be finite and >= 0 m");
-  for (std::size_t i = 0; i < s.size(); ++i) s.position[i] = domain.wrap(s.position[i], s.image[i]);
+  require(!domain.sheared() ||
+              (domain.periodic[0] && domain.periodic[1] && domain.shear_offset >= 0.0 &&
+               domain.shear_offset < domain.size().x),
+          "Lees-Edwards images need a box periodic in x and y and an offset in [0, L_x)");
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    int heights = 0;
+    s.position[i] = domain.wrap(s.position[i], s.image[i], &heights);
+    if (heights != 0 && s.is_free(i)) s.velocity[i].x -= heights * domain.shear_velocity;
+  }
   SphereList next;
   next.skin = skin;
+  next.box = domain.size();
+  next.shear_offset = domain.shear_offset;
   next.with_springs = list.with_springs;
   next.with_rolling = list.with_rolling;
   next.builds = list.builds + 1;
@@ -207,10 +229,26 @@ void build_sphere_list(SphereList& list, Spheres& s, const std::vector<Plane>& p
   list = std::move(next);
 }
 
-bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates) {
+double cell_reserve(const SphereList& list, const Domain3& domain, const Spheres& s) {
+  const Vec3 now = domain.size();
+  if (now.x == list.box.x && now.y == list.box.y && now.z == list.box.z &&
+      domain.shear_offset == list.shear_offset)
+    return 0.0;
+  double shrink = 1.0; // the smallest factor a side shrank by since the build
+  for (int k = 0; k < 3; ++k)
+    if (component(list.box, k) > 0.0)
+      shrink = std::min(shrink, component(now, k) / component(list.box, k));
+  return -std::log(shrink) * (2.0 * s.max_radius() + list.skin) +
+         std::abs(domain.shear_offset - list.shear_offset);
+}
+
+bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates,
+                   const Domain3& domain) {
   if (list.reference.size() != s.size() || list.plate_reference.size() != plates.size())
     return true;
-  const double limit2 = 0.25 * list.skin * list.skin;
+  const double limit = 0.5 * (list.skin - cell_reserve(list, domain, s));
+  if (limit <= 0.0) return true;
+  const double limit2 = limit * limit;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (!(norm2(s.position[i] - list.reference[i]) <= limit2)) return true;
   for (std::size_t w = 0; w < plates.size(); ++w) {

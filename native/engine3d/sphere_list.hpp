@@ -41,6 +41,8 @@ struct SphereList {
   std::vector<Vec3> plate_rolling;
   std::vector<Vec3> reference;            ///< sphere positions at the last build
   std::vector<PlatePose> plate_reference; ///< the plates' poses at the last build
+  Vec3 box{};                ///< the domain's size at the last build (a deforming cell changes it)
+  double shear_offset = 0.0; ///< the domain's Lees-Edwards offset at the last build
   double skin = 0.0;
   std::uint64_t builds = 0;
 
@@ -49,14 +51,19 @@ struct SphereList {
   /// none (a law without history).
   Vec3 spring_at(std::size_t e) const { return with_springs ? spring[e] : Vec3{}; }
   Vec3 plate_spring_at(std::size_t e) const { return with_springs ? plate_spring[e] : Vec3{}; }
+  /// Where entry's image of j is, less j.
   Vec3 offset(std::size_t entry, const Domain3& d) const {
-    const Vec3 l = d.size();
-    return {shift[entry].x * l.x, shift[entry].y * l.y, shift[entry].z * l.z};
+    return d.image_shift(shift[entry].x, shift[entry].y, shift[entry].z);
+  }
+  /// The velocity of entry's image of j less j's: the Lees-Edwards images' slide.
+  Vec3 image_velocity(std::size_t entry, const Domain3& d) const {
+    return {shift[entry].y * d.shear_velocity, 0.0, 0.0};
   }
 };
 
 /// Rebuilds the list with the given skin (m). Wraps positions into the domain along periodic
-/// axes first. Pairs of two spheres that are not free are left out. The springs (and rolling
+/// axes first (a sphere that crosses a Lees-Edwards side takes the images' slide off its
+/// velocity). Pairs of two spheres that are not free are left out. The springs (and rolling
 /// springs) of pairs still within reach are carried over, where the list keeps them. Throws
 /// InvalidArgument if a periodic axis is shorter than three interaction ranges (2 max radius +
 /// skin): a sphere would meet j through two images.
@@ -73,6 +80,16 @@ void index_second_entries(SphereList& list, std::size_t spheres);
 /// True when some sphere or some point of a plate near the spheres moved more than half the skin
 /// since the last build (a turned plate's points move by the turn times their distance from its
 /// centre, bounded by the farthest sphere's), or the spheres or plates are not those of the build.
-bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates);
+/// A box that shrank or a Lees-Edwards offset that moved since the build (a deforming cell,
+/// whose remap moves the build positions with the spheres) takes its share of the skin first
+/// (cell_reserve).
+bool list_is_stale(const SphereList& list, const Spheres& s, const std::vector<Plane>& plates,
+                   const Domain3& domain);
+
+/// How much closer a pair the list left out may have come through the cell's deformation since
+/// the build, m: -ln(the smallest side's shrink) times the reach plus skin (a pair left out was
+/// at least that apart; -ln bounds the sum of the steps' shrinks), plus the distance the
+/// Lees-Edwards images slid. 0 for a box as it was built.
+double cell_reserve(const SphereList& list, const Domain3& domain, const Spheres& s);
 
 } // namespace talus

@@ -29,6 +29,15 @@ template <class D, class F> void driver_fields(D& d, F&& f) {
 template <class S, class F> void servo_fields(S& s, F&& f) {
   f(s.plate, s.direction, s.force, s.max_speed, s.relaxation, s.displacement, s.speed);
 }
+// Version 5's: the deforming cell with its state, the Lees-Edwards images and the box and offset
+// of the list's build (its drift test's reserve for the cell).
+template <class C, class F> void cell_fields(C& c, F&& f) {
+  f(c.strain_rate, c.pressure, c.max_strain_rate, c.relaxation, c.rate, c.strain, c.shear_rate,
+    c.shear_strain);
+}
+template <class D, class L, class F> void shear_fields(D& d, L& l, F&& f) {
+  f(d.shear_offset, d.shear_velocity, l.box, l.shear_offset);
+}
 template <class C, class F> void settings_fields(C& c, F&& f) {
   f(c.timestep, c.normal_law, c.tangential_law, c.verlet_velocity, c.skin, c.impact_speed,
     c.lever_arm, c.linear_damping, c.max_overlap_fraction, c.threads);
@@ -68,6 +77,9 @@ void write_state(Writer& w, const SimulationState3& st) {
   w.pod<std::uint64_t>(sc.servos.size());
   for (const PlateServo& servo : sc.servos)
     servo_fields(servo, [&](const auto&... v) { write_fields(w, v...); });
+  write_fields(w, sc.cell.has_value());
+  if (sc.cell) cell_fields(*sc.cell, [&](const auto&... v) { write_fields(w, v...); });
+  shear_fields(sc.domain, st.list, [&](const auto&... v) { write_fields(w, v...); });
 }
 
 // Every array read is checked against the others, and every index against what it points
@@ -143,6 +155,14 @@ SimulationState3 read_state(Reader& r, std::uint32_t version) {
     sc.servos.resize(r.count(sizeof(std::uint32_t)));
     for (PlateServo& servo : sc.servos)
       servo_fields(servo, [&](auto&... v) { read_fields(r, v...); });
+  }
+  if (version >= 5) { // an older run had no cell: its list's box is the domain's
+    bool cell = false;
+    read_fields(r, cell);
+    if (cell) cell_fields(sc.cell.emplace(), [&](auto&... v) { read_fields(r, v...); });
+    shear_fields(sc.domain, st.list, [&](auto&... v) { read_fields(r, v...); });
+  } else {
+    st.list.box = sc.domain.size();
   }
   check_state(r, st);
   return st;

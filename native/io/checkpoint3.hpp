@@ -18,7 +18,7 @@ struct Checkpoint3 {
 
 /// The format written (read: this one only, for now).
 /// 2: rolling springs and Gear; 3: the renumbering interval; 4: the servos
-inline constexpr std::uint32_t checkpoint3_version = 4;
+inline constexpr std::uint32_t checkpoint3_version = 5;
 
 /// The bytes of a 3D checkpoint file.
 std::string encode_checkpoint3(const Checkpoint3& c);

@@ -200,6 +200,12 @@ void check_lammps_export(const Scenario3& s) {
       return "key 'geometry.rough_floor': the case does not freeze glued spheres yet; allowed: "
              "false";
     for (std::size_t k = 0; k < s.drivers.size(); ++k)
+      if (s.drivers[k].cell)
+        return "key 'drivers." + std::to_string(k) +
+               ".type': the case does not write a deforming cell in 3D yet (LAMMPS' own are fix "
+               "deform with remap x, and a triclinic box sheared by fix deform xy erate with "
+               "remap v: docs/lammps.md); allowed: vibrate, translate, rotate";
+    for (std::size_t k = 0; k < s.drivers.size(); ++k)
       if (s.drivers[k].servo)
         return "key 'drivers." + std::to_string(k) +
                ".type': a servo plate has no fix granthesis/wall motion (LAMMPS holds a load with "

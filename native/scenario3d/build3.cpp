@@ -79,7 +79,7 @@ std::vector<PlateDriver> plate_drivers(const Scenario3& s) {
   std::vector<PlateDriver> out;
   for (const Driver3Section& d : s.drivers)
     for (const std::uint32_t plate : box3_target(s.geometry, d.target)) {
-      if (d.servo) continue;
+      if (d.servo || d.cell) continue;
       out.push_back({.plate = plate,
                      .motion = d.motion,
                      .velocity = d.velocity,
@@ -147,6 +147,13 @@ BuiltScenario3 build_scenario3(const Scenario3& s) {
   scene.plates = box_plates(s.geometry, wall);
   scene.drivers = plate_drivers(s);
   scene.servos = plate_servos(s);
+  for (const Driver3Section& d : s.drivers)
+    if (d.cell)
+      scene.cell = CellOf<Vec3>{.strain_rate = d.strain_rate,
+                                .pressure = d.pressure,
+                                .max_strain_rate = d.max_strain_rate,
+                                .relaxation = d.relaxation,
+                                .shear_rate = d.shear_rate};
   RandomStream sizes(s.simulation.seed, 1), places(s.simulation.seed, 2);
   const auto [r_min, r_max] = radius_range(s.particles.size);
   RandomStream base(s.simulation.seed, 3);

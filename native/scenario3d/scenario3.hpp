@@ -58,6 +58,7 @@ struct Box3Section {
 /// where it stands at the run's start (talus/plate.hpp moves it).
 struct Driver3Section {
   bool servo = false; ///< a servo holding its plate at a load (the keys below); else `motion`
+  bool cell = false;  ///< the periodic box deforming (engine3d/cell3.hpp; no target); else above
   PlateDriver::Motion motion = PlateDriver::Motion::translate;
   std::string target = "walls";  ///< "walls" (every plate) or one side: box3_sides() names them
   double amplitude = 0.0;        ///< vibrate: m
@@ -70,7 +71,11 @@ struct Driver3Section {
   double force = 0.0;            ///< servo: N, the load wanted (or 0 with a stress)
   double stress = 0.0;           ///< servo: Pa, the load per area of the box's face (or 0)
   double max_speed = 0.0;        ///< servo: m/s, its fastest either way (simulation.impact_speed)
-  double relaxation = 0.5;       ///< servo: the fraction of the error closed per step
+  double relaxation = 0.5;       ///< servo, cell: the fraction of the error closed per step
+  Vec3 strain_rate{};            ///< cell: 1/s, the true strain rate of each side
+  double pressure = 0.0;         ///< cell: Pa, the mean stress held (sheared: sigma_yy), or 0
+  double max_strain_rate = 0.0;  ///< cell: 1/s, the pressure mode's fastest rate
+  double shear_rate = 0.0;       ///< cell: 1/s, dv_x/dy of the images across y (Lees-Edwards)
 };
 
 /// A box of space [lo, hi), m.

@@ -114,8 +114,8 @@ TEST(Drivers3, WhatADriverCannotDoIsRefusedByKey) {
        {"geometry.periodic=x"});
   says(std::string(shaken_floor) + "[[drivers]]\ntype = 'translate'\n",
        "'drivers.1.target': the floor is moved by drivers.0 already");
-  says("[[drivers]]\ntype = 'cell'\n", "a cell driver is not there yet in 3D");
-  says("[[drivers]]\ntype = 'cell'\n", "a cell driver is not there yet in 3D");
+  says("[[drivers]]\ntype = 'cell'\nshear_rate = 1.0\n",
+       "'drivers.0.type': a deforming cell needs a box with no plates");
   says("[[drivers]]\ntype = 'shake'\n", "'shake' is not one of the allowed values");
   says("[[drivers]]\ntype = 'translate'\namplitude = 1e-3\n",
        "'drivers.0.amplitude': only a vibrate driver has it (this one is translate)");

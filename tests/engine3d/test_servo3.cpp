@@ -125,7 +125,7 @@ TEST(Servo3, TheScenarioKeysAreReadOrRefusedByName) {
   says("{type='servo', target='lid', force=1.0, max_speed=0.0}", "> 0 m/s");
   says("{type='servo', target='lid', force=1.0, direction=[0, 0, 1]}", "only a vibrate driver");
   says("{type='vibrate', target='lid', force=1.0}", "only a servo driver");
-  says("{type='cell'}", "a cell driver is not there yet in 3D");
+  says("{type='cell'}", "a cell needs strain_rate = [x, y, z] (1/s), pressure (Pa)");
   EXPECT_THROW(check_lammps_export(pressed_bed()), InvalidArgument);
 }
 

@@ -1,5 +1,6 @@
-// The 3D Verlet list against brute force: every pair within reach through every periodic image,
-// none more, and the springs of pairs still within reach carried over a rebuild.
+// The 3D Verlet list against brute force: every pair within reach through every periodic image
+// (the Lees-Edwards images too, offset along x across y), none more, and the springs of pairs
+// still within reach carried over a rebuild.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -31,15 +32,18 @@ using Entry = std::tuple<std::uint32_t, std::uint32_t, int, int, int>;
 
 std::set<Entry> brute_force(const Spheres& s, const Domain3& d, double skin) {
   std::set<Entry> out;
-  const Vec3 l = d.size();
-  const auto images = [&](int k) { return d.periodic[static_cast<std::size_t>(k)] ? 1 : 0; };
+  // across a Lees-Edwards side the images along x are an offset further: two widths each way
+  const auto images = [&](int k) {
+    if (!d.periodic[static_cast<std::size_t>(k)]) return 0;
+    return k == 0 && d.shear_offset != 0.0 ? 2 : 1;
+  };
   for (std::uint32_t i = 0; i < s.size(); ++i)
     for (std::uint32_t j = i + 1; j < s.size(); ++j) {
       if (!s.is_free(i) && !s.is_free(j)) continue;
       for (int sx = -images(0); sx <= images(0); ++sx)
         for (int sy = -images(1); sy <= images(1); ++sy)
           for (int sz = -images(2); sz <= images(2); ++sz) {
-            const Vec3 image = s.position[j] + Vec3{sx * l.x, sy * l.y, sz * l.z};
+            const Vec3 image = s.position[j] + d.image_shift(sx, sy, sz);
             const double reach = s.radius[i] + s.radius[j] + skin;
             if (norm2(s.position[i] - image) < reach * reach) out.insert({i, j, sx, sy, sz});
           }
@@ -75,6 +79,31 @@ INSTANTIATE_TEST_SUITE_P(Axes, SphereListImages,
                                            std::array<bool, 3>{true, false, false},
                                            std::array<bool, 3>{false, false, true},
                                            std::array<bool, 3>{true, true, true}));
+
+// Offsets that put a row of cells across y anywhere between two columns of cells, or nearly a
+// width along.
+class SphereListLeesEdwards : public ::testing::TestWithParam<double> {};
+
+TEST_P(SphereListLeesEdwards, HoldsEveryPairWithinReachThroughTheSlidingImages) {
+  std::mt19937 rng(5);
+  Spheres s = random_spheres(400, rng);
+  Domain3 d{.lo = {0.0, 0.0, 0.0},
+            .hi = {box, box, box},
+            .periodic = {true, true, GetParam() > 0.5},
+            .shear_offset = GetParam() * box};
+  SphereList list;
+  const double skin = 0.3e-3;
+  build_sphere_list(list, s, {}, d, skin);
+  const std::set<Entry> expected = brute_force(s, d, skin);
+  std::size_t across = 0; // pairs through the sliding images
+  for (const Entry& e : expected) across += std::get<3>(e) != 0 ? 1 : 0;
+  EXPECT_GT(across, 20u);
+  EXPECT_EQ(listed(list), expected);
+  EXPECT_EQ(list.pair_count(), expected.size()); // no entry twice
+}
+
+INSTANTIATE_TEST_SUITE_P(Offsets, SphereListLeesEdwards,
+                         ::testing::Values(0.013, 0.3, 0.5 + 1e-9, 0.77, 0.999));
 
 TEST(SphereList, CarriesTheSpringsOfPairsStillWithinReach) {
   std::mt19937 rng(11);

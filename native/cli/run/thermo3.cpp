@@ -1,5 +1,6 @@
 #include "cli/run/thermo3.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include <fmt/format.h>
@@ -7,6 +8,7 @@
 #include "analysis/energy_ledger3.hpp"
 #include "analysis/stress3.hpp"
 #include "analysis/structure3.hpp"
+#include "engine3d/cell3.hpp"
 #include "scenario3d/box3.hpp"
 
 namespace talus::cli {
@@ -49,6 +51,7 @@ Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
   for (const Driver3Section& d : s.drivers)
     if (d.servo) servo_names_.push_back(d.target);
   fixed_spheres_ = s.geometry.rough_floor;
+  cell_ = std::ranges::any_of(s.drivers, [](const Driver3Section& d) { return d.cell; });
   if (s.output.stress) {
     regions_.emplace_back("",
                           s.output.stress_region.value_or(Region3{s.geometry.lo, s.geometry.hi}));
@@ -80,6 +83,9 @@ std::string Thermo3::header() const {
     head += fmt::format(",force_{0}_x,force_{0}_y,force_{0}_z", name);
   if (fixed_spheres_) head += ",force_fixed_x,force_fixed_y,force_fixed_z";
   for (const std::string& name : servo_names_) head += ",servo_" + name + "_displacement";
+  if (cell_)
+    head += ",cell_x,cell_y,cell_z,cell_strain_rate_x,cell_strain_rate_y,cell_strain_rate_z,"
+            "cell_shear_rate,cell_shear_strain";
   if (ledger_) head += ledger_thermo_header;
   for (const auto& [prefix, region] : regions_) {
     head += stress_thermo_header(prefix);
@@ -105,6 +111,11 @@ std::string Thermo3::row(const Simulation3& sim, double collision_time) {
   }
   for (const PlateServo& servo : sim.scene().servos)
     out += fmt::format(",{:.9e}", servo.displacement);
+  if (const auto& c = sim.scene().cell) {
+    const Vec3 size = sim.scene().domain.size(), rate = cell_strain_rate(*c);
+    out += fmt::format(",{:.9e},{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.9e}", size.x, size.y,
+                       size.z, rate.x, rate.y, rate.z, c->shear_rate, c->shear_strain);
+  }
   if (ledger_) {
     const LedgerRow l = ledger_row(*ledger_, e);
     if (l.growth > ledger_growth_limit)
@@ -117,6 +128,8 @@ std::string Thermo3::row(const Simulation3& sim, double collision_time) {
     for (std::size_t k = 0; k < regions_.size(); ++k) {
       Region3 region = regions_[k].second;
       if (k == 0 && follows_servos_) region = up_to_servo_plates(sim, region);
+      if (k == 0 && follows_servos_ && cell_) // the box as the cell has made it
+        region = {sim.scene().domain.lo, sim.scene().domain.hi};
       out += region_columns(sim, region, needed);
     }
   }

@@ -1,5 +1,6 @@
 #include "scenario/file/load3.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -82,14 +83,40 @@ void read_geometry(TableReader& r, Box3Section& g) {
 
 // A [[drivers]] entry's keys: its motion's own, the others refused naming the motion that has
 // them. Its target is checked against the box by check_targets.
+// A cell's keys (as 2D's, scenario/file/driver_keys.cpp, on three axes): a strain rate, or a
+// pressure with its fastest rate, and a shear rate; no target (it moves the periodic box).
+void read_cell3(TableReader& r, Driver3Section& d) {
+  if (r.has("target"))
+    r.fail("target", "a cell driver moves the periodic box and every sphere with it: no target");
+  d.target = "";
+  d.strain_rate = vec3(r, "strain_rate", d.strain_rate);
+  d.pressure = r.number("pressure", 0.0, 1e-300, inf, "> 0 Pa");
+  d.max_strain_rate = r.number("max_strain_rate", 0.0, 1e-300, inf, "> 0 1/s");
+  d.shear_rate = r.number("shear_rate", 0.0, -inf, inf, "1/s");
+  d.relaxation = r.number("relaxation", d.relaxation, 1e-9, 1.0, "in (0, 1]");
+  if (r.has("strain_rate") && r.has("pressure"))
+    r.fail("strain_rate", "a cell takes strain_rate = [x, y, z] (1/s) or pressure (Pa), not both");
+  if (!r.has("strain_rate") && !r.has("pressure") && !r.has("shear_rate"))
+    r.fail("strain_rate",
+           "a cell needs strain_rate = [x, y, z] (1/s), pressure (Pa) or shear_rate (1/s)");
+  if (r.has("shear_rate") && d.strain_rate.x != 0.0)
+    r.fail("strain_rate", "a sheared cell keeps its width: strain_rate = [0, y, z]");
+  if (r.has("pressure") && !r.has("max_strain_rate"))
+    r.fail("max_strain_rate", "a cell held at a pressure needs it: its fastest strain rate, 1/s "
+                              "(slow enough for the spheres to follow: a quasi-static "
+                              "compression)");
+  if (!r.has("pressure") && r.has("max_strain_rate"))
+    r.fail("max_strain_rate", "only a cell held at a pressure has it");
+  if (!r.has("pressure") && r.has("relaxation"))
+    r.fail("relaxation", "only a cell held at a pressure has it (or a servo)");
+}
+
 Driver3Section read_driver3(TableReader& r, double impact_speed) {
   Driver3Section d;
   const std::string type =
       r.choice("type", "", {"vibrate", "translate", "rotate", "servo", "cell"});
-  if (type == "cell")
-    r.fail("type", "a cell driver" + std::string(not_in_3d) +
-                       "; allowed: vibrate, translate, rotate, servo");
   d.servo = type == "servo";
+  d.cell = type == "cell";
   using Motion = PlateDriver::Motion;
   d.motion =
       type == "vibrate" ? Motion::vibrate : (type == "rotate" ? Motion::rotate : Motion::translate);
@@ -102,7 +129,11 @@ Driver3Section read_driver3(TableReader& r, double impact_speed) {
   only({"amplitude", "frequency", "phase", "direction"}, "vibrate");
   only({"velocity"}, "translate");
   only({"centre", "angular_velocity"}, "rotate");
-  only({"force", "stress", "max_speed", "relaxation"}, "servo");
+  only({"force", "stress", "max_speed"}, "servo");
+  only({"strain_rate", "pressure", "max_strain_rate", "shear_rate"}, "cell");
+  if (!d.servo && !d.cell && r.has("relaxation"))
+    r.fail("relaxation", "only a servo or cell driver has it (this one is " + type + ")");
+  if (d.cell) read_cell3(r, d);
   if (d.servo) {
     if (r.has("force") == r.has("stress"))
       r.fail("force", "a servo needs one target: force (N) or stress (Pa), not both");
@@ -126,8 +157,18 @@ Driver3Section read_driver3(TableReader& r, double impact_speed) {
 void check_targets(TableReader& top, const Scenario3& s) {
   std::vector<int> driver_of(box3_sides(s.geometry).size(), -1);
   const std::vector<const toml::table*> tables = top.tables("drivers");
+  int cell = -1;
   for (std::size_t k = 0; k < s.drivers.size(); ++k) {
     TableReader r(*tables[k], top.file(), "drivers." + std::to_string(k));
+    if (s.drivers[k].cell) {
+      if (cell >= 0)
+        r.fail("type", "drivers." + std::to_string(cell) + " is a cell already; the box has one");
+      if (!box3_sides(s.geometry).empty())
+        r.fail("type", "a deforming cell needs a box with no plates (they do not follow it): "
+                       "geometry.periodic = \"xyz\"");
+      cell = static_cast<int>(k);
+      continue;
+    }
     const std::vector<std::uint32_t> plates = box3_target(s.geometry, s.drivers[k].target);
     if (s.drivers[k].servo && s.drivers[k].target == "walls") {
       std::string sides;
@@ -188,6 +229,11 @@ Scenario3 load_root(const toml::table& root, const std::string& file) {
   }
   check_targets(top, s);
   section(top, "output", file, [&](TableReader& r) { read_output(r, s.output); });
+  if (s.output.energy_ledger &&
+      std::ranges::any_of(s.drivers, [](const auto& d) { return d.cell; }))
+    top.fail("output.energy_ledger",
+             "the ledger has no term yet for the work a deforming cell's strain and sliding "
+             "images do; allowed: false with a cell driver");
   for (const char* name : {"packing", "track", "frost", "stages"})
     if (top.has(name)) top.fail(name, std::string("[") + name + "]" + not_in_3d);
   top.finish();
@@ -207,6 +253,19 @@ toml::array vec(const Vec3& v) {
 // A driver with its motion's keys alone, as read_driver takes them.
 toml::table driver_table(const Driver3Section& d) {
   using Motion = PlateDriver::Motion;
+  if (d.cell) {
+    toml::table t{{"type", "cell"}};
+    if (d.pressure > 0.0) {
+      t.insert("pressure", d.pressure);
+      t.insert("max_strain_rate", d.max_strain_rate);
+      t.insert("relaxation", d.relaxation);
+    } else if (d.strain_rate.x != 0.0 || d.strain_rate.y != 0.0 || d.strain_rate.z != 0.0 ||
+               d.shear_rate == 0.0) {
+      t.insert("strain_rate", vec(d.strain_rate));
+    }
+    if (d.shear_rate != 0.0) t.insert("shear_rate", d.shear_rate);
+    return t;
+  }
   if (d.servo) {
     toml::table t{{"type", "servo"},
                   {"target", d.target},
