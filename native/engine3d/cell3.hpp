@@ -44,8 +44,9 @@ void reduce_shear_offset(Domain3& d);
 /// stress, a third of the trace of the contact and kinetic stress over the box, and its
 /// stiffness against an isotropic strain, (1/(3V)) sum_c k_c |d_c|^2; sheared, the normal stress
 /// across the shear, sigma_yy = (1/V)(sum_c F_y d_y + sum m u_y^2), and its stiffness against a
-/// strain of y alone, (1/V) sum_c k_c d_y^4 / |d_c|^2. Compression positive, Pa.
+/// strain of y alone, (1/V) sum_c k_c d_y^4 / |d_c|^2. Compression positive, Pa. The same bits
+/// for any thread count.
 CellReading cell_reading(const Cell3& c, const Scene3& scene, const SphereList& list,
-                         const PairTable& table, const Settings3& settings);
+                         const PairTable& table, const Settings3& settings, int threads);
 
 } // namespace talus

@@ -30,25 +30,32 @@ void for_each_plate_contact_of(const Scene3& scene, const SphereList& list, cons
   }
 }
 
+/// Calls on_pair(i, e, j, geometry, parameters) for the touching pair entries e of sphere i's row.
+template <class OnPair>
+void for_each_pair_contact_of(const Scene3& scene, const SphereList& list, const PairTable& table,
+                              LeverShares shares, std::uint32_t i, OnPair& on_pair) {
+  const Spheres& s = scene.spheres;
+  for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
+    const std::uint32_t j = list.neighbour[e];
+    const Vec3 d = s.position[i] - (s.position[j] + list.offset(e, scene.domain));
+    const double reach = s.radius[i] + s.radius[j];
+    const double dist2 = norm2(d);
+    if (dist2 >= reach * reach || dist2 == 0.0) continue;
+    const ContactGeometry3 g =
+        pair_geometry(d, std::sqrt(dist2), s.radius[i], s.radius[j], s.mass[i], s.mass[j],
+                      s.velocity[i], s.velocity[j] + list.image_velocity(e, scene.domain),
+                      s.angular_velocity[i], s.angular_velocity[j], true, shares);
+    on_pair(i, e, j, g, table(s.material[i], s.material[j]));
+  }
+}
+
 /// Calls on_pair(i, e, j, geometry, parameters) for every touching pair entry e of the list, in
 /// row order, then on_plate(i, e, plate, geometry, parameters) for sphere i's touching plates.
 template <class OnPair, class OnPlate>
 void for_each_contact3(const Scene3& scene, const SphereList& list, const PairTable& table,
                        LeverShares shares, OnPair&& on_pair, OnPlate&& on_plate) {
-  const Spheres& s = scene.spheres;
-  for (std::uint32_t i = 0; i < s.size(); ++i) {
-    for (std::uint32_t e = list.row_offset[i]; e < list.row_offset[i + 1]; ++e) {
-      const std::uint32_t j = list.neighbour[e];
-      const Vec3 d = s.position[i] - (s.position[j] + list.offset(e, scene.domain));
-      const double reach = s.radius[i] + s.radius[j];
-      const double dist2 = norm2(d);
-      if (dist2 >= reach * reach || dist2 == 0.0) continue;
-      const ContactGeometry3 g =
-          pair_geometry(d, std::sqrt(dist2), s.radius[i], s.radius[j], s.mass[i], s.mass[j],
-                        s.velocity[i], s.velocity[j] + list.image_velocity(e, scene.domain),
-                        s.angular_velocity[i], s.angular_velocity[j], true, shares);
-      on_pair(i, e, j, g, table(s.material[i], s.material[j]));
-    }
+  for (std::uint32_t i = 0; i < scene.spheres.size(); ++i) {
+    for_each_pair_contact_of(scene, list, table, shares, i, on_pair);
     for_each_plate_contact_of(scene, list, table, shares, i, on_plate);
   }
 }

@@ -200,15 +200,12 @@ template <class N, class T, bool Rotation, class L>
     const L ri = lanes_from<L>(each(s.radius)), rj = lanes_from<L>(each_j(s.radius));
     const Vec3Of<L> d = vec3_lanes_from<L>(
         [&](int k) { return found[t + static_cast<std::size_t>(std::min(k, live - 1))].d; });
+    Vec3Of<L> v_j = vec3_lanes_from<L>(each_j(s.velocity));
+    if (b.slide != 0.0) [[unlikely]] // Lees-Edwards images slide: once for the lanes
+      v_j.x += lanes_from<L>([&](int k) { return list.shift[entry[k]].y * b.slide; });
     const ContactGeometry3Of<L> g =
         pair_geometry(d, square_root(dot(d, d)), ri, rj, lanes_from<L>(each(s.mass)),
-                      lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)),
-                      vec3_lanes_from<L>([&](int k) {
-                        Vec3 v = s.velocity[j[k]];
-                        if (b.slide != 0.0) [[unlikely]] // a Lees-Edwards image slides
-                          v.x += list.shift[entry[k]].y * b.slide;
-                        return v;
-                      }),
+                      lanes_from<L>(each_j(s.mass)), vec3_lanes_from<L>(each(s.velocity)), v_j,
                       vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, i[k]); }),
                       vec3_lanes_from<L>([&](int k) { return spin_of<Rotation>(s, j[k]); }),
                       N::uses_r_eff || T::uses_r_eff || list.with_rolling, shares);

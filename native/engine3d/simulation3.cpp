@@ -239,7 +239,8 @@ void Simulation3::rebuild_list() {
 void Simulation3::drive_cell() {
   if (!scene_.cell || scene_.cell->pressure <= 0.0) return;
   Cell3& c = *scene_.cell;
-  c.rate = cell_rate(c, cell_reading(c, scene_, list_, table_, settings_), settings_.timestep);
+  c.rate =
+      cell_rate(c, cell_reading(c, scene_, list_, table_, settings_, threads_), settings_.timestep);
 }
 
 // Each servo reads its plate after the force pass: the spheres' push against its direction and
