@@ -100,20 +100,19 @@ RegionStress3 region_stress(const Simulation3& sim, Vec3 lo, Vec3 hi) {
   // the flow there until the list's build wraps both
   const Spheres& s = sim.scene().spheres;
   const double shear = sim.scene().cell ? sim.scene().cell->shear_rate : 0.0;
-  const auto height = [&](std::size_t i) { return s.position[i].y; };
   double mass = 0.0, y_sum = 0.0;
   Vec3 momentum{};
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.is_free(i) && inside(sim, i, lo, hi)) {
       mass += s.mass[i], momentum += s.mass[i] * s.velocity[i], ++out.spheres;
-      if (shear != 0.0) y_sum += s.mass[i] * height(i);
+      if (shear != 0.0) y_sum += s.mass[i] * s.position[i].y;
     }
   const Vec3 mean = mass > 0.0 ? (1.0 / mass) * momentum : Vec3{};
   const double y_mean = mass > 0.0 ? y_sum / mass : 0.0;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.is_free(i) && inside(sim, i, lo, hi)) {
       Vec3 u = s.velocity[i] - mean;
-      if (shear != 0.0) u.x -= shear * (height(i) - y_mean);
+      if (shear != 0.0) u.x -= shear * (s.position[i].y - y_mean);
       out.kinetic += s.mass[i] * outer(u, u);
     }
   if (out.volume > 0.0) out.contact /= out.volume, out.kinetic /= out.volume;

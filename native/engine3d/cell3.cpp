@@ -59,17 +59,15 @@ void set_shear_velocity(const Cell3* c, Domain3& d) {
   d.shear_velocity = c == nullptr ? 0.0 : c->shear_rate * d.size().y;
 }
 
-void deform_cell(Cell3& c, Domain3& d, Spheres& s, SphereList& list, double dt, int threads) {
-  const Vec3 rate = cell_strain_rate(c);
-  c.strain += dt * rate;
-  set_shear_velocity(&c, d);
-  d.shear_offset += d.shear_velocity * dt;
-  c.shear_strain += c.shear_rate * dt;
-  if (rate.x == 0.0 && rate.y == 0.0 && rate.z == 0.0) return; // a shear alone moves no sphere
+namespace {
+
+// The box's sides by exp(rate dt) about its lower corner, every sphere and its build position
+// with it.
+void strain_box(Domain3& d, Spheres& s, SphereList& list, const Vec3& rate, double dt,
+                int threads) {
   const Vec3 f{std::exp(rate.x * dt), std::exp(rate.y * dt), std::exp(rate.z * dt)};
   const Vec3 lo = d.lo, size = d.size();
   d.hi = lo + Vec3{size.x * f.x, size.y * f.y, size.z * f.z};
-  set_shear_velocity(&c, d); // with the height after the strain
   const auto scale = [&](const Vec3& r) {
     const Vec3 b = r - lo;
     return lo + Vec3{b.x * f.x, b.y * f.y, b.z * f.z};
@@ -82,6 +80,18 @@ void deform_cell(Cell3& c, Domain3& d, Spheres& s, SphereList& list, double dt, 
     s.position[i] = scale(s.position[i]);
     if (same) list.reference[i] = scale(list.reference[i]);
   }
+}
+
+} // namespace
+
+void deform_cell(Cell3& c, Domain3& d, Spheres& s, SphereList& list, double dt, int threads) {
+  const Vec3 rate = cell_strain_rate(c);
+  c.strain += dt * rate;
+  if (rate.x != 0.0 || rate.y != 0.0 || rate.z != 0.0) // a shear alone moves no sphere
+    strain_box(d, s, list, rate, dt, threads);
+  set_shear_velocity(&c, d); // with the height after the strain
+  d.shear_offset += d.shear_velocity * dt;
+  c.shear_strain += c.shear_rate * dt;
 }
 
 void reduce_shear_offset(Domain3& d) {

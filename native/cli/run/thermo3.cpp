@@ -55,7 +55,7 @@ Thermo3::Thermo3(const Scenario3& s, const std::vector<double>& ledger_state) {
   if (s.output.stress) {
     regions_.emplace_back("",
                           s.output.stress_region.value_or(Region3{s.geometry.lo, s.geometry.hi}));
-    follows_servos_ = !s.output.stress_region;
+    default_region_ = !s.output.stress_region;
     for (const StressRegion3& r : s.output.stress_regions)
       regions_.emplace_back(r.name + "_", r.region);
   }
@@ -127,9 +127,9 @@ std::string Thermo3::row(const Simulation3& sim, double collision_time) {
     const int needed = contacts_needed(sim);
     for (std::size_t k = 0; k < regions_.size(); ++k) {
       Region3 region = regions_[k].second;
-      if (k == 0 && follows_servos_) region = up_to_servo_plates(sim, region);
-      if (k == 0 && follows_servos_ && cell_) // the box as the cell has made it
-        region = {sim.scene().domain.lo, sim.scene().domain.hi};
+      if (k == 0 && default_region_) // the box as the cell has made it, or up to the servos
+        region = cell_ ? Region3{sim.scene().domain.lo, sim.scene().domain.hi}
+                       : up_to_servo_plates(sim, region);
       out += region_columns(sim, region, needed);
     }
   }

@@ -31,9 +31,8 @@ private:
   std::vector<std::string> plate_names_; // the box's sides, the scene's plates' order
   std::vector<std::string> servo_names_; // the servos' sides, the scene's servos' order
   bool fixed_spheres_ = false;           // a rough floor's: the force on them all
-  bool cell_ = false; // a deforming cell's columns; the default region follows it
-  bool follows_servos_ =
-      false; // the default stress region: sides at the servo plates (or the cell)
+  bool cell_ = false;           // a deforming cell's columns; the default region follows it
+  bool default_region_ = false; // the first region is the default: it follows servos or the cell
   std::vector<std::pair<std::string, Region3>> regions_; // column prefix, region
 };
 
