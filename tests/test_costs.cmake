@@ -8,4 +8,5 @@ set_tests_properties(FrostFront.WithoutStonesTheSurfaceComesBackAndTheFinesStay
                      ServoWall.HoldsTheLoadItIsAskedAndTheFloorCarriesItWithTheWeight
                      ServoWall.AResumedRunIsTheWholeRun StageChanges.AGateRemovedOpensTheOrifice
                      CoarseGrain.ASettledBedsStressIsTheWeightAbove
+                     CoarseGrain3.ASettledBedsStressIsTheWeightAbove
                      Stress.ASettledBedsStressIsItsWeightTimesItsHeight PROPERTIES COST 20)

@@ -5,8 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "engine3d/contact_visit3.hpp"
-#include "talus/law_table.hpp"
+#include "analysis/contact_forces3.hpp"
 
 namespace talus {
 
@@ -29,34 +28,23 @@ bool inside(const Simulation3& sim, std::size_t i, const Vec3& lo, const Vec3& h
 
 // Every contact's force on a sphere with its branch, as on_side(i, f, l) (a pair calls it for
 // both spheres, a plate for its sphere), and on_pair(i, j, n) once for each sphere-sphere
-// contact. The forces are those the laws give in the state as it is.
+// contact.
 template <class OnSide, class OnPair>
 void visit_contact_forces(const Simulation3& sim, OnSide&& on_side, OnPair&& on_pair) {
-  const Scene3& scene = sim.scene();
-  const Spheres& s = scene.spheres;
-  const SphereList& list = sim.list();
-  const Settings3& c = sim.settings();
-  with_contact_law(c.normal_law, c.tangential_law, [&]<class N, class T>() {
-    for_each_contact3(
-        scene, list, sim.table(), lever_shares(c.lever_arm),
-        [&](std::uint32_t i, std::uint32_t e, std::uint32_t j, const ContactGeometry3& g,
-            const PairParameters& p) {
-          Vec3 history = list.spring_at(e); // a copy: looking must not advance it
-          const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
-          // the middle of the overlap, from each centre
-          const double half = 0.5 * g.overlap;
-          on_side(i, f, -(s.radius[i] - half) * g.normal);
-          on_side(j, -f, (s.radius[j] - half) * g.normal);
-          on_pair(i, j, g.normal);
-        },
-        [&](std::uint32_t i, std::uint32_t e, std::uint32_t, const ContactGeometry3& g,
-            const PairParameters& p) {
-          Vec3 history = list.plate_spring_at(e);
-          const Vec3 f = contact_force<N, T>(p, g, history, 0.0).force;
-          // the plate's point, nearest the centre
-          on_side(i, f, -(s.radius[i] - g.overlap) * g.normal);
-        });
-  });
+  const Spheres& s = sim.scene().spheres;
+  visit_contact_forces3(
+      sim,
+      [&](std::uint32_t i, std::uint32_t j, const ContactGeometry3& g, const Vec3& f) {
+        // the middle of the overlap, from each centre
+        const double half = 0.5 * g.overlap;
+        on_side(i, f, -(s.radius[i] - half) * g.normal);
+        on_side(j, -f, (s.radius[j] - half) * g.normal);
+        on_pair(i, j, g.normal);
+      },
+      [&](std::uint32_t i, std::uint32_t, const ContactGeometry3& g, const Vec3& f) {
+        // the plate's point, nearest the centre
+        on_side(i, f, -(s.radius[i] - g.overlap) * g.normal);
+      });
 }
 
 // The contact part and the fabric of the spheres in [lo, hi).

@@ -48,57 +48,35 @@ std::string vtp_particles(const Simulation& sim, bool stress) {
 
 namespace {
 
-// A PolyData of n straight lines: `cells` writes the CellData arrays, `end(k, second)` gives the
-// first or second end point of line k.
-template <class Cells, class End>
-std::string line_polydata(std::size_t n, const char* scalars, Cells cells, End end) {
-  std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
-                    "byte_order=\"LittleEndian\">\n  <PolyData>\n";
-  out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfLines=\"{}\">\n", 2 * n, n);
-  out +=
-      *scalars ? fmt::format("      <CellData Scalars=\"{}\">\n", scalars) : "      <CellData>\n";
-  cells(out);
-  out += "      </CellData>\n      <Points>\n";
-  array(out, "position", 3, 2 * n, [&](std::size_t k) {
-    const Vec2 v = end(k / 2, k % 2 == 1);
+// A line's end as VTK's three coordinates, z = 0.
+template <class End> auto end_text(End end) {
+  return [end](std::size_t k, bool second) {
+    const Vec2 v = end(k, second);
     return fmt::format("{:.12g} {:.12g} 0", v.x, v.y);
-  });
-  out += "      </Points>\n      <Lines>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t k = 0; k < 2 * n; ++k) out += fmt::format("{}\n", k);
-  out += "        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" "
-         "format=\"ascii\">\n";
-  for (std::size_t k = 0; k < n; ++k) out += fmt::format("{}\n", 2 * (k + 1));
-  out += "        </DataArray>\n      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
-  return out;
+  };
 }
 
 } // namespace
 
 std::string vtp_walls(const Simulation& sim) {
   const Segments& w = sim.world().walls;
-  return line_polydata(
+  return vtk_detail::line_polydata(
       w.size(), "",
       [&](std::string& out) {
         array(out, "force", 3, w.size(), [&](std::size_t s) {
           return fmt::format("{:.9g} {:.9g} 0", w[s].force.x, w[s].force.y);
         });
       },
-      [&](std::size_t s, bool second) { return second ? w[s].b : w[s].a; });
+      end_text([&](std::size_t s, bool second) { return second ? w[s].b : w[s].a; }));
 }
 
 std::string vtp_contacts(const Simulation& sim) {
   const std::vector<ContactRecord> c = contact_forces(sim);
   const Particles& p = sim.world().particles;
-  return line_polydata(
+  return vtk_detail::line_polydata(
       c.size(), "normal_force",
       [&](std::string& out) {
-        array(out, "normal_force", 1, c.size(),
-              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].normal_force); });
-        array(out, "tangential_force", 1, c.size(),
-              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].tangential_force); });
-        array(out, "overlap", 1, c.size(),
-              [&](std::size_t k) { return fmt::format("{:.9g}", c[k].overlap); });
+        vtk_detail::contact_scalars(out, c);
         array(out, "contact_point", 3, c.size(), [&](std::size_t k) {
           return fmt::format("{:.9g} {:.9g} 0", c[k].point.x, c[k].point.y);
         });
@@ -114,7 +92,7 @@ std::string vtp_contacts(const Simulation& sim) {
               "{}", c[k].j >= 0 ? std::int64_t{p.id[static_cast<std::size_t>(c[k].j)]} : c[k].j);
         });
       },
-      [&](std::size_t k, bool second) { return second ? c[k].to : c[k].from; });
+      end_text([&](std::size_t k, bool second) { return second ? c[k].to : c[k].from; }));
 }
 
 std::string pvd_collection(const std::vector<std::pair<double, std::string>>& entries) {

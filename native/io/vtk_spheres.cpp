@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/contact_forces3.hpp"
 #include "io/vtk_arrays.hpp"
 
 namespace talus {
@@ -21,12 +22,30 @@ std::string triple(const Vec3& v) {
 const char* const header = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" "
                            "byte_order=\"LittleEndian\">\n  <PolyData>\n";
 
+// The box as the run had it then (a cell strains it), for what is computed from the snapshots:
+// its corners, which axes are periodic, and the x velocity of the image above (Lees-Edwards).
+void box_field_data(std::string& out, const Domain3& d) {
+  const auto one = [&out](const char* name, int components, const std::string& values) {
+    out += fmt::format("      <DataArray type=\"Float64\" Name=\"{}\" NumberOfTuples=\"1\" "
+                       "NumberOfComponents=\"{}\" format=\"ascii\">\n        {}\n"
+                       "      </DataArray>\n",
+                       name, components, values);
+  };
+  out += "    <FieldData>\n";
+  one("box", 6, triple(d.lo) + " " + triple(d.hi));
+  one("periodic", 3,
+      fmt::format("{} {} {}", int{d.periodic[0]}, int{d.periodic[1]}, int{d.periodic[2]}));
+  one("shear_velocity", 1, fmt::format("{}", d.shear_velocity));
+  out += "    </FieldData>\n";
+}
+
 } // namespace
 
 std::string vtp_spheres(const Scene3& scene, std::span<const Tensor3> stress) {
   const Spheres& s = scene.spheres;
   const std::size_t n = s.size();
   std::string out = header;
+  box_field_data(out, scene.domain);
   out += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\">\n", n, n);
   out += "      <PointData Scalars=\"radius\">\n";
   array(out, "id", 1, n, [&](std::size_t i) { return fmt::format("{}", s.id[i]); });
@@ -78,6 +97,27 @@ std::string vtp_plates(const Scene3& scene, double reach) {
   for (std::size_t k = 0; k < n; ++k) out += fmt::format("{}\n", 4 * (k + 1));
   out += "        </DataArray>\n      </Polys>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   return out;
+}
+
+std::string vtp_contacts3(const Simulation3& sim) {
+  const std::vector<ContactRecord3> c = contact_records3(sim);
+  const Spheres& s = sim.scene().spheres;
+  const auto g9 = [](const Vec3& v) { return fmt::format("{:.9g} {:.9g} {:.9g}", v.x, v.y, v.z); };
+  return vtk_detail::line_polydata(
+      c.size(), "normal_force",
+      [&](std::string& out) {
+        vtk_detail::contact_scalars(out, c);
+        array(out, "contact_point", 3, c.size(), [&](std::size_t k) { return g9(c[k].point); });
+        array(out, "force", 3, c.size(), [&](std::size_t k) { return g9(c[k].force); });
+        // ids, as the spheres' "id" array: indices change when the engine renumbers
+        array(out, "particle", 1, c.size(),
+              [&](std::size_t k) { return fmt::format("{}", s.id[c[k].i]); });
+        array(out, "partner", 1, c.size(), [&](std::size_t k) {
+          const std::int64_t j = c[k].j;
+          return fmt::format("{}", j >= 0 ? std::int64_t{s.id[static_cast<std::size_t>(j)]} : j);
+        });
+      },
+      [&](std::size_t k, bool second) { return triple(second ? c[k].to : c[k].from); });
 }
 
 } // namespace talus

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 #include <unordered_map>
 
 #include "io/checkpoint.hpp"
@@ -72,9 +73,18 @@ bool has_array(const std::string& xml, const std::string& name) {
   return xml.find("Name=\"" + name + "\"") != std::string::npos;
 }
 
+// The vector of the three numbers at v: 2D's frames keep x and y.
+template <class V> V vector_at(const double* v) {
+  if constexpr (std::is_same_v<V, Vec2>)
+    return {v[0], v[1]};
+  else
+    return {v[0], v[1], v[2]};
+}
+
 // The contacts of a contacts .vtp file into f's chains; the force vectors, contact points and
 // partners' kinds where the file has them (snapshots from before they were written lack them).
-void read_chains(const std::string& contacts, Frame& f) {
+template <class FrameT> void read_chains(const std::string& contacts, FrameT& f) {
+  using V = typename decltype(f.position)::value_type;
   const std::string c = read_file(contacts);
   const auto points = data_array(c, "position", contacts);
   const auto normal = data_array(c, "normal_force", contacts);
@@ -96,14 +106,14 @@ void read_chains(const std::string& contacts, Frame& f) {
     return at != free_by_id.end() && at->second;
   };
   for (std::size_t k = 0; k < n; ++k) {
-    Frame::Chain ch{
-        {points[6 * k], points[6 * k + 1]}, {points[6 * k + 3], points[6 * k + 4]}, normal[k]};
+    typename FrameT::Chain ch{vector_at<V>(&points[6 * k]), vector_at<V>(&points[6 * k + 3]),
+                              normal[k]};
+    ch.has_vector = vectors;
     if (vectors) {
-      ch.force_on_from = {force[3 * k], force[3 * k + 1]};
-      ch.point = {point[3 * k], point[3 * k + 1]};
+      ch.force_on_from = vector_at<V>(&force[3 * k]);
+      ch.point = vector_at<V>(&point[3 * k]);
       ch.from_free = is_free(particle[k]);
       ch.to_free = partner[k] >= 0 && is_free(partner[k]);
-      ch.has_vector = true;
     }
     f.chains.push_back(ch);
   }
@@ -148,6 +158,40 @@ Frame read_vtp_frame(const std::string& particles, const std::string& walls, dou
     const auto w = data_array(read_file(walls), "position", walls);
     for (std::size_t k = 0; k + 6 <= w.size(); k += 6) // a, b as (x, y, 0) each
       f.walls.emplace_back(Vec2{w[k], w[k + 1]}, Vec2{w[k + 3], w[k + 4]});
+  }
+  if (!contacts.empty() && std::filesystem::exists(contacts)) read_chains(contacts, f);
+  return f;
+}
+
+Frame3 read_vtp_frame3(const std::string& spheres, double time, const std::string& contacts) {
+  const std::string xml = read_file(spheres);
+  Frame3 f;
+  f.time = time;
+  const auto pos = data_array(xml, "position", spheres);
+  f.radius = data_array(xml, "radius", spheres);
+  const auto vel = data_array(xml, "velocity", spheres);
+  const auto kind = data_array(xml, "kind", spheres);
+  const auto ids = data_array(xml, "id", spheres);
+  f.mass = data_array(xml, "mass", spheres);
+  const std::size_t n = f.radius.size();
+  if (pos.size() != 3 * n || vel.size() != 3 * n || kind.size() != n || ids.size() != n ||
+      f.mass.size() != n)
+    throw std::runtime_error(spheres + ": arrays of different lengths");
+  for (std::size_t i = 0; i < n; ++i) {
+    f.id.push_back(entry_of<std::uint32_t>(ids, i, "id", spheres));
+    f.position.push_back(vector_at<Vec3>(&pos[3 * i]));
+    f.velocity.push_back(vector_at<Vec3>(&vel[3 * i]));
+    f.kind.push_back(entry_of<std::uint8_t>(kind, i, "kind", spheres));
+  }
+  if (has_array(xml, "box")) { // snapshots from before the box was written lack it
+    const auto box = data_array(xml, "box", spheres);
+    const auto periodic = data_array(xml, "periodic", spheres);
+    const auto slide = data_array(xml, "shear_velocity", spheres);
+    if (box.size() != 6 || periodic.size() != 3 || slide.size() != 1)
+      throw std::runtime_error(spheres + ": a box of the wrong size in its field data");
+    f.box_lo = vector_at<Vec3>(&box[0]), f.box_hi = vector_at<Vec3>(&box[3]);
+    for (int a = 0; a < 3; ++a) f.periodic[static_cast<std::size_t>(a)] = periodic[a] != 0.0;
+    f.shear_velocity = slide[0];
   }
   if (!contacts.empty() && std::filesystem::exists(contacts)) read_chains(contacts, f);
   return f;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "analysis/frame3.hpp"
 
 namespace talus {
 
@@ -20,5 +21,10 @@ std::vector<double> read_contact_normal_forces(const std::string& contacts);
 /// `contacts`, if not empty and present, adds the force chains.
 Frame read_vtp_frame(const std::string& particles, const std::string& walls, double time,
                      const std::string& contacts = {});
+
+/// One frame of a 3D run from its spheres' .vtp file and, if not empty and present, its contacts'
+/// (io/vtk_spheres.hpp). Throws std::runtime_error naming the file and the array that is missing
+/// or malformed; a snapshot written before the box was recorded leaves the frame's box empty.
+Frame3 read_vtp_frame3(const std::string& spheres, double time, const std::string& contacts = {});
 
 } // namespace talus

@@ -78,7 +78,10 @@ FieldMap coarse_grain_map(const std::vector<Frame>& frames, const CgMapOptions& 
   map.cell_y = (o.hi.y - o.lo.y) / static_cast<double>(o.ny);
   const MapSpreader s{o, map, (o.kernel == CgKernel::gaussian ? 5.0 : 1.0) * o.width};
   CgSums sums = cg_sums(
-      frames, o.nx * o.ny, [&](Vec2 at, auto&& f) { s.spread(at, f); },
+      frames, o.nx * o.ny, [](const Frame&) {},
+      [&](Vec2 at, auto&& f) {
+        s.spread(at, [&](std::size_t k, double phi) { f(k, phi, Vec2{}); });
+      },
       [&](Vec2 centre, Vec2 point, auto&& f) {
         const Vec2 branch = point - centre;
         const double pieces = std::max(1.0, std::ceil(norm(branch) / (0.5 * o.width)));

@@ -1,12 +1,15 @@
 #pragma once
-// The part of coarse graining that profiles and maps share: each frame's grains and contact
-// sides spread onto the points by a given spreader, the kinetic stress taken about each frame's
-// own mean velocity, and the mean over the frames (post/coarse_grain.hpp has the formulas).
+// The part of coarse graining that profiles and maps, in 2D and in 3D, share: each frame's grains
+// and contact sides spread onto the points by a given spreader, the kinetic stress taken about
+// each frame's own mean velocity, and the mean over the frames (post/coarse_grain.hpp has the
+// formulas).
 #include <cstddef>
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "analysis/frame3.hpp"
 #include "analysis/stress.hpp"
+#include "analysis/stress3.hpp"
 #include "talus/error.hpp"
 
 namespace talus {
@@ -17,43 +20,56 @@ inline Tensor2 cg_outer(Vec2 a, Vec2 b) {
   return t;
 }
 
-/// The fields' sums at n points.
-struct CgSums {
+inline Tensor3 cg_outer(const Vec3& a, const Vec3& b) {
+  Tensor3 t;
+  t << a.x * b.x, a.x * b.y, a.x * b.z, a.y * b.x, a.y * b.y, a.y * b.z, a.z * b.x, a.z * b.y,
+      a.z * b.z;
+  return t;
+}
+
+/// The fields' sums at n points, of grains in the plane (V = Vec2) or in space (V = Vec3).
+template <class V> struct CgSumsOf {
+  using Tensor = decltype(cg_outer(V{}, V{}));
   std::vector<double> density;
-  std::vector<Vec2> momentum;
-  std::vector<Tensor2> kinetic, contact;
+  std::vector<V> momentum;
+  std::vector<Tensor> kinetic, contact;
   std::size_t frames = 0;
 };
+using CgSums = CgSumsOf<Vec2>;
 
-/// Over `frames`: point(at, f) calls f(k, phi) for the points k a grain at `at` reaches, and
-/// side(centre, contact_point, f) the same with phi averaged along the branch.
-template <class Point, class Side>
-CgSums cg_sums(const std::vector<Frame>& frames, std::size_t n, const Point& point,
-               const Side& side) {
-  CgSums out;
-  out.density.assign(n, 0.0), out.momentum.assign(n, Vec2{});
-  out.kinetic.assign(n, Tensor2::Zero()), out.contact.assign(n, Tensor2::Zero());
-  for (const Frame& f : frames) {
+/// Over `frames`: begin(frame) first, then point(at, f) calls f(k, phi, dv) for the points k a
+/// grain at `at` reaches (dv: the velocity an image of it has beyond its own, Lees-Edwards'), and
+/// side(centre, contact_point, f) calls f(k, phi) with phi averaged along the branch.
+template <class FrameT, class Begin, class Point, class Side>
+auto cg_sums(const std::vector<FrameT>& frames, std::size_t n, const Begin& begin,
+             const Point& point, const Side& side) {
+  using V = typename decltype(FrameT{}.position)::value_type;
+  using Tensor = typename CgSumsOf<V>::Tensor;
+  CgSumsOf<V> out;
+  out.density.assign(n, 0.0), out.momentum.assign(n, V{});
+  out.kinetic.assign(n, Tensor::Zero()), out.contact.assign(n, Tensor::Zero());
+  for (const FrameT& f : frames) {
     if (f.mass.size() != f.position.size())
       throw InvalidArgument("the snapshots lack the grains' masses (written by an older talus): "
                             "run the scenario again to coarse-grain it");
+    begin(f);
     std::vector<double> rho(n, 0.0);
-    std::vector<Vec2> p(n, Vec2{});
-    std::vector<Tensor2> mvv(n, Tensor2::Zero());
+    std::vector<V> p(n, V{});
+    std::vector<Tensor> mvv(n, Tensor::Zero());
     for (std::size_t i = 0; i < f.position.size(); ++i) {
       if (f.kind[i] != 0) continue;
       const double m = f.mass[i];
-      const Vec2 v = f.velocity[i];
-      point(f.position[i], [&](std::size_t k, double phi) {
+      point(f.position[i], [&](std::size_t k, double phi, const V& dv) {
+        const V v = f.velocity[i] + dv;
         rho[k] += m * phi, p[k] += (m * phi) * v, mvv[k] += (m * phi) * cg_outer(v, v);
       });
     }
-    for (const Frame::Chain& c : f.chains) {
+    for (const auto& c : f.chains) {
       if (!c.has_vector)
         throw InvalidArgument("the snapshots' contacts lack their force vectors (written by an "
                               "older talus): run the scenario again to coarse-grain it");
-      const auto one = [&](Vec2 force, Vec2 centre) {
-        const Tensor2 fb = cg_outer(force, centre - c.point);
+      const auto one = [&](const V& force, const V& centre) {
+        const Tensor fb = cg_outer(force, centre - c.point);
         side(centre, c.point, [&](std::size_t k, double phi) { out.contact[k] += phi * fb; });
       };
       if (c.from_free) one(c.force_on_from, c.from);
@@ -61,7 +77,7 @@ CgSums cg_sums(const std::vector<Frame>& frames, std::size_t n, const Point& poi
     }
     for (std::size_t k = 0; k < n; ++k) {
       out.density[k] += rho[k], out.momentum[k] += p[k];
-      const Vec2 v = rho[k] > 0.0 ? (1.0 / rho[k]) * p[k] : Vec2{};
+      const V v = rho[k] > 0.0 ? (1.0 / rho[k]) * p[k] : V{};
       out.kinetic[k] += mvv[k] - rho[k] * cg_outer(v, v);
     }
     ++out.frames;

@@ -1,6 +1,6 @@
 """Loads a 3D scene's .vtp files with VTK's own XML reader (what ParaView uses) and checks them
 against the numbers the test wrote beside them: one point per sphere at its position, the
-documented arrays, one quadrilateral per plate. Exit 77 (skipped) when VTK is not installed."""
+documented arrays, the box in the field data, one line per contact, one quadrilateral per plate. Exit 77 (skipped) when VTK is not installed."""
 import json
 import sys
 from pathlib import Path
@@ -36,6 +36,21 @@ for name, components in [("id", 1), ("radius", 1), ("velocity", 3), ("angular_ve
     assert array.GetNumberOfComponents() == components, (name, array.GetNumberOfComponents())
 spin = data.GetArray("angular_velocity").GetTuple3(0)
 assert all(abs(a - b) <= 1e-8 * max(1.0, abs(b)) for a, b in zip(spin, expected["spin0"])), spin
+
+box = spheres.GetFieldData().GetArray("box")
+assert box is not None and box.GetNumberOfComponents() == 6
+assert list(box.GetTuple(0)) == expected["box"], box.GetTuple(0)
+assert spheres.GetFieldData().GetArray("periodic").GetNumberOfComponents() == 3
+assert spheres.GetFieldData().GetArray("shear_velocity") is not None
+
+contacts = read("contacts.vtp")
+assert expected["contacts"] > 0
+assert contacts.GetNumberOfLines() == expected["contacts"], contacts.GetNumberOfLines()
+for name, components in [("normal_force", 1), ("tangential_force", 1), ("overlap", 1),
+                         ("contact_point", 3), ("force", 3), ("particle", 1), ("partner", 1)]:
+    array = contacts.GetCellData().GetArray(name)
+    assert array is not None, name
+    assert array.GetNumberOfComponents() == components, (name, array.GetNumberOfComponents())
 
 plates = read("plates.vtp")
 assert plates.GetNumberOfPolys() == expected["plates"], plates.GetNumberOfPolys()

@@ -1,5 +1,6 @@
 // A 3D scene's ParaView files (io/vtk_spheres.hpp) open in VTK's own reader with the spheres
-// where they are and the arrays the docs name (read_vtk_spheres.py; skipped without VTK).
+// where they are, the box in their field data, the contacts as lines and the arrays the docs name
+// (read_vtk_spheres.py; skipped without VTK).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include "analysis/contact_forces3.hpp"
 #include "engine3d/simulation3.hpp"
 #include "io/vtk_spheres.hpp"
 #include "support/two_body.hpp"
@@ -38,14 +40,18 @@ TEST(VtkSpheres, ParaViewsReaderOpensTheSpheresAndPlates) {
   std::filesystem::create_directories(dir);
   write(dir / "spheres.vtp", vtp_spheres(s.scene()));
   write(dir / "plates.vtp", vtp_plates(s.scene(), 0.02));
+  write(dir / "contacts.vtp", vtp_contacts3(s));
   std::string positions;
   for (const Vec3& p : s.scene().spheres.position)
     positions +=
         fmt::format("{}[{:.17g}, {:.17g}, {:.17g}]", positions.empty() ? "" : ", ", p.x, p.y, p.z);
   const Vec3 w = s.scene().spheres.angular_velocity[0];
+  const Domain3& box = s.scene().domain;
   write(dir / "expected.json",
-        fmt::format(R"({{"positions": [{}], "spin0": [{:.17g}, {:.17g}, {:.17g}], "plates": {}}})",
-                    positions, w.x, w.y, w.z, s.scene().plates.size()));
+        fmt::format(R"({{"positions": [{}], "spin0": [{:.17g}, {:.17g}, {:.17g}], "plates": {}, )"
+                    R"("contacts": {}, "box": [{}, {}, {}, {}, {}, {}]}})",
+                    positions, w.x, w.y, w.z, s.scene().plates.size(), contact_records3(s).size(),
+                    box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z));
   const std::string script = std::string(TALUS_SOURCE_DIR) + "/tests/engine3d/read_vtk_spheres.py";
   const int status = std::system(("/usr/bin/python3 " + script + " " + dir.string()).c_str());
   std::filesystem::remove_all(dir);

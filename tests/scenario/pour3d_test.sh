@@ -5,8 +5,8 @@
 # the more snapshots resume --set asks), one lengthened with --duration ends as the longer run,
 # the ledger stops a run whose energy grows, the stress columns weigh the bed and agree with the
 # snapshots' sphere stresses, the plates carry the weight, a servo lid carries its load, a chute's
-# flow drags its rough floor, run.json names the step specialised to the scene,
-# and the commands that take 2D runs refuse the folder.
+# flow drags its rough floor, run.json names the step specialised to the scene, talus analyze
+# coarse-grains the fields, and the commands that take 2D runs refuse the folder.
 set -e
 talus="$1"
 here="$(dirname "$0")"
@@ -121,10 +121,28 @@ grep -q '"step": "one material"' "$run/run.json" || { echo "FAIL: run.json's ste
   --set simulation.duration=0.01 --set simulation.tangential_law=none
 grep -q '"step": "frictionless, no rotation, one material"' "$dir/frictionless/run.json" \
   || { echo "FAIL: the frictionless run's step"; exit 1; }
-for command in render movie analyze checkpoint; do
+for command in render movie checkpoint; do
   if "$talus" "$command" "$run" > "$dir/out.txt" 2>&1; then echo "FAIL: $command took a 3D run"; exit 1; fi
   grep -q "is a run of spheres in 3D" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 done
+# talus analyze: the coarse-grained fields along gravity's axis, from the snapshots' spheres and
+# contacts, whose density integrates to the spheres' mass, and the report; the 2D analyses refuse
+"$talus" analyze "$run" > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+[ -s "$run/analysis/report.html" ] || { echo "FAIL: no report.html of a 3D run"; exit 1; }
+head -1 "$run/analysis/fields.csv" | grep -q "^z,density,velocity_x,velocity_y,velocity_z,kinetic_xx" \
+  || { echo "FAIL: fields.csv header"; exit 1; }
+/usr/bin/python3 - "$run/analysis/fields.json" <<'PY'
+import json, sys
+f = json.load(open(sys.argv[1]))
+assert f["dimension"] == 3 and f["axis"] == "z" and f["frames"] == 7, f
+assert abs(f["mass_integral"] - f["mass"]) < 1e-6 * f["mass"], f
+PY
+"$talus" analyze "$run" fields --axis x --kernel lucy > /dev/null || { echo "FAIL: fields along x"; exit 1; }
+head -1 "$run/analysis/fields.csv" | grep -q "^x,density" || { echo "FAIL: fields along x"; exit 1; }
+if "$talus" analyze "$run" janssen > "$dir/out.txt" 2>&1; then echo "FAIL: janssen took a 3D run"; exit 1; fi
+grep -q "is a run of spheres in 3D, whose analyses are fields" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+if "$talus" analyze "$run" fields --map > "$dir/out.txt" 2>&1; then echo "FAIL: a 3D map"; exit 1; fi
+grep -q "maps are of 2D runs" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 # stopped at a checkpoint and resumed, with outputs past the checkpoint left behind by a run that
 # died (a row of thermo.csv, a snapshot): the same files as a run that never stopped
 short="--quiet --set particles.count=60 --set simulation.duration=0.1 --set simulation.timestep_factor=20
@@ -136,7 +154,7 @@ status=0; "$talus" run pour3d --out "$dir/parts" $short --stop-at 0.045 || statu
 echo "0.05,1,2,3" >> "$dir/parts/thermo.csv"
 cp "$dir/parts/snapshots/spheres_000002.vtp" "$dir/parts/snapshots/spheres_000003.vtp"
 "$talus" resume "$dir/parts" --quiet
-for f in thermo.csv particles.pvd walls.pvd $(cd "$dir/whole" && ls snapshots/*); do
+for f in thermo.csv particles.pvd walls.pvd contacts.pvd $(cd "$dir/whole" && ls snapshots/*); do
   cmp -s "$dir/whole/$f" "$dir/parts/$f" || { echo "FAIL: $f differs after a resume"; exit 1; }
 done
 [ "$(ls "$dir/parts/snapshots" | wc -l)" -eq "$(ls "$dir/whole/snapshots" | wc -l)" ] \
@@ -182,4 +200,4 @@ grep -q "the energy grew by .* (the energy ledger" "$dir/out.txt" || { cat "$dir
 grep -q '"ended_by": "unstable"' "$dir/gains/run.json" || { echo "FAIL: run.json"; exit 1; }
 # and a resolved 3D scenario reruns as it is
 "$talus" run "$run/scenario.toml" --out "$dir/again" --quiet --set simulation.duration=0.01
-echo "pour3d: run, snapshots read back, stopped and resumed as one run, 2D commands refuse it"
+echo "pour3d: run, snapshots read back, fields analysed, stopped and resumed as one run, 2D commands refuse it"

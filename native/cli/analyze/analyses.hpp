@@ -49,10 +49,10 @@ struct AnalysisOptions {
                       ///< the others nothing)
   double cell = 0.0;  ///< speed map cell, m (0: automatic)
   std::optional<std::pair<double, double>> window; ///< discharge: t0, t1 in s (none: steady)
-  std::string axis = "y";                          ///< fields: the profile's axis, x or y
-  std::string kernel = "gaussian";                 ///< fields: gaussian or lucy
-  double width = 0.0; ///< fields: the kernel's width, m (0: the mean grain radius)
-  bool map = false;   ///< fields: a map of the plane instead of profiles
+  std::string axis; ///< fields: the profile's axis, x, y or z (empty: y in 2D; in 3D gravity's)
+  std::string kernel = "gaussian"; ///< fields: gaussian or lucy
+  double width = 0.0;              ///< fields: the kernel's width, m (0: the mean grain radius)
+  bool map = false;                ///< fields: a map of the plane instead of profiles
 };
 
 /// What one analysis gives the report: its charts and key numbers.
@@ -144,5 +144,17 @@ Section analyze_one(RunData& run, const std::string& what, const AnalysisOptions
 
 /// DIR/analysis/report.html: one page, images embedded, readable offline.
 std::filesystem::path write_report(RunData& run, const std::vector<Section>& sections);
+/// The same page for any run folder `dir`, into `out`: its name, description and scenario's rows.
+std::filesystem::path
+write_report_page(const std::filesystem::path& dir, const std::filesystem::path& out,
+                  const std::string& name, const std::string& description,
+                  const std::vector<std::pair<std::string, std::string>>& scenario,
+                  const std::vector<Section>& sections);
+
+/// `talus analyze DIR [WHAT]` for a run of spheres in 3D (analyze3.cpp): fields, or all (every
+/// analysis of a 3D run that applies, and report.html); throws InvalidArgument naming what a 3D
+/// run has for any other.
+void analyze_3d_run(const std::filesystem::path& dir, const std::string& what,
+                    const AnalysisOptions& o);
 
 } // namespace talus::cli

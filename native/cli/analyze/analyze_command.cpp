@@ -216,9 +216,10 @@ void add_analyze_command(CLI::App& app) {
                   "cell (0: the kernel's width)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--axis", o->a.axis, "fields: the profiles' axis")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"x", "y"}));
+  cmd->add_option("--axis", o->a.axis,
+                  "fields: the profiles' axis, x, y or z (default: y in 2D; in 3D the one gravity "
+                  "pulls along, or y without gravity)")
+      ->check(CLI::IsMember({"x", "y", "z"}));
   cmd->add_option("--kernel", o->a.kernel, "fields: the coarse-graining kernel")
       ->capture_default_str()
       ->check(CLI::IsMember({"gaussian", "lucy"}));
@@ -240,7 +241,10 @@ void add_analyze_command(CLI::App& app) {
       analyze_sweep(o->dir, w, o->a);
       return;
     }
-    refuse_3d_run_folder(o->dir, "analyze");
+    if (is_3d_run_folder(o->dir)) {
+      analyze_3d_run(o->dir, w, o->a);
+      return;
+    }
     if (w != "all") check_analysis_name(w);
     RunData run{fs::path(o->dir)};
     if (w == "all") {

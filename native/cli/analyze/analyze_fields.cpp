@@ -115,6 +115,7 @@ Section analyze_fields(RunData& run, const AnalysisOptions& a) {
   const std::vector<Frame> frames = run.frames_with_contacts(std::max(a.from, 0.0));
   CgOptions o;
   o.kernel = parse_cg_kernel(a.kernel);
+  if (a.axis == "z") throw InvalidArgument("fields --axis z: a 2D run's axes are x and y");
   o.axis = a.axis == "x" ? 0 : 1;
   o.width = kernel_width(run, a);
   if (a.map) return analyze_field_map(run, a, frames, o.kernel, o.width);

@@ -229,6 +229,30 @@ elif kind == "fields":
     c.legend(fontsize=8)
     fig.suptitle(f"{extra['kernel']} kernel, width {extra['width']:.3g} m, "
                  f"{extra['frames']} snapshots")
+elif kind == "fields3":
+    axis = extra["axis"]
+    y = col(axis)
+    fig, (a, b, c) = plt.subplots(1, 3, figsize=(13, 4.5), sharey=True)
+    a.plot(col("density"), y)
+    a.set_xlabel("density [kg/m^3]")
+    a.set_ylabel(f"{axis} [m]")
+    # the velocity where there is mass to carry it (beyond the grains it is noise over noise)
+    dense = [d > 0.01 * max(col("density")) for d in col("density")]
+    for v in "xyz":
+        b.plot([u if ok else float("nan") for u, ok in zip(col("velocity_" + v), dense)], y,
+               label="v_" + v)
+    b.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
+    b.set_xlabel("velocity [m/s]")
+    b.legend(fontsize=8)
+    # the shear stress in the plane of the axis and x (or y, along x)
+    shear = "xy" if axis in "xy" else "xz"
+    for comp in ["xx", "yy", "zz", shear]:
+        c.plot([p + q for p, q in zip(col("contact_" + comp), col("kinetic_" + comp))], y,
+               label="sigma_" + comp)
+    c.set_xlabel("stress, contact + kinetic [Pa]")
+    c.legend(fontsize=8)
+    fig.suptitle(f"spheres, {extra['kernel']} kernel, width {extra['width']:.3g} m, "
+                 f"{extra['frames']} snapshots")
 elif kind == "janssen":
     fig, a = plt.subplots(figsize=(8, 4.5))
     depth = col("depth")

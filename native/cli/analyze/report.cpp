@@ -65,6 +65,12 @@ std::string table(const Rows& rows) {
 
 fs::path write_report(RunData& run, const std::vector<Section>& sections) {
   const Scenario& s = run.scenario();
+  return write_report_page(run.dir(), run.out(), s.name, s.description, scenario_rows(s), sections);
+}
+
+fs::path write_report_page(const fs::path& dir, const fs::path& out, const std::string& name,
+                           const std::string& description, const Rows& scenario,
+                           const std::vector<Section>& sections) {
   std::string html = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>talus: "
       "{0}</title>\n"
@@ -72,9 +78,9 @@ fs::path write_report(RunData& run, const std::vector<Section>& sections) {
       "img{{max-width:100%}}table{{border-collapse:collapse}}td{{border:1px solid #ccc;"
       "padding:2px 8px}}figure{{margin:1em 0}}figcaption{{color:#666;font-size:80%}}</style>\n"
       "</head><body>\n<h1>{0}</h1>\n<p>{1}</p>\n<p>Run folder: <code>{2}</code></p>\n",
-      escape(s.name), escape(s.description), escape(fs::absolute(run.dir()).string()));
-  html += "<h2>Scenario</h2>\n" + table(scenario_rows(s));
-  if (std::ifstream in(run.dir() / "run.json"); in) {
+      escape(name), escape(description), escape(fs::absolute(dir).string()));
+  html += "<h2>Scenario</h2>\n" + table(scenario);
+  if (std::ifstream in(dir / "run.json"); in) {
     try {
       html += "<h2>Run</h2>\n" + table(run_rows(nlohmann::json::parse(in)));
     } catch (const nlohmann::json::exception& e) {
@@ -82,9 +88,9 @@ fs::path write_report(RunData& run, const std::vector<Section>& sections) {
     }
   }
   std::vector<fs::path> pictures;
-  if (fs::exists(run.dir() / "final.png")) pictures.push_back(run.dir() / "final.png");
-  if (fs::is_directory(run.dir() / "pictures"))
-    for (const auto& e : fs::directory_iterator(run.dir() / "pictures"))
+  if (fs::exists(dir / "final.png")) pictures.push_back(dir / "final.png");
+  if (fs::is_directory(dir / "pictures"))
+    for (const auto& e : fs::directory_iterator(dir / "pictures"))
       if (e.path().extension() == ".png") pictures.push_back(e.path());
   std::sort(pictures.begin() + (pictures.empty() ? 0 : 1), pictures.end());
   if (!pictures.empty()) {
@@ -98,7 +104,7 @@ fs::path write_report(RunData& run, const std::vector<Section>& sections) {
   }
   html += "<p>Made by <code>talus analyze</code>; the CSV files beside this page hold the numbers "
           "(columns in docs/file-formats.md).</p>\n</body></html>\n";
-  const fs::path page = run.out() / "report.html";
+  const fs::path page = out / "report.html";
   write_file_atomically(page.string(), html);
   return page;
 }

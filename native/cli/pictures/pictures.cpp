@@ -94,6 +94,9 @@ std::vector<Snapshot> snapshots_of(const fs::path& dir) {
     if (const auto k = file.find("particles_"); k != std::string::npos) {
       walls.replace(k, 10, "walls_");
       contacts.replace(k, 10, "contacts_");
+    } else if (const auto s = file.find("spheres_"); s != std::string::npos) { // a 3D run's
+      walls.replace(s, 8, "plates_");
+      contacts.replace(s, 8, "contacts_");
     }
     out.push_back({t, dir / file, dir / walls, dir / contacts});
   }

@@ -26,8 +26,25 @@ namespace talus::cli {
 
 namespace {
 
-// A snapshot of the spheres and one of the plates, listed in the book and their collections.
-// With output.stress, each sphere's stress too.
+// The contacts' file of the spheres' snapshot `spheres` (snapshots/spheres_NNNNNN.vtp): the book
+// keeps the spheres' and plates' names, and the contacts' follow from them.
+std::string contacts_name(const std::string& spheres) {
+  std::string name = spheres;
+  const auto at = name.rfind("spheres_");
+  return at == std::string::npos ? name : name.replace(at, 7, "contacts");
+}
+
+// The collections of the snapshots the book lists.
+void write_collections3(const fs::path& dir, const Book3& book) {
+  std::vector<std::pair<double, std::string>> contacts;
+  for (const auto& [t, name] : book.spheres) contacts.emplace_back(t, contacts_name(name));
+  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(book.spheres));
+  write_file_atomically((dir / "walls.pvd").string(), pvd_collection(book.plates));
+  write_file_atomically((dir / "contacts.pvd").string(), pvd_collection(contacts));
+}
+
+// A snapshot of the spheres, one of the plates and one of the contacts, listed in the book and
+// their collections. With output.stress, each sphere's stress too.
 void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, bool stress,
                     Book3& book) {
   const std::string k = fmt::format("{:06d}", book.spheres.size());
@@ -36,10 +53,10 @@ void write_snapshot(const fs::path& dir, const Simulation3& sim, double reach, b
   if (stress) stresses = sphere_stresses(sim);
   write_file_atomically((dir / s).string(), vtp_spheres(sim.scene(), stresses));
   write_file_atomically((dir / p).string(), vtp_plates(sim.scene(), reach));
+  write_file_atomically((dir / contacts_name(s)).string(), vtp_contacts3(sim));
   book.spheres.emplace_back(sim.time(), s);
   book.plates.emplace_back(sim.time(), p);
-  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(book.spheres));
-  write_file_atomically((dir / "walls.pvd").string(), pvd_collection(book.plates));
+  write_collections3(dir, book);
 }
 
 std::string run_json(const Scenario3& s, const Simulation3& sim, double collision_time, double wall,
@@ -235,11 +252,11 @@ int resume_3d(RunFolder folder, const RunOptions& o) {
     const std::string name = "snapshots/" + e.path().filename().string();
     bool kept = false;
     for (std::size_t k = 0; k < book.spheres.size(); ++k)
-      kept = kept || name == book.spheres[k].second || name == book.plates[k].second;
+      kept = kept || name == book.spheres[k].second || name == book.plates[k].second ||
+             name == contacts_name(book.spheres[k].second);
     if (!kept) fs::remove(e.path());
   }
-  write_file_atomically((dir / "particles.pvd").string(), pvd_collection(book.spheres));
-  write_file_atomically((dir / "walls.pvd").string(), pvd_collection(book.plates));
+  write_collections3(dir, book);
   fs::remove(dir / "run.json");
   if (o.threads >= 0) c.settings.threads = o.threads;
   Simulation3 sim = Simulation3::restore(std::move(c.state), c.settings);
