@@ -37,26 +37,44 @@ struct ProfileBlock {
 
 // The least-squares slope of v_x over y of a frame's free grains: their positions need not be
 // wrapped, the flow across a sheared cell's side going on as the images do.
-double profile_slope(const Frame& f) {
+template <class FrameT> double profile_slope(const FrameT& f) {
   std::vector<double> y, vx;
   for (std::size_t i = 0; i < f.position.size(); ++i)
     if (f.kind[i] == 0) y.push_back(f.position[i].y), vx.push_back(f.velocity[i].x);
   return fit_line(y, vx).slope;
 }
 
+template <class FrameT>
+RheologyPoint point_of_frames(const std::vector<CellShearRow>& rows,
+                              const std::vector<FrameT>& frames, std::size_t blocks) {
+  std::vector<double> slopes;
+  for (const FrameT& f : frames) slopes.push_back(profile_slope(f));
+  return cell_rheology_point(rows, frames.empty() ? GrainScale{} : grain_scale(frames.front()),
+                             slopes, blocks);
+}
+
 } // namespace
 
 RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
                                   const std::vector<Frame>& frames, std::size_t blocks) {
+  return point_of_frames(rows, frames, blocks);
+}
+
+RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
+                                  const std::vector<Frame3>& frames, std::size_t blocks) {
+  return point_of_frames(rows, frames, blocks);
+}
+
+RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows, const GrainScale& scale,
+                                  const std::vector<double>& slopes, std::size_t blocks) {
   RheologyPoint r;
-  r.frames = frames.size();
-  if (rows.size() < 2 * blocks || frames.size() < blocks || blocks < 2) {
+  r.frames = slopes.size();
+  if (rows.size() < 2 * blocks || slopes.size() < blocks || blocks < 2) {
     r.why_not = fmt::format("{} thermo rows and {} snapshots; at least {} and {} are needed (two "
                             "rows and one snapshot per block)",
-                            rows.size(), frames.size(), 2 * blocks, blocks);
+                            rows.size(), slopes.size(), 2 * blocks, blocks);
     return r;
   }
-  const GrainScale scale = grain_scale(frames.front());
   if (scale.grains == 0 || !(scale.density > 0.0)) {
     r.why_not = "the snapshots hold no free grains with their masses";
     return r;
@@ -68,9 +86,8 @@ RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
     cells.push_back(
         block_of(rows, rows.size() * b / blocks, rows.size() * (b + 1) / blocks, scale));
     ProfileBlock p;
-    const std::size_t f0 = frames.size() * b / blocks, f1 = frames.size() * (b + 1) / blocks;
-    for (std::size_t k = f0; k < f1; ++k)
-      p.slope += profile_slope(frames[k]) / static_cast<double>(f1 - f0);
+    const std::size_t f0 = slopes.size() * b / blocks, f1 = slopes.size() * (b + 1) / blocks;
+    for (std::size_t k = f0; k < f1; ++k) p.slope += slopes[k] / static_cast<double>(f1 - f0);
     profiles.push_back(p);
   }
   std::tie(r.shear_rate, r.shear_rate_error) = block_mean_error(cells, &CellBlock::shear_rate);

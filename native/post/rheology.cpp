@@ -87,6 +87,20 @@ GrainScale grain_scale(const Frame& f) {
   return g;
 }
 
+GrainScale grain_scale(const Frame3& f) {
+  GrainScale g;
+  double volume = 0.0, mass = 0.0, diameter = 0.0;
+  for (std::size_t i = 0; i < f.position.size(); ++i)
+    if (f.kind[i] == 0) {
+      volume += 4.0 / 3.0 * std::numbers::pi * f.radius[i] * f.radius[i] * f.radius[i];
+      mass += f.mass.size() == f.position.size() ? f.mass[i] : 0.0;
+      diameter += 2.0 * f.radius[i], ++g.grains;
+    }
+  if (g.grains > 0)
+    g.diameter = diameter / static_cast<double>(g.grains), g.density = mass / volume;
+  return g;
+}
+
 RheologyPoint rheology_point(const std::vector<Frame>& frames, const RheologyOptions& o) {
   RheologyPoint r;
   r.frames = frames.size();

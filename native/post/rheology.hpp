@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "analysis/frame3.hpp"
 #include "post/coarse_grain.hpp"
 #include "post/line_fit.hpp"
 
@@ -33,10 +34,10 @@ struct RheologyPoint {
   double base = 0.0, plate = 0.0;                  ///< m: the walls' grain surfaces (mean heights)
   double bulk_lo = 0.0, bulk_hi = 0.0;             ///< m: the band measured
   double diameter = 0.0;                           ///< m: the free grains' mean diameter
-  double grain_density = 0.0;                      ///< kg/m^2: a grain's mass over its area
+  double grain_density = 0.0;                      ///< kg/m^2 (kg/m^3 in 3D): mass over size
   double shear_rate = 0.0, shear_rate_error = 0.0; ///< 1/s: d v_x / d y in the bulk
-  double pressure = 0.0, pressure_error = 0.0;     ///< N/m: sigma_yy, kinetic part included
-  double shear_stress = 0.0, shear_stress_error = 0.0; ///< N/m: |sigma_xy|
+  double pressure = 0.0, pressure_error = 0.0; ///< N/m (Pa in 3D): sigma_yy, kinetic part included
+  double shear_stress = 0.0, shear_stress_error = 0.0; ///< N/m (Pa in 3D): |sigma_xy|
   double friction = 0.0, friction_error = 0.0;         ///< mu = |sigma_xy| / sigma_yy
   double packing = 0.0, packing_error = 0.0;           ///< phi
   double inertial = 0.0, inertial_error = 0.0;         ///< I
@@ -63,13 +64,23 @@ struct CellShearRow {
 /// with fewer rows or frames than blocks.
 RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
                                   const std::vector<Frame>& frames, std::size_t blocks);
+/// The same of spheres in 3D (stresses in Pa, the density a sphere's mass over its volume).
+RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows,
+                                  const std::vector<Frame3>& frames, std::size_t blocks);
 
-/// The free grains' mean diameter (m) and their mass over their area (kg/m^2) in one frame.
+/// The free grains' mean diameter (m) and their mass over their area (kg/m^2) in one frame, or
+/// of spheres over their volume (kg/m^3).
 struct GrainScale {
   double diameter = 0.0, density = 0.0;
   std::size_t grains = 0;
 };
 GrainScale grain_scale(const Frame& f);
+GrainScale grain_scale(const Frame3& f);
+
+/// What both take: the grains' scale and each snapshot's least-squares slope of v_x over y, in
+/// time order.
+RheologyPoint cell_rheology_point(const std::vector<CellShearRow>& rows, const GrainScale& scale,
+                                  const std::vector<double>& slopes, std::size_t blocks);
 
 /// The flow of the free grains of `frames` (with contact force vectors) between the wall grains
 /// below and above them, in the middle `bulk_fraction` of the gap. Not measured (why_not says

@@ -38,11 +38,12 @@ for name in $("$talus" scenarios | awk '{print $1}'); do
     chute) short=(--set simulation.duration=0.4) ;;
     chute_stop) short=(--set particles.count=100 --set stages.0.duration=0.2 --set stages.1.duration=0.2) ;;
     pour3d) echo "pour3d: spheres in 3D, run and read back by pour3d_test.sh"; continue ;;
-    simple_shear3d) # spheres in 3D: the pictures are 2D's; the run, its columns and its fields
+    simple_shear3d) # spheres in 3D: the pictures are 2D's; the run, its columns, its analyses
       "$talus" run "$name" "${common[@]}" --set simulation.duration=0.3 || fail "run"
       head -1 "$dir/$name/thermo.csv" | grep -q "cell_shear_strain" || fail "no cell columns"
       "$talus" analyze "$dir/$name" > /dev/null || fail "analyze"
       head -1 "$dir/$name/analysis/fields.csv" | grep -q "^y,density" || fail "no fields along y"
+      grep -q '"measured": ' "$dir/$name/analysis/rheology.json" || fail "no rheology.json"
       continue ;;
     *) fail "no short version in $0" ;;
   esac

@@ -140,7 +140,9 @@ PY
 "$talus" analyze "$run" fields --axis x --kernel lucy > /dev/null || { echo "FAIL: fields along x"; exit 1; }
 head -1 "$run/analysis/fields.csv" | grep -q "^x,density" || { echo "FAIL: fields along x"; exit 1; }
 if "$talus" analyze "$run" janssen > "$dir/out.txt" 2>&1; then echo "FAIL: janssen took a 3D run"; exit 1; fi
-grep -q "is a run of spheres in 3D, whose analyses are fields" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+grep -q "is a run of spheres in 3D, whose analyses are fields and rheology" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+if "$talus" analyze "$run" rheology > "$dir/out.txt" 2>&1; then echo "FAIL: rheology of a bed"; exit 1; fi
+grep -q "rheology is that of a sheared cell" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 if "$talus" analyze "$run" fields --map > "$dir/out.txt" 2>&1; then echo "FAIL: a 3D map"; exit 1; fi
 grep -q "maps are of 2D runs" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 # stopped at a checkpoint and resumed, with outputs past the checkpoint left behind by a run that

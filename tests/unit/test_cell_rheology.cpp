@@ -1,6 +1,6 @@
 // The rheology of a sheared cell (post/rheology.hpp, cell_rheology_point) from made-up thermo rows
-// and snapshots whose numbers are known: mu, phi and I come back exactly, the grains' profile
-// gives its slope back, and too little data is refused with the reason.
+// and snapshots whose numbers are known, of disks and of spheres: mu, phi and I come back exactly,
+// the grains' profile gives its slope back, and too little data is refused with the reason.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,6 +51,33 @@ TEST(CellRheology, GivesBackTheNumbersOfItsRows) {
   EXPECT_NEAR(r.grain_density, 2650.0, 1e-9);
   EXPECT_NEAR(r.profile_shear_rate, 1.9, 1e-9);
   EXPECT_NEAR(r.friction_error, 0.0, 1e-12);
+}
+
+// Spheres of radius 5 mm and 2650 kg/m^3 on a column, moving at v_x = slope y (+ 1 m/s).
+std::vector<Frame3> frames3(std::size_t n, double slope) {
+  std::vector<Frame3> out(n);
+  for (Frame3& f : out)
+    for (int k = 0; k < 20; ++k) {
+      const double y = 0.01 * k;
+      f.position.push_back({0.1, y, 0.02});
+      f.velocity.push_back({1.0 + slope * y, 0.0, 0.5});
+      f.radius.push_back(0.005);
+      f.mass.push_back(2650.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(0.005, 3));
+      f.kind.push_back(0);
+    }
+  return out;
+}
+
+// The same rows read as Pa with spheres: rho is a sphere's mass over its volume, the rest as above.
+TEST(CellRheology, SpheresInACellGiveBackTheNumbersOfTheirRows) {
+  const RheologyPoint r = cell_rheology_point(rows(40), frames3(8, 1.7), 4);
+  ASSERT_TRUE(r.measured) << r.why_not;
+  EXPECT_NEAR(r.friction, 0.3, 1e-12);
+  EXPECT_NEAR(r.inertial, 2.0 * 0.01 / std::sqrt(100.0 / 2650.0), 1e-12);
+  EXPECT_NEAR(r.grain_density, 2650.0, 1e-9);
+  EXPECT_NEAR(r.diameter, 0.01, 1e-15);
+  EXPECT_NEAR(r.profile_shear_rate, 1.7, 1e-9);
+  EXPECT_FALSE(cell_rheology_point(rows(40), std::vector<Frame3>{}, 4).measured);
 }
 
 // Fewer rows or snapshots than the blocks need: not measured, saying how many it had.

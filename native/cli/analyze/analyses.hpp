@@ -129,6 +129,9 @@ RheologyPoint run_rheology(RunData& run, const AnalysisOptions& o);
 /// Whether the scenario is simple shear in a sheared cell (a cell driver with a shear_rate),
 /// which the rheology analysis measures from the cell's own stress.
 bool sheared_cell(const Scenario& s);
+/// One point in a line: I, mu and phi with their errors, the shear rate and the pressure (in
+/// `stress_unit`: N/m in 2D, Pa in 3D), or why it was not measured.
+std::string rheology_point_text(const RheologyPoint& r, const char* stress_unit = "N/m");
 /// One point as a JSON object (rheology.json).
 std::string rheology_json(const RheologyPoint& r);
 Section analyze_rheology(RunData& run, const AnalysisOptions& o);
@@ -151,9 +154,9 @@ write_report_page(const std::filesystem::path& dir, const std::filesystem::path&
                   const std::vector<std::pair<std::string, std::string>>& scenario,
                   const std::vector<Section>& sections);
 
-/// `talus analyze DIR [WHAT]` for a run of spheres in 3D (analyze3.cpp): fields, or all (every
-/// analysis of a 3D run that applies, and report.html); throws InvalidArgument naming what a 3D
-/// run has for any other.
+/// `talus analyze DIR [WHAT]` for a run of spheres in 3D (analyze3.cpp): fields, rheology (of a
+/// sheared cell), or all (every analysis of a 3D run that applies, and report.html); throws
+/// InvalidArgument naming what a 3D run has for any other.
 void analyze_3d_run(const std::filesystem::path& dir, const std::string& what,
                     const AnalysisOptions& o);
 

@@ -1,5 +1,6 @@
 // `talus analyze DIR [WHAT]` for a run of spheres in 3D: the coarse-grained fields along an axis
-// (post/coarse_grain.hpp) from the snapshots' spheres and contacts, and the report.
+// (post/coarse_grain.hpp) from the snapshots' spheres and contacts, the rheology of a sheared
+// cell (post/rheology.hpp), and the report.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,10 +8,12 @@
 #include <fmt/core.h>
 
 #include "cli/analyze/analyses.hpp"
+#include "cli/analyze/csv_rows.hpp"
 #include "cli/pictures/pictures.hpp"
 #include "io/checkpoint.hpp"
 #include "io/vtp_reader.hpp"
 #include "post/coarse_grain.hpp"
+#include "post/rheology.hpp"
 #include "scenario/file/load3.hpp"
 
 namespace fs = std::filesystem;
@@ -21,11 +24,15 @@ namespace {
 
 constexpr const char* axis_names[3] = {"x", "y", "z"};
 
-// The snapshots from `from` on, each with its contacts.
-std::vector<Frame3> frames3_from(const fs::path& dir, double from) {
+// The snapshots from `from` on, each with its contacts (or without them).
+std::vector<Frame3> frames3_from(const fs::path& dir, double from, bool contacts = true) {
   std::vector<Frame3> out;
   for (const Snapshot& s : snapshots_of(dir)) {
     if (s.time < from - 1e-12) continue;
+    if (!contacts) {
+      out.push_back(read_vtp_frame3(s.particles.string(), s.time));
+      continue;
+    }
     if (!fs::exists(s.contacts))
       throw InvalidArgument(fmt::format("{} is missing (a run by a talus that wrote no contacts "
                                         "in 3D): run the scenario again to coarse-grain it",
@@ -185,6 +192,61 @@ Section analyze_fields3(const fs::path& dir, const Scenario3& s, const AnalysisO
   return sec;
 }
 
+bool sheared_cell3(const Scenario3& s) {
+  return std::any_of(s.drivers.begin(), s.drivers.end(),
+                     [](const Driver3Section& d) { return d.cell && d.shear_rate != 0.0; });
+}
+
+// The sheared cell's rows of thermo.csv from `from` on: its stress (thermo.csv's stress_* are the
+// total in 3D, kinetic part included), packing fraction and shear rate.
+std::vector<CellShearRow> cell_rows3(const fs::path& dir, double from) {
+  const std::string needs = "a sheared cell's run needs output.stress = true";
+  std::vector<CellShearRow> out;
+  for (const CsvRow& row : read_csv_rows(dir / "thermo.csv", "rheology")) {
+    const auto value = [&](const char* key) {
+      return csv_value(row, key, "rheology", "thermo.csv", needs);
+    };
+    if (value("time") < from) continue;
+    out.push_back({.time = value("time"),
+                   .shear_stress = 0.5 * (value("stress_xy") + value("stress_yx")),
+                   .normal_stress = value("stress_yy"),
+                   .packing = value("region_packing_fraction"),
+                   .shear_rate = value("cell_shear_rate")});
+  }
+  return out;
+}
+
+// Simple shear in a sheared cell: mu, phi and I from the cell's own stress over the second half
+// of the snapshots (or from --from), errors from consecutive blocks (post/rheology.hpp).
+Section analyze_rheology3(const fs::path& dir, const Scenario3& s, const AnalysisOptions& a) {
+  if (!sheared_cell3(s))
+    throw InvalidArgument("rheology: a 3D run's rheology is that of a sheared cell (a cell driver "
+                          "with a shear_rate), as the built-in simple_shear3d");
+  const std::vector<Frame3> all = frames3_from(dir, 0.0, false);
+  const double from =
+      a.from >= 0.0 ? a.from : 0.5 * (all.front().time + all.back().time); // the steady half
+  std::vector<Frame3> frames;
+  for (const Frame3& f : all)
+    if (f.time >= from - 1e-12) frames.push_back(f);
+  const std::size_t blocks = RheologyOptions{}.blocks;
+  const RheologyPoint r = cell_rheology_point(cell_rows3(dir, from), frames, blocks);
+  const fs::path out = dir / "analysis";
+  fs::create_directories(out);
+  write_file_atomically((out / "rheology.json").string(), rheology_json(r) + "\n");
+  Section sec{"Rheology of the simple shear", {}, {}, {}};
+  sec.summary = fmt::format(
+      "Simple shear of spheres in a sheared (Lees-Edwards) cell from t = {:.3g} s on: mu = "
+      "|sigma_xy| / sigma_yy (Pa, kinetic part included) and the packing fraction of the cell "
+      "(thermo.csv), with the inertial number I = gamma_dot d / sqrt(P / rho) (GDR MiDi 2004) from "
+      "the cell's shear rate, rho a sphere's mass over its volume; errors from {} consecutive "
+      "blocks. The slope of the spheres' own velocity profile in the snapshots checks that the "
+      "shear is uniform.",
+      from, blocks);
+  sec.numbers = {{"flow", rheology_point_text(r, "Pa")}};
+  fmt::print("rheology: {}\n", rheology_point_text(r, "Pa"));
+  return sec;
+}
+
 std::vector<std::pair<std::string, std::string>> scenario3_rows(const Scenario3& s) {
   const Box3Section& g = s.geometry;
   std::string periodic;
@@ -204,23 +266,37 @@ std::vector<std::pair<std::string, std::string>> scenario3_rows(const Scenario3&
 } // namespace
 
 void analyze_3d_run(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
-  if (what != "fields" && what != "all") {
+  if (what != "fields" && what != "rheology" && what != "all") {
     check_analysis_name(what);
     throw InvalidArgument("analyze: '" + dir.string() +
                           "' is a run of spheres in 3D, whose "
-                          "analyses are fields (and all, with report.html); " +
+                          "analyses are fields and rheology (and all, with report.html); " +
                           what + " takes 2D runs for now");
   }
   const fs::path toml = dir / "scenario.toml";
   const Scenario3 s = load_scenario3(read_file(toml.string()), toml.string());
   std::vector<Section> sections;
   if (!fs::exists(dir / "particles.pvd")) {
-    if (what == "fields")
-      throw InvalidArgument("fields: '" + dir.string() +
+    if (what != "all")
+      throw InvalidArgument(what + ": '" + dir.string() +
                             "' has no snapshots (output.snapshot_interval = 0)");
     fmt::print("no snapshots (output.snapshot_interval = 0): no analysis of a 3D run applies\n");
+  } else if (what == "fields") {
+    analyze_fields3(dir, s, o);
+  } else if (what == "rheology") {
+    analyze_rheology3(dir, s, o);
   } else {
-    sections.push_back(analyze_fields3(dir, s, o));
+    // every one that applies; one that cannot run says why and the others go on
+    const auto attempt = [&](const char* name, auto&& analysis) {
+      try {
+        sections.push_back(analysis());
+      } catch (const InvalidArgument& e) {
+        fmt::print("{}: skipped ({})\n", name, e.what());
+      }
+    };
+    attempt("fields", [&] { return analyze_fields3(dir, s, o); });
+    if (sheared_cell3(s) && s.output.stress)
+      attempt("rheology", [&] { return analyze_rheology3(dir, s, o); });
   }
   if (what == "all")
     fmt::print("report: {}\n", write_report_page(dir, dir / "analysis", s.name, s.description,

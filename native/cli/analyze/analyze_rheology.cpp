@@ -78,19 +78,19 @@ std::string profile_csv(const std::vector<Frame>& frames, const RheologyOptions&
   return csv;
 }
 
-std::string point_text(const RheologyPoint& r) {
+} // namespace
+
+std::string rheology_point_text(const RheologyPoint& r, const char* stress_unit) {
   if (!r.measured) return "not measured: " + r.why_not;
   const std::string profile = r.profile_shear_rate != 0.0
                                   ? fmt::format(", the grains' profile {:.4g} +- {:.2g} 1/s",
                                                 r.profile_shear_rate, r.profile_shear_rate_error)
                                   : "";
   return fmt::format("I = {:.4f} +- {:.4f}, mu = {:.4f} +- {:.4f}, phi = {:.4f} +- {:.4f} "
-                     "(shear rate {:.4g} 1/s{}, pressure {:.4g} N/m)",
+                     "(shear rate {:.4g} 1/s{}, pressure {:.4g} {})",
                      r.inertial, r.inertial_error, r.friction, r.friction_error, r.packing,
-                     r.packing_error, r.shear_rate, profile, r.pressure);
+                     r.packing_error, r.shear_rate, profile, r.pressure, stress_unit);
 }
-
-} // namespace
 
 bool sheared_cell(const Scenario& s) {
   for (const DriverSection& d : s.drivers)
@@ -134,8 +134,8 @@ Section analyze_cell_rheology(RunData& run, const AnalysisOptions& a) {
       "shear rate; errors from {} consecutive blocks. The slope of the grains' own velocity "
       "profile in the snapshots checks that the shear is uniform.",
       steady_from(run, a), RheologyOptions{}.blocks);
-  s.numbers = {{"flow", point_text(r)}};
-  fmt::print("rheology: {}\n", point_text(r));
+  s.numbers = {{"flow", rheology_point_text(r)}};
+  fmt::print("rheology: {}\n", rheology_point_text(r));
   return s;
 }
 
@@ -155,12 +155,12 @@ Section analyze_rheology(RunData& run, const AnalysisOptions& a) {
       "fraction, with the inertial number I = gamma_dot d / sqrt(P / rho) (GDR MiDi 2004); errors "
       "from {} consecutive blocks of snapshots.",
       frames.size(), frames.front().time, cg_kernel_name(o.kernel), o.width, o.blocks);
-  s.numbers = {{"flow", point_text(r)}};
+  s.numbers = {{"flow", rheology_point_text(r)}};
   if (r.measured)
     s.numbers.push_back(
         {"bulk", fmt::format("y from {:.4g} to {:.4g} m of a gap {:.3g} d wide", r.bulk_lo,
                              r.bulk_hi, (r.plate - r.base) / r.diameter)});
-  fmt::print("rheology: {}\n", point_text(r));
+  fmt::print("rheology: {}\n", rheology_point_text(r));
   if (r.measured &&
       plot(out, "rheology", out / "rheology.csv", out / "rheology.png", out / "rheology.json"))
     s.charts.push_back(out / "rheology.png");
