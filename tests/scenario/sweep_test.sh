@@ -89,4 +89,17 @@ mkdir "$killed/run-002/snapshots"
 echo "[simul" > "$killed/run-002/scenario.toml.tmp"
 "$talus" resume "$killed" > "$dir/log4" 2>&1 || { cat "$dir/log4"; fail "resume after SIGKILL"; }
 [ "$(grep -c ',finished,' "$killed/index.csv")" -eq 2 ] || { cat "$killed/index.csv"; fail "not finished after SIGKILL and resume"; }
-echo "sweep: stopped, resumed, identical to talus run, gathered; SIGKILL stops its runs"
+# a sweep of a 3D scenario: each run's scenario resolved as spheres, its runs run and indexed,
+# and talus analyze SWEEP rheology measures each sheared cell (too few points for the fits)
+shear3d="$dir/shear3d"
+"$talus" sweep simple_shear3d --vary drivers.0.shear_rate=2,4 --set particles.count=200 \
+  --set "geometry.box=[0, 0, 0, 0.055, 0.25, 0.055]" --set simulation.duration=0.3 \
+  --set output.snapshot_interval=0.025 --set output.thermo_interval=0.01 --jobs 2 \
+  --out "$shear3d" > "$dir/log5" 2>&1 || { cat "$dir/log5"; fail "3D sweep"; }
+grep -q "^dimension = 3$" "$shear3d/scenarios/run-002.toml" || fail "run-002's scenario is not 3D"
+grep -q "^shear_rate = 4\.0$" "$shear3d/scenarios/run-002.toml" || fail "run-002's shear rate"
+[ "$(grep -c ',finished,' "$shear3d/index.csv")" -eq 2 ] || { cat "$shear3d/index.csv"; fail "3D runs not finished"; }
+"$talus" analyze "$shear3d" rheology > "$dir/log6" 2>&1 || { cat "$dir/log6"; fail "3D sweep rheology"; }
+[ "$(grep -c '^run-00[12],' "$shear3d/analysis/rheology_points.csv")" -eq 2 ] \
+  || { cat "$shear3d/analysis/rheology_points.csv"; fail "3D rheology points"; }
+echo "sweep: stopped, resumed, identical to talus run, gathered; SIGKILL stops its runs; 3D"

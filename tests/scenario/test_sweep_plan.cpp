@@ -3,6 +3,7 @@
 
 #include "cli/analyze/analyses.hpp"
 #include "cli/sweep/sweep.hpp"
+#include "scenario/file/load.hpp"
 #include "talus/error.hpp"
 
 namespace talus::cli {
@@ -15,7 +16,7 @@ TEST(SweepPlan, EachRunsSeedIsTheOneItRunsWith) {
   EXPECT_EQ(varied.runs[0].seed, 1u);
   EXPECT_EQ(varied.runs[1].seed, 2u);
   for (const SweepRun& r : varied.runs)
-    EXPECT_EQ(sweep_run_scenario(varied, r).simulation.seed, r.seed) << r.name;
+    EXPECT_EQ(sweep_run_scenario(varied, r).seed, r.seed) << r.name;
 
   const SweepPlan seeds = plan_sweep("collisions", {"simulation.seed=7"},
                                      {parse_axis("simulation.duration=0.1,0.2")}, 2);
@@ -23,7 +24,7 @@ TEST(SweepPlan, EachRunsSeedIsTheOneItRunsWith) {
   const std::uint64_t expected[] = {7, 8, 7, 8};
   for (std::size_t k = 0; k < 4; ++k) {
     EXPECT_EQ(seeds.runs[k].seed, expected[k]) << seeds.runs[k].name;
-    EXPECT_EQ(sweep_run_scenario(seeds, seeds.runs[k]).simulation.seed, expected[k]);
+    EXPECT_EQ(sweep_run_scenario(seeds, seeds.runs[k]).seed, expected[k]);
   }
 }
 
@@ -34,7 +35,8 @@ TEST(SweepPlan, AVectorsValuesSplitAtTheCommasOutsideBrackets) {
   EXPECT_EQ(a.values[0], "[0,-9.81]");
   EXPECT_EQ(a.values[1], "[1.5, -9.7]");
   const SweepPlan p = plan_sweep("collisions", {}, {a}, 1);
-  EXPECT_DOUBLE_EQ(sweep_run_scenario(p, p.runs[1]).simulation.gravity.x, 1.5);
+  EXPECT_DOUBLE_EQ(load_scenario(sweep_run_scenario(p, p.runs[1]).toml, "run").simulation.gravity.x,
+                   1.5);
   EXPECT_THROW(parse_axis("simulation.gravity=[0,-9.81"), InvalidArgument);
   EXPECT_THROW(parse_axis("simulation.gravity=[0,-9.81],"), InvalidArgument); // an empty value
 }

@@ -159,5 +159,8 @@ write_report_page(const std::filesystem::path& dir, const std::filesystem::path&
 /// InvalidArgument naming what a 3D run has for any other.
 void analyze_3d_run(const std::filesystem::path& dir, const std::string& what,
                     const AnalysisOptions& o);
+/// A 3D sheared cell's mu, phi and I (post/rheology.hpp) from --from or the second half of the
+/// snapshots; throws InvalidArgument for a run that is not one.
+RheologyPoint run_rheology3(const std::filesystem::path& dir, const AnalysisOptions& o);
 
 } // namespace talus::cli

@@ -216,20 +216,17 @@ std::vector<CellShearRow> cell_rows3(const fs::path& dir, double from) {
   return out;
 }
 
-// Simple shear in a sheared cell: mu, phi and I from the cell's own stress over the second half
-// of the snapshots (or from --from), errors from consecutive blocks (post/rheology.hpp).
-Section analyze_rheology3(const fs::path& dir, const Scenario3& s, const AnalysisOptions& a) {
-  if (!sheared_cell3(s))
-    throw InvalidArgument("rheology: a 3D run's rheology is that of a sheared cell (a cell driver "
-                          "with a shear_rate), as the built-in simple_shear3d");
-  const std::vector<Frame3> all = frames3_from(dir, 0.0, false);
-  const double from =
-      a.from >= 0.0 ? a.from : 0.5 * (all.front().time + all.back().time); // the steady half
-  std::vector<Frame3> frames;
-  for (const Frame3& f : all)
-    if (f.time >= from - 1e-12) frames.push_back(f);
+// Where the steady half starts: --from, else the middle of the snapshots' span.
+double steady_from3(const fs::path& dir, const AnalysisOptions& a) {
+  if (a.from >= 0.0) return a.from;
+  const std::vector<Snapshot> all = snapshots_of(dir);
+  return 0.5 * (all.front().time + all.back().time);
+}
+
+Section analyze_rheology3(const fs::path& dir, const Scenario3&, const AnalysisOptions& a) {
+  const RheologyPoint r = run_rheology3(dir, a);
+  const double from = steady_from3(dir, a);
   const std::size_t blocks = RheologyOptions{}.blocks;
-  const RheologyPoint r = cell_rheology_point(cell_rows3(dir, from), frames, blocks);
   const fs::path out = dir / "analysis";
   fs::create_directories(out);
   write_file_atomically((out / "rheology.json").string(), rheology_json(r) + "\n");
@@ -264,6 +261,16 @@ std::vector<std::pair<std::string, std::string>> scenario3_rows(const Scenario3&
 }
 
 } // namespace
+
+RheologyPoint run_rheology3(const fs::path& dir, const AnalysisOptions& a) {
+  const fs::path toml = dir / "scenario.toml";
+  if (!sheared_cell3(load_scenario3(read_file(toml.string()), toml.string())))
+    throw InvalidArgument("rheology: a 3D run's rheology is that of a sheared cell (a cell driver "
+                          "with a shear_rate), as the built-in simple_shear3d");
+  const double from = steady_from3(dir, a); // the steady half
+  return cell_rheology_point(cell_rows3(dir, from), frames3_from(dir, from, false),
+                             RheologyOptions{}.blocks);
+}
 
 void analyze_3d_run(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
   if (what != "fields" && what != "rheology" && what != "all") {

@@ -12,6 +12,7 @@
 #include "cli/analyze/analyses.hpp"
 #include "cli/commands.hpp"
 #include "cli/run/run3d.hpp"
+#include "cli/run/scenario_source.hpp"
 #include "cli/sweep/analyze_sweep.hpp"
 #include "cli/sweep/sweep.hpp"
 #include "scenario/file/load.hpp"
@@ -121,9 +122,11 @@ void analyze_sweep(const fs::path& dir, const std::string& what, const AnalysisO
   if (what != "all") return analyze_sweep_result(dir, what);
   const SweepPlan plan = read_plan(dir);
   if (plan.runs.empty()) return;
-  const Scenario s =
-      load_scenario_file((dir / "scenarios" / (plan.runs[0].name + ".toml")).string());
-  if (has_orifice(s.geometry)) analyze_sweep_discharge(dir, o);
+  const fs::path first = dir / "scenarios" / (plan.runs[0].name + ".toml");
+  // spheres in 3D have no orifice yet
+  if (scenario_dimension(scenario_text(first.string()), {}) == 2 &&
+      has_orifice(load_scenario_file(first.string()).geometry))
+    analyze_sweep_discharge(dir, o);
   for (const char* r :
        {"final_coordination", "final_packing_fraction", "final_kinetic_translational"}) {
     try {

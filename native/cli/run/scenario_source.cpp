@@ -6,6 +6,7 @@
 #include "io/checkpoint.hpp"
 #include "io/thesis_format.hpp"
 #include "scenario/file/load.hpp"
+#include "scenario/file/load3.hpp"
 #include "scenario/file/shared_sections.hpp"
 #include "scenario/file/toml_reader.hpp"
 
@@ -46,6 +47,17 @@ int scenario_dimension(const ScenarioText& t, const std::vector<std::string>& ov
 Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides) {
   const ScenarioText t = scenario_text(what);
   return load_scenario(t.text, t.file, overrides);
+}
+
+ResolvedScenario resolve_any_scenario(const std::string& what,
+                                      const std::vector<std::string>& overrides) {
+  const ScenarioText t = scenario_text(what);
+  if (scenario_dimension(t, overrides) == 3) {
+    const Scenario3 s = load_scenario3(t.text, t.file, overrides);
+    return {to_toml(s), s.name, s.simulation.seed, 3};
+  }
+  const Scenario s = load_scenario(t.text, t.file, overrides);
+  return {to_toml(s), s.name, s.simulation.seed, 2};
 }
 
 } // namespace talus::cli

@@ -1,5 +1,6 @@
 #pragma once
 // Where a command's scenario comes from: a .toml file, a thesis .in file or a built-in name.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,17 @@ int scenario_dimension(const ScenarioText& t, const std::vector<std::string>& ov
 
 /// The scenario `what` names, with the --set overrides applied.
 Scenario resolve_scenario(const std::string& what, const std::vector<std::string>& overrides);
+
+/// A scenario of either dimension resolved: every key with its value as TOML (it reruns as it
+/// is), and what a sweep names its runs by.
+struct ResolvedScenario {
+  std::string toml;
+  std::string name;
+  std::uint64_t seed = 0;
+  int dimension = 2;
+};
+/// The scenario `what` names with the overrides, checked by the loader of its dimension.
+ResolvedScenario resolve_any_scenario(const std::string& what,
+                                      const std::vector<std::string>& overrides);
 
 } // namespace talus::cli

@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/analyze/analyses.hpp"
+#include "cli/run/run3d.hpp"
 #include "cli/sweep/analyze_sweep.hpp"
 #include "cli/sweep/sweep.hpp"
 #include "io/checkpoint.hpp"
@@ -67,8 +69,11 @@ void analyze_sweep_rheology(const fs::path& dir, const AnalysisOptions& o) {
   std::size_t analysed = 0;
   for (const SweepRun& r : plan.runs) {
     if (!fs::exists(dir / r.name / "run.json")) continue; // not run yet
-    RunData data{dir / r.name};
-    const RheologyPoint p = run_rheology(data, o);
+    const RheologyPoint p = [&] {
+      if (is_3d_run_folder(dir / r.name)) return run_rheology3(dir / r.name, o);
+      RunData data{dir / r.name};
+      return run_rheology(data, o);
+    }();
     ++analysed;
     csv += r.name + ",";
     for (const auto& v : r.values) csv += csv_cell(v) + ",";

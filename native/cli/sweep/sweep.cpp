@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/analyze/analyses.hpp"
+#include "cli/run/run3d.hpp"
 #include "cli/run/scenario_source.hpp"
 #include "io/checkpoint.hpp"
 #include "scenario/file/load.hpp"
@@ -57,9 +58,9 @@ std::vector<std::string> overrides(const SweepPlan& p, const SweepRun& r) {
 
 } // namespace
 
-Scenario sweep_run_scenario(const SweepPlan& p, const SweepRun& r) {
+ResolvedScenario sweep_run_scenario(const SweepPlan& p, const SweepRun& r) {
   try {
-    return resolve_scenario(p.scenario, overrides(p, r));
+    return resolve_any_scenario(p.scenario, overrides(p, r));
   } catch (const std::exception& e) {
     std::string values;
     for (const std::string& s : overrides(p, r)) values += (values.empty() ? "" : " ") + s;
@@ -150,7 +151,7 @@ SweepPlan plan_sweep(const std::string& scenario, std::vector<std::string> sets,
   p.sets = std::move(sets);
   p.axes = std::move(axes);
   p.seeds = seeds;
-  p.first_seed = resolve_scenario(scenario, p.sets).simulation.seed;
+  p.first_seed = resolve_any_scenario(scenario, p.sets).seed;
   std::size_t total = seeds;
   for (const SweepAxis& a : p.axes) total *= a.values.size();
   const int width = std::max(3, static_cast<int>(std::to_string(total).size()));
@@ -170,7 +171,7 @@ SweepPlan plan_sweep(const std::string& scenario, std::vector<std::string> sets,
   }
   // every run's scenario must resolve; the index names the seed each run runs with (a varied
   // simulation.seed, say, rather than the scenario's)
-  for (SweepRun& r : p.runs) r.seed = sweep_run_scenario(p, r).simulation.seed;
+  for (SweepRun& r : p.runs) r.seed = sweep_run_scenario(p, r).seed;
   return p;
 }
 
@@ -220,6 +221,7 @@ SweepResult read_result(const fs::path& dir, const SweepRun& r) {
   for (const auto& [k, v] : last_thermo_row(run / "thermo.csv")) out.numbers[k] = v;
   if (out.status != "finished") return out;
   try {
+    if (is_3d_run_folder(run)) return out; // spheres: no orifice in 3D yet
     RunData data{run};
     if (has_orifice(data.scenario().geometry) && data.has_snapshots()) {
       const Discharge q = run_discharge(data, {});

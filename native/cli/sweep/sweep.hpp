@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/scenario.hpp"
+#include "cli/run/scenario_source.hpp"
 
 namespace talus::cli {
 
@@ -43,8 +43,9 @@ SweepAxis parse_axis(const std::string& text);
 SweepPlan plan_sweep(const std::string& scenario, std::vector<std::string> sets,
                      std::vector<SweepAxis> axes, std::size_t seeds);
 
-/// The resolved scenario of run `r`: the plan's scenario with the run's values and seed.
-Scenario sweep_run_scenario(const SweepPlan& p, const SweepRun& r);
+/// The resolved scenario of run `r`: the plan's scenario (2D or 3D) with the run's values and
+/// seed. Throws InvalidArgument naming the run and its values when it does not resolve.
+ResolvedScenario sweep_run_scenario(const SweepPlan& p, const SweepRun& r);
 
 /// Writes dir/sweep.json.
 void write_plan(const std::filesystem::path& dir, const SweepPlan& p);

@@ -44,7 +44,7 @@ void add_sweep_command(CLI::App& app) {
                             "with N >= 2");
     const SweepPlan plan = plan_sweep(o->scenario, o->set, std::move(axes), o->seeds);
     const std::string dir =
-        o->out.empty() ? "runs/sweep-" + resolve_scenario(o->scenario, o->set).name : o->out;
+        o->out.empty() ? "runs/sweep-" + resolve_any_scenario(o->scenario, o->set).name : o->out;
     exit_status() = run_sweep(dir, &plan, o->run);
   });
 }

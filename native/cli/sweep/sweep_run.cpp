@@ -101,7 +101,7 @@ void start_folder(const fs::path& dir, const SweepPlan& plan) {
   fs::create_directories(dir / "logs");
   for (const SweepRun& r : plan.runs)
     write_file_atomically((dir / "scenarios" / (r.name + ".toml")).string(),
-                          to_toml(sweep_run_scenario(plan, r)));
+                          sweep_run_scenario(plan, r).toml);
   write_plan(dir, plan); // last: a folder with a plan has every run's scenario
 }
 
