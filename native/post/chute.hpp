@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "analysis/frame3.hpp"
 #include "post/coarse_grain.hpp"
 #include "post/line_fit.hpp"
 
@@ -29,7 +30,7 @@ struct ChuteFlow {
   double base = 0.0;          ///< m: the base grains' top
   double depth = 0.0;         ///< m: h, from the base to where the packing falls to half
   double diameter = 0.0;      ///< m: the free grains' mean
-  double grain_density = 0.0; ///< kg/m^2
+  double grain_density = 0.0; ///< kg/m^2 (kg/m^3 in 3D)
   // the profiles from the base to above the surface
   std::vector<double> z;        ///< m above the base
   std::vector<double> velocity; ///< m/s along the slope
@@ -49,5 +50,17 @@ struct ChuteFlow {
 /// of the base. Not measured (why_not) without wall grains, or when the flow is under
 /// 2 margin + 4 diameters deep.
 ChuteFlow chute_flow(const std::vector<Frame>& frames, const ChuteOptions& o);
+
+/// A chute of spheres: down the slope along x, the base's normal along z, periodic along x and y
+/// (the frames' box gives the area the fields are averaged over).
+struct ChuteOptions3 {
+  CgKernel kernel = CgKernel::gaussian;
+  double width = 0.0;  ///< m: the kernel's width
+  Vec3 gravity{};      ///< m/s^2: down the slope along +x or -x, into the base along -z
+  double margin = 2.0; ///< diameters left out of the fits by the base and by the surface
+};
+/// The same of spheres in 3D (packing a volume fraction; friction |sigma_xz| / sigma_zz); the
+/// fields ChuteFlow calls y and sigma_yy are z and sigma_zz.
+ChuteFlow chute_flow(const std::vector<Frame3>& frames, const ChuteOptions3& o);
 
 } // namespace talus

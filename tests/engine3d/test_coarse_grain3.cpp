@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 #include <unistd.h>
@@ -19,6 +20,7 @@
 #include "cli/builtin_scenarios.hpp"
 #include "io/vtk_spheres.hpp"
 #include "io/vtp_reader.hpp"
+#include "post/chute.hpp"
 #include "post/coarse_grain.hpp"
 #include "scenario/file/load3.hpp"
 #include "scenario3d/build3.hpp"
@@ -281,6 +283,57 @@ TEST(CoarseGrain3, ASnapshotReadsBackAsTheStateItWasWrittenFrom) {
     EXPECT_EQ(a.from_free, e.from_free);
     EXPECT_EQ(a.to_free, e.to_free);
   }
+}
+
+// A layer of spheres on a simple cubic lattice over a base of fixed ones, periodic along x and y,
+// moving down the slope with Bagnold's profile v(z) = v_b + c (h^1.5 - (h - z)^1.5): the chute
+// analysis (post/chute.hpp) finds the base, the depth within a diameter, and c to 2% (the lattice's
+// layers under a kernel as wide as a radius), the Bagnold fit far closer than a straight line's;
+// a straight profile is fitted no better by Bagnold's than by the line. Gravity that does not
+// point into the base along -z, or a layer without a base, is not measured, saying why.
+Frame3 chute_layer(double c, bool bagnold) {
+  Frame3 f;
+  const double r = 0.001, a = 0.002, base = 2.0 * r, h = 15 * a;
+  f.box_lo = {0.0, 0.0, 0.0}, f.box_hi = {0.02, 0.02, 0.1};
+  f.periodic = {true, true, false};
+  const auto add = [&](Vec3 at, Vec3 v, std::uint8_t kind) {
+    f.id.push_back(static_cast<std::uint32_t>(f.id.size()));
+    f.position.push_back(at), f.velocity.push_back(v), f.radius.push_back(r),
+        f.kind.push_back(kind);
+    f.mass.push_back(2500.0 * 4.0 / 3.0 * std::numbers::pi * r * r * r);
+  };
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      add({(i + 0.5) * a, (j + 0.5) * a, r}, {}, 1);
+      for (int k = 0; k < 15; ++k) {
+        const double z = (k + 0.5) * a; // above the base's top
+        const double v = bagnold ? 0.1 + c * (std::pow(h, 1.5) - std::pow(h - z, 1.5))
+                                 : 0.1 + c * std::sqrt(h) * z;
+        add({(i + 0.5) * a, (j + 0.5) * a, base + z}, {v, 0.0, 0.0}, 0);
+      }
+    }
+  return f;
+}
+
+TEST(CoarseGrain3, AChuteLayersBagnoldProfileIsFoundAgain) {
+  ChuteOptions3 o;
+  o.width = 0.001, o.gravity = {4.0, 0.0, -8.95};
+  const ChuteFlow flow = chute_flow({chute_layer(30.0, true)}, o);
+  ASSERT_TRUE(flow.measured) << flow.why_not;
+  EXPECT_NEAR(flow.base, 0.002, 1e-12);
+  EXPECT_NEAR(flow.depth, 0.03, 0.002);
+  EXPECT_NEAR(flow.bagnold.slope, 30.0, 0.02 * 30.0);
+  EXPECT_LT(flow.bagnold.rms, 0.2 * flow.straight.rms);
+  EXPECT_NEAR(flow.angle, std::atan(4.0 / 8.95), 1e-12);
+  const ChuteFlow straight = chute_flow({chute_layer(30.0, false)}, o);
+  ASSERT_TRUE(straight.measured) << straight.why_not;
+  EXPECT_GT(straight.bagnold.rms, 2.0 * straight.straight.rms);
+  o.gravity = {4.0, 1.0, -8.95};
+  EXPECT_FALSE(chute_flow({chute_layer(30.0, true)}, o).measured);
+  Frame3 no_base = chute_layer(30.0, true);
+  for (auto& k : no_base.kind) k = 0;
+  o.gravity = {4.0, 0.0, -8.95};
+  EXPECT_FALSE(chute_flow({no_base}, o).measured);
 }
 
 TEST(CoarseGrain3, BadOptionsAreRefused) {

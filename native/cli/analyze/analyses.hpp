@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/frame.hpp"
+#include "post/chute.hpp"
 #include "post/discharge.hpp"
 #include "post/rheology.hpp"
 #include "scenario/scenario.hpp"
@@ -137,6 +138,10 @@ std::string rheology_json(const RheologyPoint& r);
 Section analyze_rheology(RunData& run, const AnalysisOptions& o);
 /// A flow down a rough incline, periodic along it: profiles and Bagnold's fit (post/chute.hpp).
 Section analyze_chute(RunData& run, const AnalysisOptions& o);
+
+/// The same of spheres in 3D (analyze3.cpp gathers the frames and options), into `out`.
+Section analyze_chute3(const std::filesystem::path& out, const std::vector<Frame3>& frames,
+                       const ChuteOptions3& o);
 
 /// Throws InvalidArgument, naming the allowed names, unless `what` names one analysis of a run
 /// folder (thermo, forces, profiles, tracks, segregation, frost, contacts, repose, fields,

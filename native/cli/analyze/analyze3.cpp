@@ -223,6 +223,26 @@ double steady_from3(const fs::path& dir, const AnalysisOptions& a) {
   return 0.5 * (all.front().time + all.back().time);
 }
 
+// A layer periodic along x and y on a rough floor, with gravity tilted down x: a chute.
+bool chute3(const Scenario3& s) {
+  const auto& p = s.geometry.periodic;
+  return p[0] && p[1] && !p[2] && s.simulation.gravity.x != 0.0;
+}
+
+Section analyze_chute_run3(const fs::path& dir, const Scenario3& s, const AnalysisOptions& a) {
+  if (!chute3(s))
+    throw InvalidArgument("chute: needs a layer periodic along x and y (geometry.periodic = "
+                          "\"xy\") on a rough floor (geometry.rough_floor = true), with gravity "
+                          "tilted down x (a simulation.gravity with an x component)");
+  const std::vector<Frame3> frames = frames3_from(dir, steady_from3(dir, a));
+  ChuteOptions3 o;
+  o.kernel = parse_cg_kernel(a.kernel);
+  o.width = a.width > 0.0 ? a.width
+                          : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * mean_free_radius(frames[0]);
+  o.gravity = s.simulation.gravity;
+  return analyze_chute3(dir / "analysis", frames, o);
+}
+
 Section analyze_rheology3(const fs::path& dir, const Scenario3&, const AnalysisOptions& a) {
   const RheologyPoint r = run_rheology3(dir, a);
   const double from = steady_from3(dir, a);
@@ -273,11 +293,11 @@ RheologyPoint run_rheology3(const fs::path& dir, const AnalysisOptions& a) {
 }
 
 void analyze_3d_run(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
-  if (what != "fields" && what != "rheology" && what != "all") {
+  if (what != "fields" && what != "rheology" && what != "chute" && what != "all") {
     check_analysis_name(what);
     throw InvalidArgument("analyze: '" + dir.string() +
                           "' is a run of spheres in 3D, whose "
-                          "analyses are fields and rheology (and all, with report.html); " +
+                          "analyses are fields, rheology and chute (and all, with report.html); " +
                           what + " takes 2D runs for now");
   }
   const fs::path toml = dir / "scenario.toml";
@@ -292,6 +312,8 @@ void analyze_3d_run(const fs::path& dir, const std::string& what, const Analysis
     analyze_fields3(dir, s, o);
   } else if (what == "rheology") {
     analyze_rheology3(dir, s, o);
+  } else if (what == "chute") {
+    analyze_chute_run3(dir, s, o);
   } else {
     // every one that applies; one that cannot run says why and the others go on
     const auto attempt = [&](const char* name, auto&& analysis) {
@@ -304,6 +326,7 @@ void analyze_3d_run(const fs::path& dir, const std::string& what, const Analysis
     attempt("fields", [&] { return analyze_fields3(dir, s, o); });
     if (sheared_cell3(s) && s.output.stress)
       attempt("rheology", [&] { return analyze_rheology3(dir, s, o); });
+    if (chute3(s)) attempt("chute", [&] { return analyze_chute_run3(dir, s, o); });
   }
   if (what == "all")
     fmt::print("report: {}\n", write_report_page(dir, dir / "analysis", s.name, s.description,

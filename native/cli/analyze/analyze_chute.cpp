@@ -22,7 +22,8 @@ struct BulkErrors {
   double friction = NAN, inertial = NAN, packing = NAN;
 };
 
-BulkErrors bulk_errors(const std::vector<Frame>& frames, const ChuteOptions& o) {
+template <class FrameT, class Options>
+BulkErrors bulk_errors(const std::vector<FrameT>& frames, const Options& o) {
   constexpr std::size_t blocks = 4;
   BulkErrors e;
   if (frames.size() < 2 * blocks) return e;
@@ -31,7 +32,7 @@ BulkErrors bulk_errors(const std::vector<Frame>& frames, const ChuteOptions& o) 
   for (std::size_t b = 0; b < blocks; ++b) {
     const auto first = frames.begin() + static_cast<std::ptrdiff_t>(b * per);
     const auto last = b + 1 == blocks ? frames.end() : first + static_cast<std::ptrdiff_t>(per);
-    flows.push_back(chute_flow({first, last}, o));
+    flows.push_back(chute_flow(std::vector<FrameT>(first, last), o));
     if (!flows.back().measured) return e;
   }
   e.friction = block_mean_error(flows, &ChuteFlow::bulk_friction).second;
@@ -55,9 +56,10 @@ std::string profile_csv(const ChuteFlow& c) {
   return csv;
 }
 
-std::string chute_json(const ChuteFlow& c, const BulkErrors& e) {
+std::string chute_json(const ChuteFlow& c, const BulkErrors& e, const char* friction_of) {
   return fmt::format(
-      "{{\"measured\": {}, \"why_not\": \"{}\", \"frames\": {}, \"angle_deg\": {}, "
+      "{{\"measured\": {}, \"why_not\": \"{}\", \"friction_of\": \"{}\", \"frames\": {}, "
+      "\"angle_deg\": {}, "
       "\"tan_angle\": {}, \"base\": {}, \"depth\": {}, \"diameter\": {}, \"band_lo\": {}, "
       "\"band_hi\": {}, \"bulk_friction\": {}, \"bulk_friction_error\": {}, "
       "\"bulk_inertial\": {}, \"bulk_inertial_error\": {}, \"bulk_packing\": {}, "
@@ -65,7 +67,7 @@ std::string chute_json(const ChuteFlow& c, const BulkErrors& e) {
       "\"base_velocity\": {}, \"base_velocity_error\": {}, \"bagnold_c\": {}, "
       "\"bagnold_c_error\": {}, \"bagnold_rms\": {}, \"bagnold_inertial\": {}, "
       "\"straight_rms\": {}}}\n",
-      c.measured, c.why_not, c.frames, json_number(c.angle * 180.0 / M_PI),
+      c.measured, c.why_not, friction_of, c.frames, json_number(c.angle * 180.0 / M_PI),
       json_number(std::tan(c.angle)), json_number(c.base), json_number(c.depth),
       json_number(c.diameter), json_number(c.band_lo), json_number(c.band_hi),
       json_number(c.bulk_friction), json_number(e.friction), json_number(c.bulk_inertial),
@@ -88,7 +90,38 @@ std::string flow_text(const ChuteFlow& c, const BulkErrors& e) {
                      c.straight.rms, c.bagnold_inertial);
 }
 
+// chute.csv, chute.json and the chart in `out`, and the report's section: `stress` names the
+// friction's components (sigma_xy / sigma_yy in 2D, sigma_xz / sigma_zz in 3D).
+Section chute_section(const fs::path& out, const ChuteFlow& c, const BulkErrors& errors,
+                      double from, CgKernel kernel, double width, double margin,
+                      const char* stress) {
+  fs::create_directories(out);
+  if (c.measured) write_file_atomically((out / "chute.csv").string(), profile_csv(c));
+  write_file_atomically((out / "chute.json").string(), chute_json(c, errors, stress));
+  Section sec{"Flow down the incline", {}, {}, {}};
+  sec.summary = fmt::format(
+      "The steady flow of {} snapshots from t = {:.3g} s, coarse-grained across the layer ({} "
+      "kernel of width {:.3g} m): velocity, packing fraction, {} and the inertial number against "
+      "the height above the base, and Bagnold's profile fitted from {} diameters above the base "
+      "to as far below the surface (GDR MiDi 2004). The bulk's errors: the spread over four "
+      "consecutive blocks of the snapshots.",
+      c.frames, from, cg_kernel_name(kernel), width, stress, margin);
+  sec.numbers = {{"flow", flow_text(c, errors)}};
+  fmt::print("chute: {}\n", flow_text(c, errors));
+  if (c.measured && plot(out, "chute", out / "chute.csv", out / "chute.png", out / "chute.json"))
+    sec.charts.push_back(out / "chute.png");
+  for (const auto& chart : sec.charts) fmt::print("  chart: {}\n", chart.string());
+  return sec;
+}
+
 } // namespace
+
+Section analyze_chute3(const fs::path& out, const std::vector<Frame3>& frames,
+                       const ChuteOptions3& o) {
+  const ChuteFlow c = chute_flow(frames, o);
+  return chute_section(out, c, c.measured ? bulk_errors(frames, o) : BulkErrors{},
+                       frames.front().time, o.kernel, o.width, o.margin, "|sigma_xz| / sigma_zz");
+}
 
 Section analyze_chute(RunData& run, const AnalysisOptions& a) {
   const Scenario& s = run.scenario();
@@ -103,24 +136,8 @@ Section analyze_chute(RunData& run, const AnalysisOptions& a) {
   o.gravity = s.simulation.gravity;
   const std::vector<Frame> frames = run.frames_with_contacts(steady_from(run, a));
   const ChuteFlow c = chute_flow(frames, o);
-  const BulkErrors errors = c.measured ? bulk_errors(frames, o) : BulkErrors{};
-  const fs::path out = run.out();
-  if (c.measured) write_file_atomically((out / "chute.csv").string(), profile_csv(c));
-  write_file_atomically((out / "chute.json").string(), chute_json(c, errors));
-  Section sec{"Flow down the incline", {}, {}, {}};
-  sec.summary = fmt::format(
-      "The steady flow of {} snapshots from t = {:.3g} s, coarse-grained across the layer ({} "
-      "kernel of width {:.3g} m): velocity, packing fraction, |sigma_xy| / sigma_yy and the "
-      "inertial number against the height above the base, and Bagnold's profile fitted from {} "
-      "diameters above the base to as far below the surface (GDR MiDi 2004). The bulk's errors: "
-      "the spread over four consecutive blocks of the snapshots.",
-      frames.size(), frames.front().time, cg_kernel_name(o.kernel), o.width, o.margin);
-  sec.numbers = {{"flow", flow_text(c, errors)}};
-  fmt::print("chute: {}\n", flow_text(c, errors));
-  if (c.measured && plot(out, "chute", out / "chute.csv", out / "chute.png", out / "chute.json"))
-    sec.charts.push_back(out / "chute.png");
-  for (const auto& chart : sec.charts) fmt::print("  chart: {}\n", chart.string());
-  return sec;
+  return chute_section(run.out(), c, c.measured ? bulk_errors(frames, o) : BulkErrors{},
+                       frames.front().time, o.kernel, o.width, o.margin, "|sigma_xy| / sigma_yy");
 }
 
 } // namespace talus::cli

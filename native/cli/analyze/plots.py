@@ -467,7 +467,8 @@ elif kind == "chute":
     a.set_xlabel("velocity down the slope [m/s]")
     a.set_ylabel("height above the base / d")
     for ax, key, label in ((axes[1], "packing_fraction", "packing fraction [-]"),
-                           (axes[2], "friction", "|sigma_xy| / sigma_yy and I [-]")):
+                           (axes[2], "friction",
+                            extra.get("friction_of", "|sigma_xy| / sigma_yy") + " and I [-]")):
         rs = [r for r in rows if r[key] != ""]
         ax.plot(col(key, rs), [float(r["z"]) / d for r in rs], "-", label=key)
         ax.set_xlabel(label)
