@@ -129,10 +129,12 @@ for command in render movie checkpoint; do
   if "$talus" "$command" "$run" > "$dir/out.txt" 2>&1; then echo "FAIL: $command took a 3D run"; exit 1; fi
   grep -q "is a run of spheres in 3D" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 done
-# talus analyze: the coarse-grained fields along gravity's axis, from the snapshots' spheres and
-# contacts, whose density integrates to the spheres' mass, and the report; the 2D analyses refuse
+# talus analyze: the thermo chart, the contact force distribution, the coarse-grained fields
+# along gravity's axis from the snapshots' spheres and contacts, whose density integrates to the
+# spheres' mass, and the report; the 2D analyses refuse
 "$talus" analyze "$run" > "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 [ -s "$run/analysis/report.html" ] || { echo "FAIL: no report.html of a 3D run"; exit 1; }
+grep -q '"contacts": [1-9]' "$run/analysis/forces.json" || { echo "FAIL: no force distribution"; exit 1; }
 head -1 "$run/analysis/fields.csv" | grep -q "^z,density,velocity_x,velocity_y,velocity_z,kinetic_xx" \
   || { echo "FAIL: fields.csv header"; exit 1; }
 /usr/bin/python3 - "$run/analysis/fields.json" <<'PY'
@@ -144,7 +146,7 @@ PY
 "$talus" analyze "$run" fields --axis x --kernel lucy > /dev/null || { echo "FAIL: fields along x"; exit 1; }
 head -1 "$run/analysis/fields.csv" | grep -q "^x,density" || { echo "FAIL: fields along x"; exit 1; }
 if "$talus" analyze "$run" janssen > "$dir/out.txt" 2>&1; then echo "FAIL: janssen took a 3D run"; exit 1; fi
-grep -q "is a run of spheres in 3D, whose analyses are fields, rheology and chute" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
+grep -q "is a run of spheres in 3D, whose analyses are thermo, forces, fields, rheology and chute" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 if "$talus" analyze "$run" rheology > "$dir/out.txt" 2>&1; then echo "FAIL: rheology of a bed"; exit 1; fi
 grep -q "rheology is that of a sheared cell" "$dir/out.txt" || { cat "$dir/out.txt"; exit 1; }
 if "$talus" analyze "$run" fields --map > "$dir/out.txt" 2>&1; then echo "FAIL: a 3D map"; exit 1; fi

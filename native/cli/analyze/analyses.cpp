@@ -124,13 +124,18 @@ int& failed_charts() {
 }
 
 Section analyze_thermo(RunData& run) {
-  const fs::path csv = run.dir() / "thermo.csv";
+  return analyze_thermo(run.dir(), run.out());
+}
+
+Section analyze_thermo(const fs::path& dir, const fs::path& out) {
+  const fs::path csv = dir / "thermo.csv";
   if (!fs::exists(csv)) throw InvalidArgument(csv.string() + " is missing");
-  const fs::path png = run.out() / "thermo.png";
+  fs::create_directories(out);
+  const fs::path png = out / "thermo.png";
   Section s{"Energies, coordination and packing fraction", {}, {}, {}};
   s.summary = "Kinetic (translation, rotation), elastic and total energy; coordination number Z "
               "and packing fraction against time (thermo.csv).";
-  if (plot(run.out(), "thermo", csv, png)) {
+  if (plot(out, "thermo", csv, png)) {
     s.charts.push_back(png);
     fmt::print("thermo: energies, coordination and packing fraction against time: {}\n",
                png.string());
@@ -139,7 +144,14 @@ Section analyze_thermo(RunData& run) {
 }
 
 Section analyze_forces(RunData& run, const AnalysisOptions& o) {
-  const fs::path dir = run.dir();
+  return analyze_forces(run.dir(), run.out(), o);
+}
+
+Section analyze_forces(const fs::path& dir, const fs::path& out, const AnalysisOptions& o) {
+  if (!fs::exists(dir / "contacts.pvd"))
+    throw InvalidArgument("forces: '" + dir.string() +
+                          "' has no contacts.pvd (no snapshots, or a run by a talus that wrote "
+                          "no contacts in 3D)");
   const auto entries = read_pvd((dir / "contacts.pvd").string());
   if (entries.empty())
     throw InvalidArgument((dir / "contacts.pvd").string() + " lists no snapshots");
@@ -166,7 +178,7 @@ Section analyze_forces(RunData& run, const AnalysisOptions& o) {
   if (scaled.empty())
     throw InvalidArgument("forces: the run's snapshots hold no contact with a normal force");
   const ForceDistribution d = force_distribution(scaled);
-  const fs::path out = run.out();
+  fs::create_directories(out);
   std::string csv = "f_over_mean,probability_density,count\n";
   for (std::size_t k = 0; k < d.centre.size(); ++k)
     csv += fmt::format("{:.4f},{:.6e},{}\n", d.centre[k], d.density[k], d.count[k]);

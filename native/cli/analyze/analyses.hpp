@@ -98,7 +98,12 @@ double steady_from(RunData& run, const AnalysisOptions& o);
 double kernel_width(RunData& run, const AnalysisOptions& o);
 
 Section analyze_thermo(RunData& run);
+/// The same of any run folder `dir` (a 3D run's too), into `out`.
+Section analyze_thermo(const std::filesystem::path& dir, const std::filesystem::path& out);
 Section analyze_forces(RunData& run, const AnalysisOptions& o);
+/// The same of any run folder `dir` with contacts.pvd (a 3D run's too), into `out`.
+Section analyze_forces(const std::filesystem::path& dir, const std::filesystem::path& out,
+                       const AnalysisOptions& o);
 Section analyze_profiles(RunData& run, const AnalysisOptions& o);
 Section analyze_tracks(RunData& run);
 /// contact_events.csv (output.contacts): durations, peak forces and restitutions per kind of

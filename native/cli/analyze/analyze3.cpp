@@ -293,21 +293,29 @@ RheologyPoint run_rheology3(const fs::path& dir, const AnalysisOptions& a) {
 }
 
 void analyze_3d_run(const fs::path& dir, const std::string& what, const AnalysisOptions& o) {
-  if (what != "fields" && what != "rheology" && what != "chute" && what != "all") {
+  const std::vector<std::string> analyses3{"thermo", "forces", "fields", "rheology", "chute"};
+  if (what != "all" && std::find(analyses3.begin(), analyses3.end(), what) == analyses3.end()) {
     check_analysis_name(what);
     throw InvalidArgument("analyze: '" + dir.string() +
                           "' is a run of spheres in 3D, whose "
-                          "analyses are fields, rheology and chute (and all, with report.html); " +
+                          "analyses are thermo, forces, fields, rheology and chute (and all, with "
+                          "report.html); " +
                           what + " takes 2D runs for now");
   }
   const fs::path toml = dir / "scenario.toml";
   const Scenario3 s = load_scenario3(read_file(toml.string()), toml.string());
   std::vector<Section> sections;
-  if (!fs::exists(dir / "particles.pvd")) {
+  const fs::path out = dir / "analysis";
+  if (what == "thermo") {
+    analyze_thermo(dir, out);
+  } else if (!fs::exists(dir / "particles.pvd")) {
     if (what != "all")
       throw InvalidArgument(what + ": '" + dir.string() +
                             "' has no snapshots (output.snapshot_interval = 0)");
-    fmt::print("no snapshots (output.snapshot_interval = 0): no analysis of a 3D run applies\n");
+    fmt::print("no snapshots (output.snapshot_interval = 0): only thermo applies\n");
+    sections.push_back(analyze_thermo(dir, out));
+  } else if (what == "forces") {
+    analyze_forces(dir, out, o);
   } else if (what == "fields") {
     analyze_fields3(dir, s, o);
   } else if (what == "rheology") {
@@ -323,6 +331,8 @@ void analyze_3d_run(const fs::path& dir, const std::string& what, const Analysis
         fmt::print("{}: skipped ({})\n", name, e.what());
       }
     };
+    attempt("thermo", [&] { return analyze_thermo(dir, out); });
+    attempt("forces", [&] { return analyze_forces(dir, out, o); });
     attempt("fields", [&] { return analyze_fields3(dir, s, o); });
     if (sheared_cell3(s) && s.output.stress)
       attempt("rheology", [&] { return analyze_rheology3(dir, s, o); });

@@ -31,9 +31,11 @@ if kind == "thermo":
     ledger = "energy_imbalance" in rows[0]  # output.energy_ledger
     fig, axes = plt.subplots(3 if ledger else 2, 1, figsize=(8, 10 if ledger else 7), sharex=True)
     a, b = axes[0], axes[-1]
-    for key, label in [("kinetic_translational", "kinetic, translation"),
-                       ("kinetic_rotational", "kinetic, rotation"), ("elastic", "elastic"),
-                       ("total", "total")]:
+    # a 3D run's thermo.csv names the kinetic energies kinetic and rotational
+    three = "kinetic_translational" not in rows[0]
+    for key, label in [("kinetic" if three else "kinetic_translational", "kinetic, translation"),
+                       ("rotational" if three else "kinetic_rotational", "kinetic, rotation"),
+                       ("elastic", "elastic"), ("total", "total")]:
         a.plot(t, col(key), label=label)
     a.set_ylabel("energy [J]")
     a.set_yscale("symlog", linthresh=1e-9)
@@ -54,8 +56,13 @@ if kind == "thermo":
     b.set_xlabel("time [s]")
     b.set_ylabel("coordination number Z [-]", color="C0")
     b2 = b.twinx()
-    b2.plot(t, col("packing_fraction"), color="C1", label="packing fraction")
-    b2.set_ylabel("packing fraction [-]", color="C1")
+    # 3D: the stress region's, with output.stress
+    packing = next((k for k in ("packing_fraction", "region_packing_fraction") if k in rows[0]), None)
+    if packing:
+        b2.plot(t, col(packing), color="C1", label="packing fraction")
+        b2.set_ylabel("packing fraction [-]", color="C1")
+    else:
+        b2.set_axis_off()
     lines = b.get_lines() + b2.get_lines()
     b.legend(lines, [l.get_label() for l in lines], fontsize=8)
 elif kind == "forces":
