@@ -98,6 +98,13 @@ double mean_free_radius(const Frame3& f) {
   return sum / static_cast<double>(n);
 }
 
+// The kernel's width: --width, else the mean sphere radius (Lucy's kernel, which reaches its
+// width and no farther: twice it), as 2D's kernel_width.
+double kernel_width3(const std::vector<Frame3>& frames, CgKernel kernel, const AnalysisOptions& a) {
+  if (a.width > 0.0) return a.width;
+  return (kernel == CgKernel::lucy ? 2.0 : 1.0) * mean_free_radius(frames.front());
+}
+
 std::string fields3_csv(const FieldProfile3& p, const char* name) {
   std::string csv = fmt::format(
       "{},density,velocity_x,velocity_y,velocity_z,kinetic_xx,kinetic_yy,kinetic_zz,kinetic_xy,"
@@ -126,8 +133,7 @@ Section analyze_fields3(const fs::path& dir, const Scenario3& s, const AnalysisO
   CgOptions3 o;
   o.kernel = parse_cg_kernel(a.kernel);
   o.axis = profile_axis(s, a.axis);
-  o.width = a.width > 0.0 ? a.width
-                          : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * mean_free_radius(frames[0]);
+  o.width = kernel_width3(frames, o.kernel, a);
   const Extents e = extents_of(frames);
   const auto k = static_cast<std::size_t>(o.axis);
   o.lo = component(e.lo, o.axis), o.hi = component(e.hi, o.axis);
@@ -237,13 +243,12 @@ Section analyze_chute_run3(const fs::path& dir, const Scenario3& s, const Analys
   const std::vector<Frame3> frames = frames3_from(dir, steady_from3(dir, a));
   ChuteOptions3 o;
   o.kernel = parse_cg_kernel(a.kernel);
-  o.width = a.width > 0.0 ? a.width
-                          : (o.kernel == CgKernel::lucy ? 2.0 : 1.0) * mean_free_radius(frames[0]);
+  o.width = kernel_width3(frames, o.kernel, a);
   o.gravity = s.simulation.gravity;
   return analyze_chute3(dir / "analysis", frames, o);
 }
 
-Section analyze_rheology3(const fs::path& dir, const Scenario3&, const AnalysisOptions& a) {
+Section analyze_rheology3(const fs::path& dir, const AnalysisOptions& a) {
   const RheologyPoint r = run_rheology3(dir, a);
   const double from = steady_from3(dir, a);
   const std::size_t blocks = RheologyOptions{}.blocks;
@@ -319,7 +324,7 @@ void analyze_3d_run(const fs::path& dir, const std::string& what, const Analysis
   } else if (what == "fields") {
     analyze_fields3(dir, s, o);
   } else if (what == "rheology") {
-    analyze_rheology3(dir, s, o);
+    analyze_rheology3(dir, o);
   } else if (what == "chute") {
     analyze_chute_run3(dir, s, o);
   } else {
@@ -335,7 +340,7 @@ void analyze_3d_run(const fs::path& dir, const std::string& what, const Analysis
     attempt("forces", [&] { return analyze_forces(dir, out, o); });
     attempt("fields", [&] { return analyze_fields3(dir, s, o); });
     if (sheared_cell3(s) && s.output.stress)
-      attempt("rheology", [&] { return analyze_rheology3(dir, s, o); });
+      attempt("rheology", [&] { return analyze_rheology3(dir, o); });
     if (chute3(s)) attempt("chute", [&] { return analyze_chute_run3(dir, s, o); });
   }
   if (what == "all")
